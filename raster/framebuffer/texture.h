@@ -1,0 +1,52 @@
+// Texture storage: the one image type for render targets and sampled textures alike.
+//
+// A Texture holds texels in memory rows: row 0 is GL's t = 0 (the first row glTexImage2D
+// uploads, the bottom of a rendered FBO image). The default framebuffer is the exception,
+// stored with row 0 at the top, as llvmpipe stores window-system buffers (see Framebuffer).
+//
+// Formats: RGBA8 (4 bytes a texel), RGBA16F (4 half-floats), and depth codes
+// (uint32 per texel holding a 16- or 24-bit unsigned-normalized value).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace raster {
+
+enum class TexelFormat { RGBA8, RGBA16F, Depth16, Depth24 };
+
+enum class Filter { Nearest, Linear };
+enum class Wrap { Repeat, ClampToEdge };
+
+// GL sampler state of a texture object (the scenes use no separate sampler objects).
+struct SamplerState {
+  Filter filter = Filter::Linear;   // min and mag alike; no mipmaps
+  Wrap wrapS = Wrap::ClampToEdge;
+  Wrap wrapT = Wrap::ClampToEdge;
+  bool compareLequal = false;       // GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL
+};
+
+struct Texture {
+  int width = 0;
+  int height = 0;
+  TexelFormat format = TexelFormat::RGBA8;
+  SamplerState sampler;
+  std::vector<uint8_t> rgba8;       // RGBA8
+  std::vector<uint16_t> half;       // RGBA16F, 4 per texel
+  std::vector<uint32_t> depth;      // Depth16 / Depth24 codes
+
+  Texture() = default;
+  Texture(int w, int h, TexelFormat f) : width(w), height(h), format(f) {
+    const size_t texels = size_t(w) * size_t(h);
+    switch (f) {
+      case TexelFormat::RGBA8: rgba8.assign(texels * 4, 0); break;
+      case TexelFormat::RGBA16F: half.assign(texels * 4, 0); break;
+      case TexelFormat::Depth16:
+      case TexelFormat::Depth24: depth.assign(texels, 0); break;
+    }
+  }
+  bool isDepth() const { return format == TexelFormat::Depth16 || format == TexelFormat::Depth24; }
+  int depthBits() const { return format == TexelFormat::Depth24 ? 24 : (format == TexelFormat::Depth16 ? 16 : 0); }
+};
+
+}  // namespace raster

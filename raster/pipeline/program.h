@@ -1,0 +1,93 @@
+// The contract between shader ports and the pipeline.
+//
+// A shader port (shaders_cpp/<scene>/*.h) is a struct with:
+//   static constexpr const char* kName;          // "shadow/main": shaders_cpp/shadow/main.{vert,frag}
+//   static constexpr int kColorOutputs;          // fragment outputs written (layout(location = i))
+//   struct Uniforms { ... };                     // GLSL uniforms, samplers as Sampler2D(Shadow)
+//   static constexpr auto kUniformTable;         // name -> member, see uniform() below
+//   template <class F> struct Varyings { ... };  // vertex -> fragment, only vecN<F> / F members
+//   template <class F> static void vertex(const Uniforms&, const VertexInput<F>&,
+//                                         glsl::vec4<F>& gl_Position, Varyings<F>& out);
+//   template <class F> static void fragment(const Uniforms&, const FragmentInput<F>&,
+//                                           const Varyings<F>& in, FragmentOutput<F>& out);
+// F is a lane type (simd/lanes.h). Varyings<F> must be exactly N consecutive F values: the
+// pipeline interpolates it as an array of N floats, every one perspective-correct.
+// Shaders never see depth, blending or the framebuffer.
+#pragma once
+
+#include <cstring>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+
+#include "raster/simd/glsl.h"
+#include "raster/texture/sampler.h"
+
+namespace raster {
+
+constexpr int kMaxVertexAttributes = 8;   // locations 0..7: the scenes use at most 6
+constexpr int kMaxVaryingFloats = 32;     // GL 3.3 guarantees 64 components; scenes use <= 16
+constexpr int kMaxColorOutputs = 4;       // the deferred G-buffer writes 3
+
+template <class F>
+struct VertexInput {
+  glsl::vec4<F> attribute[kMaxVertexAttributes];  // missing components read (0, 0, 0, 1)
+  F gl_InstanceID;                                 // as float lanes: exact for any count used
+};
+
+template <class F>
+struct FragmentInput {
+  glsl::vec4<F> gl_FragCoord;   // (x + 0.5, y + 0.5, z, 1/w) in window coordinates
+  bool gl_FrontFacing = true;
+};
+
+template <class F>
+struct FragmentOutput {
+  glsl::vec4<F> color[kMaxColorOutputs];
+};
+
+// Derivatives: GLSL dFdx / dFdy over the lanes of each 2x2 quad (fine, as llvmpipe).
+template <class F> F dFdx(F a) { return simd::quadDdx(a); }
+template <class F> F dFdy(F a) { return simd::quadDdy(a); }
+template <class F> glsl::vec2<F> dFdx(glsl::vec2<F> a) { return {dFdx(a.x), dFdx(a.y)}; }
+template <class F> glsl::vec2<F> dFdy(glsl::vec2<F> a) { return {dFdy(a.x), dFdy(a.y)}; }
+template <class F> glsl::vec3<F> dFdx(glsl::vec3<F> a) { return {dFdx(a.x), dFdx(a.y), dFdx(a.z)}; }
+template <class F> glsl::vec3<F> dFdy(glsl::vec3<F> a) { return {dFdy(a.x), dFdy(a.y), dFdy(a.z)}; }
+
+// Number of interpolated floats of a program.
+template <class Program>
+constexpr int varyingFloatCount() {
+  using V = typename Program::template Varyings<float>;
+  constexpr size_t bytes = std::is_empty_v<V> ? 0 : sizeof(V);
+  static_assert(bytes % sizeof(float) == 0 && bytes / sizeof(float) <= kMaxVaryingFloats);
+  return int(bytes / sizeof(float));
+}
+
+// Copies between a Varyings<F> struct and the pipeline's flat array of N lane values.
+template <class Program, class F>
+typename Program::template Varyings<F> varyingsFromArray(const F* values) {
+  using V = typename Program::template Varyings<F>;
+  V v{};
+  if constexpr (!std::is_empty_v<V>) {
+    static_assert(sizeof(V) == sizeof(F) * varyingFloatCount<Program>(), "Varyings must hold only F values");
+    std::memcpy(static_cast<void*>(&v), values, sizeof(V));
+  }
+  return v;
+}
+template <class Program, class F>
+void varyingsToArray(const typename Program::template Varyings<F>& v, F* values) {
+  if constexpr (!std::is_empty_v<typename Program::template Varyings<F>>) std::memcpy(static_cast<void*>(values), &v, sizeof(v));
+}
+
+// One entry of a port's uniform table: the GLSL name and the Uniforms member it sets.
+template <class Uniforms, class T>
+struct UniformEntry {
+  std::string_view name;
+  T Uniforms::*member;
+};
+template <class Uniforms, class T>
+constexpr UniformEntry<Uniforms, T> uniform(std::string_view name, T Uniforms::*member) {
+  return {name, member};
+}
+
+}  // namespace raster

@@ -1,0 +1,195 @@
+// Tile rasterization: coverage, early depth, quad shading, output merge (see raster_tile.h).
+// Sources: llvmpipe lp_rast_tri_tmp.h (block coverage), lp_bld_interp.c (plane evaluation:
+// fmuladd(dady, y, fmuladd(dadx, x, a0)), perspective via an exact 1/w), lp_state_fs.c
+// (depth clamp, early depth test), lp_bld_conv.c / lp_bld_blend.c (output conversion).
+#include "raster/pipeline/raster_tile.h"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "raster/format/conversions.h"
+
+namespace raster {
+namespace {
+
+constexpr int kBlock = 4;   // 4x4 pixel blocks, as llvmpipe hands them to the shader
+
+// Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
+uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
+  uint32_t mask = 0xFFFFu;
+  for (const EdgeFunction& e : tri.edge) {
+    // The edge function is linear: its extremes over the block are at the corners.
+    const int64_t c00 = e.at(blockX, blockY);
+    const int64_t c30 = e.at(blockX + 3, blockY);
+    const int64_t c03 = e.at(blockX, blockY + 3);
+    const int64_t c33 = e.at(blockX + 3, blockY + 3);
+    if (std::max({c00, c30, c03, c33}) <= 0) return 0;     // all outside this edge
+    if (std::min({c00, c30, c03, c33}) > 0) continue;      // all inside this edge
+    uint32_t edgeMask = 0;
+    for (int row = 0; row < kBlock; ++row)
+      for (int col = 0; col < kBlock; ++col)
+        if (e.at(blockX + col, blockY + row) > 0) edgeMask |= 1u << (row * kBlock + col);
+    mask &= edgeMask;
+  }
+  return mask;
+}
+
+// Pixels of the block inside the framebuffer.
+uint32_t blockBounds(int blockX, int blockY, int width, int height) {
+  uint32_t mask = 0;
+  for (int row = 0; row < kBlock; ++row)
+    for (int col = 0; col < kBlock; ++col)
+      if (blockX + col < width && blockY + row < height) mask |= 1u << (row * kBlock + col);
+  return mask;
+}
+
+// Lane layout of a group: quads of 2x2 (lanes TL, TR, BL, BR), quads side by side.
+template <class F>
+struct LaneLayout {
+  static constexpr int kLanes = F::kCount;
+  static constexpr int kQuads = kLanes / 4;
+  static constexpr int kGroupsPerBlock = 16 / kLanes;
+  int dx[kLanes], dy[kLanes];
+  LaneLayout() {
+    for (int i = 0; i < kLanes; ++i) {
+      dx[i] = (i / 4) * 2 + (i & 1);
+      dy[i] = (i >> 1) & 1;
+    }
+  }
+  // Group g's origin inside the block: 8 lanes cover rows 0-1 then 2-3; 4 lanes one quad.
+  static int originX(int g) { return kQuads == 2 ? 0 : (g & 1) * 2; }
+  static int originY(int g) { return kQuads == 2 ? g * 2 : (g >> 1) * 2; }
+};
+
+template <class F>
+F evaluatePlane(const Plane& p, F px, F py) {
+  return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
+}
+
+uint32_t depthCode(float z, TexelFormat format) {
+  return format == TexelFormat::Depth24 ? format::depth24FromFloat(z) : format::depth16FromFloat(z);
+}
+
+// Writes one lane's colour to an attachment (conversion and blending of the output merge).
+void writeColor(Texture& target, size_t texel, const float rgba[4], bool blendAdditive) {
+  if (target.format == TexelFormat::RGBA8) {
+    uint8_t* dst = &target.rgba8[texel * 4];
+    for (int c = 0; c < 4; ++c) {
+      const uint8_t src = format::unorm8FromFloat(rgba[c]);
+      // unorm8 ONE/ONE blending is a saturating 8-bit add (lp_bld_blend.c).
+      dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
+    }
+  } else if (target.format == TexelFormat::RGBA16F) {
+    uint16_t* dst = &target.half[texel * 4];
+    for (int c = 0; c < 4; ++c) {
+      // Float targets blend in float32 (exact destination + source), then one conversion.
+      const float value = blendAdditive ? format::floatFromHalf(dst[c]) + rgba[c] : rgba[c];
+      dst[c] = format::halfFromFloatTowardZero(value);
+    }
+  }
+}
+
+// Shades one lane group whose covered lanes are `laneMask`, at group origin (gx, gy).
+template <class F>
+void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
+                int gx, int gy, unsigned laneMask, PipelineCounters& counters) {
+  constexpr int kLanes = F::kCount;
+  const Framebuffer& fb = *job.framebuffer;
+  alignas(32) float pxLanes[kLanes], pyLanes[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    pxLanes[i] = float(gx + layout.dx[i]);
+    pyLanes[i] = float(gy + layout.dy[i]);
+  }
+  const F px = F::load(pxLanes);
+  const F py = F::load(pyLanes);
+
+  // Depth: plane + offset, clamped to [0, 1] (NaN -> 0), quantized, tested, written.
+  const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+  const RasterState& state = draw.state;
+  if (state.depthTest && fb.depth) {
+    alignas(32) float zLanes[kLanes];
+    simd::min(simd::max(z, F(0.0f)), F(1.0f)).store(zLanes);
+    for (int i = 0; i < kLanes; ++i) {
+      if (!(laneMask >> i & 1u)) continue;
+      const size_t texel = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+      const uint32_t code = depthCode(zLanes[i], fb.depth->format);
+      uint32_t& stored = fb.depth->depth[texel];
+      const bool pass = state.depthFunc == DepthFunc::Less ? code < stored : code <= stored;
+      if (!pass) laneMask &= ~(1u << i);
+      else if (state.depthWrite) stored = code;
+    }
+  }
+  if (!laneMask) return;
+  counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+  const int outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
+  if (outputs == 0) return;   // depth-only: the colour the shader would write is discarded
+
+  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
+  const F w = evaluatePlane(tri.w, px, py);
+  const F oow = F(1.0f) / w;
+  F varyings[kMaxVaryingFloats];
+  const int varyingCount = draw.shader->varyingFloats();
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
+
+  FragmentInput<F> in;
+  // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
+  const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
+  in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
+  in.gl_FrontFacing = tri.frontFacing;
+  FragmentOutput<F> out;
+  draw.shader->shadeFragments(in, varyings, out);
+  counters.laneGroupsShaded += 1;
+  counters.lanesShaded += kLanes;
+
+  for (int k = 0; k < outputs; ++k) {
+    alignas(32) float rgba[4][kLanes];
+    out.color[k].x.store(rgba[0]);
+    out.color[k].y.store(rgba[1]);
+    out.color[k].z.store(rgba[2]);
+    out.color[k].w.store(rgba[3]);
+    for (int i = 0; i < kLanes; ++i) {
+      if (!(laneMask >> i & 1u)) continue;
+      const size_t texel = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+      const float color[4] = {rgba[0][i], rgba[1][i], rgba[2][i], rgba[3][i]};
+      writeColor(*fb.colors[k], texel, color, state.blendAdditive);
+    }
+  }
+}
+
+}  // namespace
+
+template <class F>
+void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters) {
+  const Framebuffer& fb = *job.framebuffer;
+  const LaneLayout<F> layout;
+  const int tileX0 = tileX * kTileSize, tileY0 = tileY * kTileSize;
+  const int tileX1 = std::min(tileX0 + kTileSize, fb.width) - 1;
+  const int tileY1 = std::min(tileY0 + kTileSize, fb.height) - 1;
+
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const RecordedDraw& draw = job.draws[tri.drawIndex];
+    const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
+    const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
+    for (int blockY = y0 & ~(kBlock - 1); blockY <= y1; blockY += kBlock) {
+      for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
+        const uint32_t coverage = blockCoverage(tri, blockX, blockY) & blockBounds(blockX, blockY, fb.width, fb.height);
+        if (!coverage) continue;
+        for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
+          const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
+          unsigned laneMask = 0;
+          for (int i = 0; i < F::kCount; ++i) {
+            const int row = gy - blockY + layout.dy[i], col = gx - blockX + layout.dx[i];
+            if (coverage >> (row * kBlock + col) & 1u) laneMask |= 1u << i;
+          }
+          if (laneMask) shadeGroup(job, tri, draw, layout, gx, gy, laneMask, counters);
+        }
+      }
+    }
+  }
+}
+
+template void rasterizeTile<FastLanes>(const TileJob&, int, int, std::span<const uint32_t>, PipelineCounters&);
+template void rasterizeTile<ScalarLanes>(const TileJob&, int, int, std::span<const uint32_t>, PipelineCounters&);
+
+}  // namespace raster

@@ -1,0 +1,35 @@
+// Stages 5 and 6, rasterization and output merge, for one 64x64 screen tile.
+//
+// Input:  the tile's bin (triangle indices in API order), the set-up triangles, their
+//         draws, and the framebuffer.
+// Output: the tile's pixels in the framebuffer's attachments.
+//
+// Per triangle, the tile is walked in 4x4 blocks (llvmpipe's LP_RASTER_BLOCK_SIZE): a block
+// is trivially rejected or accepted by its corners, else its 16 pixel centres are tested.
+// Covered blocks are shaded a lane group at a time (two 2x2 quads side by side for 8
+// lanes, as llvmpipe's 8-wide shader), with helper lanes evaluated from the planes so
+// dFdx / dFdy see whole quads; a group with no covered lane is skipped.
+// Per group: z from its plane plus polygon offset, clamped to [0, 1] and quantized; depth
+// test and write; then varyings (perspective-correct), the fragment shader, and the
+// conversion and write of every colour output for the lanes that passed.
+#pragma once
+
+#include <span>
+
+#include "raster/pipeline/renderer.h"
+
+namespace raster {
+
+struct TileJob {
+  const Framebuffer* framebuffer = nullptr;
+  std::span<const SetupTriangle> triangles;
+  std::span<const Plane> varyingPlanes;
+  std::span<const RecordedDraw> draws;
+};
+
+constexpr int kTileSize = 64;   // llvmpipe TILE_ORDER 6
+
+template <class F>
+void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters);
+
+}  // namespace raster

@@ -1,0 +1,178 @@
+// Passes, draws and binning; rasterization of the binned tiles in parallel (renderer.h).
+#include "raster/pipeline/renderer.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "raster/format/conversions.h"
+#include "raster/pipeline/clip.h"
+#include "raster/pipeline/raster_tile.h"
+
+namespace raster {
+
+PipelineCounters& PipelineCounters::operator+=(const PipelineCounters& o) {
+  trianglesIn += o.trianglesIn;
+  trianglesClipped += o.trianglesClipped;
+  trianglesRejected += o.trianglesRejected;
+  trianglesSetUp += o.trianglesSetUp;
+  tileBinEntries += o.tileBinEntries;
+  laneGroupsShaded += o.laneGroupsShaded;
+  lanesShaded += o.lanesShaded;
+  lanesCovered += o.lanesCovered;
+  return *this;
+}
+
+Renderer::Renderer(int threads, bool scalarOnly) : pool_(threads), scalarOnly_(scalarOnly) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewport, const ClearValues& clearValues) {
+  flush();
+  framebuffer_ = framebuffer;
+  tilesX_ = (framebuffer.width + kTileSize - 1) / kTileSize;
+  tilesY_ = (framebuffer.height + kTileSize - 1) / kTileSize;
+  bins_.assign(size_t(tilesX_) * size_t(tilesY_), {});
+
+  // GL viewport -> scale/translate (_mesa_get_viewport_xform), mirrored for window-system
+  // buffers as st_atom_viewport does for Y_0_TOP framebuffers. Depth range [0, 1].
+  const float halfWidth = 0.5f * float(viewport.width), halfHeight = 0.5f * float(viewport.height);
+  viewport_.scale[0] = halfWidth;
+  viewport_.translate[0] = halfWidth + float(viewport.x);
+  viewport_.scale[1] = halfHeight;
+  viewport_.translate[1] = halfHeight + float(viewport.y);
+  viewport_.scale[2] = 0.5f;
+  viewport_.translate[2] = 0.5f;
+  if (framebuffer.flipY) {
+    viewport_.scale[1] = -viewport_.scale[1];
+    viewport_.translate[1] = float(framebuffer.height) - viewport_.translate[1];
+  }
+  clear(clearValues);
+}
+
+void Renderer::clear(const ClearValues& values) {
+  if (values.color) {
+    for (Texture* target : framebuffer_.colors) {
+      if (target->format == TexelFormat::RGBA8) {
+        uint8_t texel[4];
+        for (int c = 0; c < 4; ++c) texel[c] = format::unorm8FromFloat(std::clamp(values.colorValue[c], 0.0f, 1.0f));
+        for (size_t i = 0; i < target->rgba8.size(); i += 4) std::copy(texel, texel + 4, &target->rgba8[i]);
+      } else if (target->format == TexelFormat::RGBA16F) {
+        uint16_t texel[4];
+        for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatNearestEven(values.colorValue[c]);
+        for (size_t i = 0; i < target->half.size(); i += 4) std::copy(texel, texel + 4, &target->half[i]);
+      }
+    }
+  }
+  if (values.depth && framebuffer_.depth) {
+    const uint32_t code = format::depthClearCode(values.depthValue, framebuffer_.depth->depthBits());
+    std::fill(framebuffer_.depth->depth.begin(), framebuffer_.depth->depth.end(), code);
+  }
+}
+
+void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& vertices,
+                    std::span<const uint32_t> indices, const RasterState& state, int instanceCount) {
+  if (framebuffer_.width <= 0) throw std::logic_error("Renderer::draw before beginPass");
+  const int varyingFloats = shader->varyingFloats();
+  for (uint32_t index : indices)
+    if (index >= uint32_t(vertices.vertexCount))
+      throw std::out_of_range("index " + std::to_string(index) + " past the vertex buffer (" +
+                              std::to_string(vertices.vertexCount) + " vertices)");
+
+  // Vertex shading: every vertex of the buffer once per instance; instances in parallel.
+  ShadedVertices shaded;
+  shaded.varyingFloats = varyingFloats;
+  shaded.stride = vertex_stage::kVaryingOffset + varyingFloats;
+  const size_t records = size_t(vertices.vertexCount) * size_t(instanceCount);
+  shaded.data.resize(records * size_t(shaded.stride));
+  shaded.clipMask.resize(records);
+  pool_.parallelFor(instanceCount, [&](int instance) {
+    shader->shadeVertices(vertices, instance, instance * vertices.vertexCount, viewport_, shaded);
+  });
+
+  // Primitive assembly, clipping and setup, in API order.
+  SetupState setup;
+  setup.framebufferWidth = framebuffer_.width;
+  setup.framebufferHeight = framebuffer_.height;
+  setup.bottomEdgeRule = framebuffer_.flipY;
+  setup.cullBack = state.cullBack;
+  setup.polygonOffset = state.polygonOffset;
+  setup.offsetFactor = state.offsetFactor;
+  // With no depth buffer llvmpipe uses the 24-bit resolvable difference.
+  setup.offsetUnitsScaled = polygonOffsetUnits(state.offsetUnits, framebuffer_.depth ? framebuffer_.depth->depthBits() : 24);
+  setup.varyingFloats = varyingFloats;
+
+  const uint32_t drawIndex = uint32_t(draws_.size());
+  const uint32_t firstTriangle = uint32_t(triangles_.size());
+  clip::Clipper clipper(varyingFloats, viewport_);
+  for (int instance = 0; instance < instanceCount; ++instance) {
+    const int base = instance * vertices.vertexCount;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const int r0 = base + int(indices[t]), r1 = base + int(indices[t + 1]), r2 = base + int(indices[t + 2]);
+      const unsigned m0 = shaded.clipMask[size_t(r0)], m1 = shaded.clipMask[size_t(r1)], m2 = shaded.clipMask[size_t(r2)];
+      counters_.trianglesIn++;
+      if (m0 & m1 & m2) {   // all three outside one plane
+        counters_.trianglesRejected++;
+        continue;
+      }
+      if ((m0 | m1 | m2) == 0) {
+        counters_.trianglesSetUp += setupTriangle(setup, shaded.record(r0), shaded.record(r1), shaded.record(r2),
+                                                  drawIndex, triangles_, varyingPlanes_);
+        continue;
+      }
+      counters_.trianglesClipped++;
+      const clip::Polygon& polygon =
+          clipper.clipTriangle(shaded.record(r0), shaded.record(r1), shaded.record(r2), m0 | m1 | m2);
+      for (int i = 2; i < polygon.count; ++i) {
+        counters_.trianglesSetUp += setupTriangle(setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0],
+                                                  drawIndex, triangles_, varyingPlanes_);
+      }
+    }
+  }
+  draws_.push_back(RecordedDraw{std::move(shader), state});
+  bin(firstTriangle);
+}
+
+// Bins triangles [firstTriangle, end) into the tiles their bounds touch, skipping tiles
+// that one edge function rejects at all four corners of the overlap.
+void Renderer::bin(uint32_t firstTriangle) {
+  for (uint32_t t = firstTriangle; t < triangles_.size(); ++t) {
+    const SetupTriangle& tri = triangles_[t];
+    for (int tileY = tri.minY / kTileSize; tileY <= tri.maxY / kTileSize; ++tileY) {
+      for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
+        const int x0 = std::max(tileX * kTileSize, tri.minX), x1 = std::min(tileX * kTileSize + kTileSize - 1, tri.maxX);
+        const int y0 = std::max(tileY * kTileSize, tri.minY), y1 = std::min(tileY * kTileSize + kTileSize - 1, tri.maxY);
+        bool outside = false;
+        for (const EdgeFunction& e : tri.edge)
+          outside = outside || std::max({e.at(x0, y0), e.at(x1, y0), e.at(x0, y1), e.at(x1, y1)}) <= 0;
+        if (outside) continue;
+        bins_[size_t(tileY) * size_t(tilesX_) + size_t(tileX)].push_back(t);
+        counters_.tileBinEntries++;
+      }
+    }
+  }
+}
+
+void Renderer::flush() {
+  if (!triangles_.empty()) {
+    TileJob job;
+    job.framebuffer = &framebuffer_;
+    job.triangles = triangles_;
+    job.varyingPlanes = varyingPlanes_;
+    job.draws = draws_;
+    std::vector<PipelineCounters> tileCounters(bins_.size());
+    pool_.parallelFor(int(bins_.size()), [&](int tile) {
+      if (bins_[size_t(tile)].empty()) return;
+      const int tileX = tile % tilesX_, tileY = tile / tilesX_;
+      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);
+      else rasterizeTile<FastLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);
+    });
+    for (const PipelineCounters& c : tileCounters) counters_ += c;
+  }
+  triangles_.clear();
+  varyingPlanes_.clear();
+  draws_.clear();
+  for (auto& b : bins_) b.clear();
+}
+
+}  // namespace raster

@@ -1,0 +1,114 @@
+// The pipeline's front door: passes and draws in API order, executed as GL would.
+//
+//   beginPass(framebuffer, viewport, clear)   binds a framebuffer and clears it
+//   draw(shader, vertices, indices, state)    vertex shading, clipping, setup and binning
+//                                             now; rasterization when the pass is flushed
+//   flush()                                   rasterizes every binned tile in parallel
+//
+// Flow of one draw (folders under raster/pipeline):
+//   fetch + vertex shading (vertex_stage) -> clip (clip) -> setup (setup) -> bin (here)
+//   -> per tile: coverage, early depth, quad shading, output merge (raster_tile)
+// Tiles are 64x64 pixels and each is rasterized by one task, walking its triangles in API
+// order, so the output does not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "raster/framebuffer/texture.h"
+#include "raster/pipeline/setup.h"
+#include "raster/pipeline/shader_instance.h"
+#include "raster/pipeline/vertex_stage.h"
+#include "raster/util/parallel.h"
+
+namespace raster {
+
+// A framebuffer: colour attachments (draw buffers in order) and an optional depth buffer.
+// flipY marks a window-system buffer, stored top row first as llvmpipe stores them: its
+// viewport transform is mirrored and its fill rule is bottom-left in memory rows.
+struct Framebuffer {
+  std::vector<Texture*> colors;
+  Texture* depth = nullptr;
+  int width = 0;
+  int height = 0;
+  bool flipY = false;
+};
+
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;   // GL window coordinates (y up)
+};
+
+struct ClearValues {
+  bool color = false;
+  float colorValue[4] = {0, 0, 0, 0};
+  bool depth = false;
+  float depthValue = 1.0f;
+};
+
+enum class DepthFunc { Less, Lequal };
+
+struct RasterState {
+  bool depthTest = true;
+  DepthFunc depthFunc = DepthFunc::Less;
+  bool depthWrite = true;
+  bool cullBack = false;
+  bool polygonOffset = false;
+  float offsetFactor = 0.0f;
+  float offsetUnits = 0.0f;
+  bool blendAdditive = false;
+};
+
+// A draw as the rasterizer needs it after binning.
+struct RecordedDraw {
+  std::unique_ptr<ShaderInstance> shader;
+  RasterState state;
+};
+
+// What happened in the pipeline since the counters were last reset.
+struct PipelineCounters {
+  uint64_t trianglesIn = 0;        // primitives assembled from indices
+  uint64_t trianglesClipped = 0;   // that needed the clipper
+  uint64_t trianglesRejected = 0;  // trivially outside one plane
+  uint64_t trianglesSetUp = 0;     // that reached the rasterizer (after culling)
+  uint64_t tileBinEntries = 0;     // (triangle, tile) pairs binned
+  uint64_t laneGroupsShaded = 0;   // fragment-shader invocations (lane groups)
+  uint64_t lanesShaded = 0;        // lanes in those groups (pixels + helpers)
+  uint64_t lanesCovered = 0;       // lanes that passed coverage and depth
+  PipelineCounters& operator+=(const PipelineCounters& o);
+};
+
+class Renderer {
+ public:
+  // threads = 0: every core. scalarOnly: shade with the plain-C++ lane type (every SIMD
+  // fast path off); the output bytes are the same.
+  explicit Renderer(int threads = 0, bool scalarOnly = false);
+  ~Renderer();
+
+  void beginPass(const Framebuffer& framebuffer, const Viewport& viewport, const ClearValues& clear);
+  void draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& vertices, std::span<const uint32_t> indices,
+            const RasterState& state, int instanceCount = 1);
+  void flush();
+
+  const PipelineCounters& counters() const { return counters_; }
+  void resetCounters() { counters_ = {}; }
+  int threads() const { return pool_.threads(); }
+
+ private:
+  void clear(const ClearValues& clear);
+  void bin(uint32_t firstTriangle);
+
+  ThreadPool pool_;
+  bool scalarOnly_;
+  Framebuffer framebuffer_;
+  ViewportTransform viewport_{};
+  std::vector<RecordedDraw> draws_;
+  std::vector<SetupTriangle> triangles_;
+  std::vector<Plane> varyingPlanes_;
+  std::vector<std::vector<uint32_t>> bins_;   // per tile: triangle indices in API order
+  int tilesX_ = 0, tilesY_ = 0;
+  PipelineCounters counters_;
+};
+
+}  // namespace raster

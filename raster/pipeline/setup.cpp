@@ -1,0 +1,147 @@
+// Triangle setup: snapping, orientation, culling, edge functions, planes, polygon offset.
+// Sources: llvmpipe lp_setup_tri.c (calc_fixed_position, triangle_both, do_triangle_ccw)
+// and lp_state_setup.c (init_args, calc_coef4, lp_do_offset_tri). See setup.h.
+#include "raster/pipeline/setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/format/conversions.h"
+#include "raster/pipeline/vertex_stage.h"
+
+namespace raster {
+namespace {
+
+constexpr int kFixedOrder = 8;                 // FIXED_ORDER: 8 sub-pixel bits
+constexpr float kFixedOne = float(1 << kFixedOrder);
+
+struct FixedTriangle {
+  int32_t x[3], y[3];
+};
+
+// calc_fixed_position (SSE path): (v - pixel_offset) * 256, cvtps2dq.
+int32_t snap(float windowCoord) { return format::roundToNearestEven((windowCoord - 0.5f) * kFixedOne); }
+
+// The setup JIT's per-triangle derived values (init_args).
+struct PlaneSetup {
+  float x0Center, y0Center;
+  float dx01Ooa, dy01Ooa, dx20Ooa, dy20Ooa;
+};
+
+// calc_coef4: the plane of one quantity with values a0, a1, a2 at the three vertices.
+Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
+  const float da01 = a0 - a1;
+  const float da20 = a2 - a0;
+  Plane p;
+  p.dadx = da01 * s.dy20Ooa - da20 * s.dy01Ooa;
+  p.dady = da20 * s.dx01Ooa - da01 * s.dx20Ooa;
+  p.a0 = a0 - (p.dadx * s.x0Center + p.dady * s.y0Center);
+  return p;
+}
+
+// lp_do_offset_tri for a unorm depth buffer: units + max(|dz/dx|, |dz/dy|) * factor.
+float polygonOffset(const SetupState& state, const float* p0, const float* p1, const float* p2, float ooa) {
+  const float dx01 = p0[0] - p1[0], dy01 = p0[1] - p1[1], dz01 = p0[2] - p1[2];
+  const float dx20 = p2[0] - p0[0], dy20 = p2[1] - p0[1], dz20 = p2[2] - p0[2];
+  const float res1 = dz20 * dy01 - dy20 * dz01;
+  const float res2 = dx20 * dz01 - dz20 * dx01;
+  const float dzdx = std::fabs(res1 * ooa);
+  const float dzdy = std::fabs(res2 * ooa);
+  const float maxSlope = (dzdx > dzdy || std::isnan(dzdx) || std::isnan(dzdy)) ? dzdx : dzdy;  // FCmp UGT
+  return state.offsetUnitsScaled + maxSlope * state.offsetFactor;
+}
+
+}  // namespace
+
+float polygonOffsetUnits(float units, int depthBits) {
+  const double mrd = 1.0 / double((1u << depthBits) - 1u);
+  return float(double(units) * mrd * 2.0);
+}
+
+bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, uint32_t drawIndex,
+                   std::vector<SetupTriangle>& triangles, std::vector<Plane>& varyingPlanes) {
+  using vertex_stage::kVaryingOffset;
+  using vertex_stage::kWindowOffset;
+  const float* vert[3] = {v0, v1, v2};
+
+  // Snap, and orient by the exact area sign (triangle_both).
+  FixedTriangle fixed;
+  for (int i = 0; i < 3; ++i) {
+    fixed.x[i] = snap(vert[i][kWindowOffset + 0]);
+    fixed.y[i] = snap(vert[i][kWindowOffset + 1]);
+  }
+  const int64_t dx01 = fixed.x[0] - fixed.x[1], dy01 = fixed.y[0] - fixed.y[1];
+  const int64_t dx20 = fixed.x[2] - fixed.x[0], dy20 = fixed.y[2] - fixed.y[0];
+  const int64_t area = dx01 * dy20 - dx20 * dy01;
+  if (area == 0) return false;
+  // GL's counter-clockwise (y up) is area < 0 in FBO memory rows, area > 0 when flipped.
+  const bool frontFacing = state.bottomEdgeRule ? (area > 0) : (area < 0);
+  if (state.cullBack && !frontFacing) return false;
+  if (area < 0) {
+    std::swap(vert[0], vert[1]);             // rotate_fixed_position_01
+    std::swap(fixed.x[0], fixed.x[1]);
+    std::swap(fixed.y[0], fixed.y[1]);
+  }
+
+  // Pixel bounds (do_triangle_ccw), trimmed to the framebuffer (draw region).
+  const int adj = state.bottomEdgeRule ? 1 : 0;
+  SetupTriangle tri;
+  tri.minX = std::min({fixed.x[0], fixed.x[1], fixed.x[2]}) >> kFixedOrder;
+  tri.maxX = (std::max({fixed.x[0], fixed.x[1], fixed.x[2]}) - 1) >> kFixedOrder;
+  tri.minY = (std::min({fixed.y[0], fixed.y[1], fixed.y[2]}) + adj) >> kFixedOrder;
+  tri.maxY = (std::max({fixed.y[0], fixed.y[1], fixed.y[2]}) - 1 + adj) >> kFixedOrder;
+  tri.minX = std::max(tri.minX, 0);
+  tri.minY = std::max(tri.minY, 0);
+  tri.maxX = std::min(tri.maxX, state.framebufferWidth - 1);
+  tri.maxY = std::min(tri.maxY, state.framebufferHeight - 1);
+  if (tri.minX > tri.maxX || tri.minY > tri.maxY) return false;
+
+  // Edge functions with the fill-rule bias.
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    EdgeFunction& e = tri.edge[i];
+    const int64_t dcdx = int64_t(fixed.y[i]) - fixed.y[j];
+    const int64_t dcdy = int64_t(fixed.x[i]) - fixed.x[j];
+    e.c = dcdx * fixed.x[i] - dcdy * fixed.y[i];
+    if (dcdx < 0) e.c++;                                   // left edges, both conventions
+    else if (dcdx == 0 && (state.bottomEdgeRule ? dcdy < 0 : dcdy > 0)) e.c++;
+    e.dcdx = dcdx << kFixedOrder;
+    e.dcdy = dcdy << kFixedOrder;
+  }
+
+  // Planes from the unsnapped float window positions (init_args), in the rotated order.
+  const float* p0 = vert[0] + kWindowOffset;
+  const float* p1 = vert[1] + kWindowOffset;
+  const float* p2 = vert[2] + kWindowOffset;
+  const float fdx01 = p0[0] - p1[0], fdy01 = p0[1] - p1[1];
+  const float fdx20 = p2[0] - p0[0], fdy20 = p2[1] - p0[1];
+  const float e = fdx01 * fdy20;
+  const float f = fdy01 * fdx20;
+  const float ooa = 1.0f / (e - f);
+  tri.depthOffset = state.polygonOffset ? polygonOffset(state, p0, p1, p2, ooa) : 0.0f;
+
+  PlaneSetup s;
+  s.x0Center = p0[0] - 0.5f;
+  s.y0Center = p0[1] - 0.5f;
+  s.dx20Ooa = fdx20 * ooa;
+  s.dy20Ooa = fdy20 * ooa;
+  s.dx01Ooa = fdx01 * ooa;
+  s.dy01Ooa = fdy01 * ooa;
+  tri.z = planeOf(s, p0[2], p1[2], p2[2]);
+  tri.w = planeOf(s, p0[3], p1[3], p2[3]);
+
+  // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
+  tri.varyingBase = uint32_t(varyingPlanes.size());
+  for (int v = 0; v < state.varyingFloats; ++v) {
+    const float a0 = vert[0][kVaryingOffset + v] * p0[3];
+    const float a1 = vert[1][kVaryingOffset + v] * p1[3];
+    const float a2 = vert[2][kVaryingOffset + v] * p2[3];
+    varyingPlanes.push_back(planeOf(s, a0, a1, a2));
+  }
+  tri.drawIndex = drawIndex;
+  tri.frontFacing = frontFacing;
+  triangles.push_back(tri);
+  return true;
+}
+
+}  // namespace raster

@@ -1,0 +1,129 @@
+// GLSL-like vector math over a lane type F, so shader ports read like their GLSL.
+//
+// vec2/vec3/vec4<F> hold one value per lane per component (structure of arrays).
+// Functions carry GLSL names and the operation order llvmpipe's compiler produces from
+// the GLSL (NIR with ffma lowered: plain multiply and add, no fusion):
+//   dot(a, b)      = (a.x*b.x + a.y*b.y) + a.z*b.z
+//   normalize(v)   = v * (1 / sqrt(dot(v, v)))          (GLSL IR: v * rsq(dot); rsq = 1/sqrt)
+//   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form)
+//   mat4 * vec4    = ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w   (column by column)
+// Uniform matrices are glm::mat4 (host math); they multiply lane vectors.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "raster/simd/lanes.h"
+
+namespace raster::glsl {
+
+using simd::abs;
+using simd::floor;
+using simd::fma;
+using simd::max;
+using simd::min;
+using simd::select;
+using simd::sqrt;
+
+// Scalar overloads, so ports can be instantiated with F = float where no quad is needed.
+inline float select(bool m, float a, float b) { return m ? a : b; }
+inline float min(float a, float b) { return a < b ? a : b; }
+inline float max(float a, float b) { return a > b ? a : b; }
+inline float floor(float a) { return std::floor(a); }
+inline float sqrt(float a) { return std::sqrt(a); }
+
+template <class F>
+struct vec2 {
+  F x, y;
+  vec2() = default;
+  vec2(F x_, F y_) : x(x_), y(y_) {}
+  explicit vec2(F s) : x(s), y(s) {}
+  explicit vec2(glm::vec2 v) : x(v.x), y(v.y) {}
+};
+
+template <class F>
+struct vec3 {
+  F x, y, z;
+  vec3() = default;
+  vec3(F x_, F y_, F z_) : x(x_), y(y_), z(z_) {}
+  explicit vec3(F s) : x(s), y(s), z(s) {}
+  explicit vec3(glm::vec3 v) : x(v.x), y(v.y), z(v.z) {}
+  vec2<F> xy() const { return {x, y}; }
+};
+
+template <class F>
+struct vec4 {
+  F x, y, z, w;
+  vec4() = default;
+  vec4(F x_, F y_, F z_, F w_) : x(x_), y(y_), z(z_), w(w_) {}
+  vec4(vec3<F> v, F w_) : x(v.x), y(v.y), z(v.z), w(w_) {}
+  explicit vec4(glm::vec4 v) : x(v.x), y(v.y), z(v.z), w(v.w) {}
+  vec3<F> xyz() const { return {x, y, z}; }
+  vec2<F> xy() const { return {x, y}; }
+};
+
+// Component-wise arithmetic, vector op vector and vector op scalar, as GLSL.
+#define RASTER_GLSL_OPS(op)                                                                            \
+  template <class F> vec2<F> operator op(vec2<F> a, vec2<F> b) { return {a.x op b.x, a.y op b.y}; }     \
+  template <class F> vec3<F> operator op(vec3<F> a, vec3<F> b) { return {a.x op b.x, a.y op b.y, a.z op b.z}; } \
+  template <class F> vec4<F> operator op(vec4<F> a, vec4<F> b) { return {a.x op b.x, a.y op b.y, a.z op b.z, a.w op b.w}; } \
+  template <class F> vec2<F> operator op(vec2<F> a, F s) { return {a.x op s, a.y op s}; }                \
+  template <class F> vec3<F> operator op(vec3<F> a, F s) { return {a.x op s, a.y op s, a.z op s}; }      \
+  template <class F> vec4<F> operator op(vec4<F> a, F s) { return {a.x op s, a.y op s, a.z op s, a.w op s}; } \
+  template <class F> vec2<F> operator op(F s, vec2<F> a) { return {s op a.x, s op a.y}; }                \
+  template <class F> vec3<F> operator op(F s, vec3<F> a) { return {s op a.x, s op a.y, s op a.z}; }
+RASTER_GLSL_OPS(+)
+RASTER_GLSL_OPS(-)
+RASTER_GLSL_OPS(*)
+RASTER_GLSL_OPS(/)
+#undef RASTER_GLSL_OPS
+
+// Uniform (host) vectors mixed with lane vectors.
+template <class F> vec3<F> operator+(vec3<F> a, glm::vec3 b) { return a + vec3<F>(b); }
+template <class F> vec3<F> operator+(glm::vec3 a, vec3<F> b) { return vec3<F>(a) + b; }
+template <class F> vec3<F> operator-(glm::vec3 a, vec3<F> b) { return vec3<F>(a) - b; }
+template <class F> vec3<F> operator*(vec3<F> a, glm::vec3 b) { return a * vec3<F>(b); }
+template <class F> vec3<F> operator*(glm::vec3 a, vec3<F> b) { return vec3<F>(a) * b; }
+template <class F> vec2<F> operator+(vec2<F> a, glm::vec2 b) { return a + vec2<F>(b); }
+template <class F> vec2<F> operator*(vec2<F> a, glm::vec2 b) { return a * vec2<F>(b); }
+
+template <class F> F dot(vec2<F> a, vec2<F> b) { return a.x * b.x + a.y * b.y; }
+template <class F> F dot(vec3<F> a, vec3<F> b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+template <class F> F dot(vec4<F> a, vec4<F> b) { return ((a.x * b.x + a.y * b.y) + a.z * b.z) + a.w * b.w; }
+template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
+template <class F> vec3<F> normalize(vec3<F> v) { return v * (F(1.0f) / sqrt(dot(v, v))); }
+
+template <class F> F mix(F a, F b, F t) { return a + t * (b - a); }
+template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.x, b.x, t.x), mix(a.y, b.y, t.y), mix(a.z, b.z, t.z)}; }
+template <class F> F clamp(F x, F lo, F hi) { return min(max(x, lo), hi); }
+template <class F> vec3<F> max(vec3<F> a, F b) { return {max(a.x, b), max(a.y, b), max(a.z, b)}; }
+
+// pow(x, y) per lane with the C library. llvmpipe computes exp2(y * log2(x)) with its own
+// polynomial approximations (lp_build_pow), so results differ in the last bits.
+inline float pow(float x, float y) { return std::pow(x, y); }
+template <class F>
+F pow(F x, F y) {
+  alignas(32) float xs[F::kCount], ys[F::kCount];
+  x.store(xs);
+  y.store(ys);
+  for (int i = 0; i < F::kCount; ++i) xs[i] = std::pow(xs[i], ys[i]);
+  return F::load(xs);
+}
+
+// mat4 * vec4, column by column in GLSL order.
+template <class F>
+vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {
+  auto column = [&](int row) { return ((F(m[0][row]) * v.x + F(m[1][row]) * v.y) + F(m[2][row]) * v.z) + F(m[3][row]) * v.w; };
+  return {column(0), column(1), column(2), column(3)};
+}
+
+// mat4 * mat4 as the shader computes it per invocation (each column is mat * vec).
+inline glm::mat4 mul(const glm::mat4& a, const glm::mat4& b) {
+  glm::mat4 r;
+  for (int c = 0; c < 4; ++c) {
+    const vec4<float> col = a * vec4<float>(b[c]);
+    r[c] = glm::vec4(col.x, col.y, col.z, col.w);
+  }
+  return r;
+}
+
+}  // namespace raster::glsl

@@ -1,0 +1,57 @@
+// Depth-compare sampling (sampler2DShadow), LINEAR + CLAMP_TO_EDGE, as llvmpipe does it.
+// Sources: lp_bld_sample_soa.c (lp_build_sample_wrap_linear, lp_build_sample_image_linear,
+// lp_build_sample_comparefunc, lp_build_masklerp2d); lp_bld_conv.c (unorm -> float).
+#include <algorithm>
+#include <cmath>
+
+#include "raster/format/conversions.h"
+#include "raster/texture/sampler.h"
+
+namespace raster::texture {
+namespace {
+
+struct LinearTaps {
+  int i0, i1;      // texel indices along one axis
+  float weight;    // weight of i1
+};
+
+// lp_build_sample_wrap_linear, CLAMP_TO_EDGE with normalized coordinates.
+LinearTaps wrapLinearClampToEdge(float coord, int size) {
+  const float sizeF = float(size);
+  float c = coord * sizeF;
+  c = (c < sizeF) ? c : sizeF;          // min(c, size); NaN returns the non-NaN size
+  c = c - 0.5f;
+  c = (c > 0.0f) ? c : 0.0f;            // max(c, 0)
+  const float floorC = std::floor(c);
+  LinearTaps taps;
+  taps.i0 = int(floorC);
+  taps.weight = c - floorC;
+  taps.i1 = std::min(taps.i0 + 1, size - 1);
+  return taps;
+}
+
+float texelAsFloat(const Texture& t, int x, int y) {
+  const uint32_t code = t.depth[size_t(y) * size_t(t.width) + size_t(x)];
+  return t.format == TexelFormat::Depth24 ? format::depth24ToFloat(code) : format::depth16ToFloat(code);
+}
+
+// (m1 ? w : 0) + (m0 ? 1 - w : 0)
+float maskLerp(float w, bool m0, bool m1) { return (m1 ? w : 0.0f) + (m0 ? 1.0f - w : 0.0f); }
+
+}  // namespace
+
+float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
+  ref = (ref > 0.0f) ? ref : 0.0f;      // clamp to [0, 1], NaN -> 0
+  ref = (ref < 1.0f) ? ref : 1.0f;
+  const LinearTaps x = wrapLinearClampToEdge(s, depth.width);
+  const LinearTaps y = wrapLinearClampToEdge(t, depth.height);
+  const bool m00 = ref <= texelAsFloat(depth, x.i0, y.i0);
+  const bool m01 = ref <= texelAsFloat(depth, x.i1, y.i0);
+  const bool m10 = ref <= texelAsFloat(depth, x.i0, y.i1);
+  const bool m11 = ref <= texelAsFloat(depth, x.i1, y.i1);
+  const float row0 = maskLerp(x.weight, m00, m01);
+  const float row1 = maskLerp(x.weight, m10, m11);
+  return std::fma(y.weight, row1 - row0, row0);
+}
+
+}  // namespace raster::texture

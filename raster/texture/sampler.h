@@ -1,0 +1,49 @@
+// Samplers as shader ports see them: GLSL's sampler2D / sampler2DShadow, bound to a
+// texture unit by a uniform, resolved to a Texture when a draw is recorded.
+#pragma once
+
+#include <type_traits>
+
+#include "raster/framebuffer/texture.h"
+#include "raster/simd/glsl.h"
+
+namespace raster {
+
+struct Sampler2D {
+  int unit = 0;                       // the uniform's value (texture unit)
+  const Texture* texture = nullptr;   // resolved at draw time
+};
+
+struct Sampler2DShadow {
+  int unit = 0;
+  const Texture* texture = nullptr;
+};
+
+namespace texture {
+
+// One shadow lookup, llvmpipe's arithmetic (lp_bld_sample_soa.c, linear filtering with
+// compare, CLAMP_TO_EDGE): the four bilinear texels are each compared with the reference
+// (ref <= texel, LEQUAL, ordered), and the 0/1 results weighted bilinearly:
+//   per row:  (m1 ? w : 0) + (m0 ? 1 - w : 0)        (lp_build_masklerp)
+//   rows:     fma(wy, row1 - row0, row0)              (lp_build_lerp, fmuladd)
+// The reference is clamped to [0, 1] (NaN -> 0) but not quantized to the depth format.
+float compareLinearClamp(const Texture& depth, float s, float t, float ref);
+
+}  // namespace texture
+
+// GLSL: texture(sampler2DShadow, vec3(uv, ref)), as the seed's textureCompare.
+template <class F>
+F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
+  if constexpr (std::is_same_v<F, float>) {
+    return texture::compareLinearClamp(*sampler.texture, uv.x, uv.y, ref);
+  } else {
+    alignas(32) float s[F::kCount], t[F::kCount], r[F::kCount], out[F::kCount];
+    uv.x.store(s);
+    uv.y.store(t);
+    ref.store(r);
+    for (int i = 0; i < F::kCount; ++i) out[i] = texture::compareLinearClamp(*sampler.texture, s[i], t[i], r[i]);
+    return F::load(out);
+  }
+}
+
+}  // namespace raster

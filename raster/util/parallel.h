@@ -1,0 +1,31 @@
+// The one place threads appear: a parallel loop over independent work items, on oneTBB.
+//
+// Stage code never sees a thread. Work items must be independent (each screen tile is
+// owned by exactly one item), so results do not depend on the thread count: ThreadPool(1)
+// runs items serially in order and is bit-identical to any other count.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+namespace raster {
+
+class ThreadPool {
+ public:
+  // threads = 0: every core of the machine.
+  explicit ThreadPool(int threads = 0);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int threads() const { return threads_; }
+  // Calls fn(i) for every i in [0, count), in parallel, and returns when all are done.
+  void parallelFor(int count, const std::function<void(int)>& fn);
+
+ private:
+  int threads_;
+  struct Arena;
+  std::unique_ptr<Arena> arena_;
+};
+
+}  // namespace raster

@@ -1,0 +1,150 @@
+// The backend interface: what a scene may ask of a renderer.
+//
+// Each scene is written once against this interface; two implementations run it:
+//   RasterBackend (scenes/raster_backend.*): this project's pipeline;
+//   GlBackend     (scenes/gl_backend.*):     real OpenGL 3.3 core through OSMesa
+//                                            (llvmpipe by default, softpipe via GALLIUM_DRIVER).
+// The interface models only what the scenes use, with GL's meaning: programs are named
+// pairs of GLSL files under shaders_cpp/ (the GL backend compiles them; the raster backend
+// runs their C++ ports), meshes are indexed interleaved float buffers, render targets are
+// framebuffers of textures, and state is passed per draw.
+//
+// Coordinates: every image read back is in GL orientation flipped to top-row-first
+// (row 0 = the top of the picture), so both backends' images compare directly.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace scenes {
+
+using Handle = int;                    // 0 means "none" / the default framebuffer
+constexpr Handle kDefaultFramebuffer = 0;
+
+// ---- resources ------------------------------------------------------------------------
+struct VertexAttribute {
+  int location = 0;       // layout(location = N) in the vertex shader
+  int components = 3;     // 1..4 floats
+  int offsetFloats = 0;   // offset inside one vertex, in floats
+};
+
+struct MeshData {
+  std::vector<float> vertices;           // interleaved, strideFloats per vertex
+  int strideFloats = 0;
+  std::vector<VertexAttribute> attributes;
+  std::vector<uint32_t> indices;         // GL_TRIANGLES, GL_UNSIGNED_INT
+};
+
+enum class TextureFormat { Depth24, Depth16, RGBA8, RGBA16F };
+enum class Filter { Nearest, Linear };
+enum class Wrap { Repeat, ClampToEdge };
+
+struct SamplerState {
+  Filter filter = Filter::Linear;        // min and mag alike; no mipmaps
+  Wrap wrapS = Wrap::ClampToEdge;
+  Wrap wrapT = Wrap::ClampToEdge;
+  bool compareLequal = false;            // GL_COMPARE_REF_TO_TEXTURE with GL_LEQUAL
+};
+
+struct TextureDesc {
+  int width = 0;
+  int height = 0;
+  TextureFormat format = TextureFormat::RGBA8;
+  SamplerState sampler;
+};
+
+// A framebuffer object: colour attachments (draw buffers 0..n-1, in order) and an
+// optional depth attachment. No colour attachment means glDrawBuffer(GL_NONE).
+struct FramebufferDesc {
+  std::vector<Handle> colorTextures;
+  Handle depthTexture = 0;
+};
+
+// ---- per-pass and per-draw state --------------------------------------------------------
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;   // GL window coordinates (y up)
+};
+
+struct ClearOp {
+  bool color = false;
+  glm::vec4 colorValue{0.0f};
+  bool depth = false;
+  float depthValue = 1.0f;
+};
+
+enum class DepthFunc { Less, Lequal };
+enum class CullMode { None, Back };
+
+struct DrawState {
+  bool depthTest = true;
+  DepthFunc depthFunc = DepthFunc::Less;
+  bool depthWrite = true;
+  CullMode cull = CullMode::None;        // front faces are counter-clockwise
+  bool polygonOffset = false;            // GL_POLYGON_OFFSET_FILL
+  float offsetFactor = 0.0f;
+  float offsetUnits = 0.0f;
+  bool blendAdditive = false;            // glBlendFunc(GL_ONE, GL_ONE)
+};
+
+using UniformValue = std::variant<float, int, glm::vec2, glm::vec3, glm::vec4, glm::mat4>;
+
+// ---- read-back ----------------------------------------------------------------------------
+// An image read back from a backend, top row first. Exactly one of the payloads is used:
+//   rgba8:   width*height*4 bytes (RGBA8 targets)
+//   floats:  width*height*channels floats (RGBA16F targets as exact float values)
+//   depth:   width*height integer depth codes (0 .. 2^bits - 1) of a depth attachment
+struct ImageData {
+  int width = 0;
+  int height = 0;
+  int channels = 4;
+  TextureFormat format = TextureFormat::RGBA8;
+  std::vector<uint8_t> rgba8;
+  std::vector<float> floats;
+  std::vector<uint32_t> depth;
+  int depthBits = 0;
+};
+
+// ---- the interface --------------------------------------------------------------------------
+class Backend {
+ public:
+  virtual ~Backend() = default;
+
+  // Short name for reports: "raster", "llvmpipe", "softpipe".
+  virtual std::string name() const = 0;
+
+  // The default framebuffer (handle 0): RGBA8 colour + 24-bit depth, width x height.
+  virtual void resizeDefaultFramebuffer(int width, int height) = 0;
+
+  // `program` names shaders_cpp/<program>.vert and .frag, e.g. "shadow/main".
+  virtual Handle createProgram(const std::string& program) = 0;
+  virtual Handle createMesh(const MeshData& mesh) = 0;
+  // Pixels (top row last, as glTexImage2D takes them) may be empty: uninitialised storage.
+  // RGBA8 takes 4 bytes a texel; RGBA16F takes 4 floats a texel (rounded to half on upload).
+  virtual Handle createTexture(const TextureDesc& desc, const void* pixels = nullptr) = 0;
+  virtual Handle createFramebuffer(const FramebufferDesc& desc) = 0;
+
+  // glBindFramebuffer + glViewport + glClear.
+  virtual void beginPass(Handle framebuffer, const Viewport& viewport, const ClearOp& clear) = 0;
+  virtual void setUniform(Handle program, const std::string& name, const UniformValue& value) = 0;
+  // Binds a texture to a texture unit (the sampler uniform's value).
+  virtual void bindTexture(int unit, Handle texture) = 0;
+  // glDrawElements(GL_TRIANGLES, indexCount) of the whole mesh, instanceCount instances.
+  virtual void draw(Handle program, Handle mesh, const DrawState& state, int instanceCount = 1) = 0;
+  // Everything submitted so far is complete when this returns (glFinish).
+  virtual void finish() = 0;
+
+  // Read back a framebuffer's colour attachment (framebuffer 0: the default one).
+  virtual ImageData readColor(Handle framebuffer, int attachment = 0) = 0;
+  // Read back a framebuffer's depth buffer as integer codes.
+  virtual ImageData readDepth(Handle framebuffer) = 0;
+};
+
+// Where the GLSL sources live: $RASTER_SOURCE_DIR/shaders_cpp, else the build's source dir.
+std::string shaderSourceDir();
+
+}  // namespace scenes

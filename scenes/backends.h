@@ -1,0 +1,20 @@
+// Factories for the two Backend implementations.
+#pragma once
+
+#include <memory>
+
+#include "scenes/backend.h"
+
+namespace scenes {
+
+// This project's pipeline. threads = 0 uses every core; any count gives the same bytes.
+std::unique_ptr<Backend> makeRasterBackend(int threads = 0);
+
+// Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
+// (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;
+// both must be set before the first GL backend of the process is made. name() reports the
+// driver actually in use ("llvmpipe" or "softpipe"). Throws std::runtime_error when no
+// context can be made.
+std::unique_ptr<Backend> makeGlBackend();
+
+}  // namespace scenes

@@ -1,0 +1,229 @@
+// The Backend implemented by this project's pipeline (raster::Renderer).
+//
+// Resources are plain raster::Texture objects; the default framebuffer is an RGBA8 colour
+// texture and a 24-bit depth texture stored top row first (flipY), as llvmpipe stores
+// window-system buffers. Read-back flips FBO images (row 0 = GL's bottom) to top row first.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "raster/format/conversions.h"
+#include "raster/pipeline/renderer.h"
+#include "scenes/backends.h"
+#include "scenes/program_registry.h"
+
+namespace scenes {
+namespace {
+
+raster::TexelFormat toTexelFormat(TextureFormat f) {
+  switch (f) {
+    case TextureFormat::Depth24: return raster::TexelFormat::Depth24;
+    case TextureFormat::Depth16: return raster::TexelFormat::Depth16;
+    case TextureFormat::RGBA8: return raster::TexelFormat::RGBA8;
+    case TextureFormat::RGBA16F: return raster::TexelFormat::RGBA16F;
+  }
+  throw std::logic_error("unknown texture format");
+}
+
+raster::SamplerState toSamplerState(const SamplerState& s) {
+  raster::SamplerState r;
+  r.filter = s.filter == Filter::Linear ? raster::Filter::Linear : raster::Filter::Nearest;
+  r.wrapS = s.wrapS == Wrap::Repeat ? raster::Wrap::Repeat : raster::Wrap::ClampToEdge;
+  r.wrapT = s.wrapT == Wrap::Repeat ? raster::Wrap::Repeat : raster::Wrap::ClampToEdge;
+  r.compareLequal = s.compareLequal;
+  return r;
+}
+
+struct Mesh {
+  MeshData data;
+  raster::VertexStream stream;
+};
+
+class RasterBackend final : public Backend {
+ public:
+  explicit RasterBackend(int threads) : renderer_(threads) {
+    textures_.emplace_back();     // handle 0: no texture
+    framebuffers_.emplace_back(); // handle 0: the default framebuffer
+    meshes_.emplace_back();
+    programs_.emplace_back();
+    resizeDefaultFramebuffer(640, 480);
+  }
+
+  std::string name() const override { return "raster"; }
+
+  void resizeDefaultFramebuffer(int width, int height) override {
+    renderer_.flush();
+    defaultColor_ = raster::Texture(width, height, raster::TexelFormat::RGBA8);
+    defaultDepth_ = raster::Texture(width, height, raster::TexelFormat::Depth24);
+    raster::Framebuffer& fb = framebuffers_[kDefaultFramebuffer];
+    fb.colors = {&defaultColor_};
+    fb.depth = &defaultDepth_;
+    fb.width = width;
+    fb.height = height;
+    fb.flipY = true;
+  }
+
+  Handle createProgram(const std::string& program) override {
+    programs_.push_back(makeBoundProgram(program));
+    return Handle(programs_.size() - 1);
+  }
+
+  Handle createMesh(const MeshData& mesh) override {
+    auto m = std::make_unique<Mesh>();
+    m->data = mesh;
+    m->stream.vertices = m->data.vertices.data();
+    m->stream.strideFloats = mesh.strideFloats;
+    m->stream.vertexCount = mesh.strideFloats > 0 ? int(mesh.vertices.size() / size_t(mesh.strideFloats)) : 0;
+    for (const VertexAttribute& a : mesh.attributes) m->stream.attributes.push_back({a.location, a.components, a.offsetFloats});
+    meshes_.push_back(std::move(m));
+    return Handle(meshes_.size() - 1);
+  }
+
+  Handle createTexture(const TextureDesc& desc, const void* pixels) override {
+    auto t = std::make_unique<raster::Texture>(desc.width, desc.height, toTexelFormat(desc.format));
+    t->sampler = toSamplerState(desc.sampler);
+    if (pixels) upload(*t, pixels);
+    textures_.push_back(std::move(t));
+    return Handle(textures_.size() - 1);
+  }
+
+  Handle createFramebuffer(const FramebufferDesc& desc) override {
+    raster::Framebuffer fb;
+    auto attach = [&](Handle h) {
+      raster::Texture* t = texture(h);
+      if (fb.width == 0) { fb.width = t->width; fb.height = t->height; }
+      if (t->width != fb.width || t->height != fb.height) throw std::runtime_error("framebuffer attachments differ in size");
+      return t;
+    };
+    for (Handle h : desc.colorTextures) fb.colors.push_back(attach(h));
+    if (desc.depthTexture) fb.depth = attach(desc.depthTexture);
+    if (fb.width == 0) throw std::runtime_error("framebuffer without attachments");
+    framebuffers_.push_back(fb);
+    return Handle(framebuffers_.size() - 1);
+  }
+
+  void beginPass(Handle framebuffer, const Viewport& viewport, const ClearOp& clear) override {
+    raster::ClearValues values;
+    values.color = clear.color;
+    for (int c = 0; c < 4; ++c) values.colorValue[c] = clear.colorValue[c];
+    values.depth = clear.depth;
+    values.depthValue = clear.depthValue;
+    renderer_.beginPass(framebufferAt(framebuffer), {viewport.x, viewport.y, viewport.width, viewport.height}, values);
+  }
+
+  void setUniform(Handle program, const std::string& name, const UniformValue& value) override {
+    programAt(program).setUniform(name, value);
+  }
+
+  void bindTexture(int unit, Handle t) override {
+    if (unit < 0 || unit >= kTextureUnits) throw std::runtime_error("texture unit out of range");
+    units_[size_t(unit)] = t ? texture(t) : nullptr;
+  }
+
+  void draw(Handle program, Handle mesh, const DrawState& state, int instanceCount) override {
+    if (mesh <= 0 || size_t(mesh) >= meshes_.size()) throw std::runtime_error("unknown mesh handle");
+    const Mesh& m = *meshes_[size_t(mesh)];
+    raster::RasterState rs;
+    rs.depthTest = state.depthTest;
+    rs.depthFunc = state.depthFunc == DepthFunc::Less ? raster::DepthFunc::Less : raster::DepthFunc::Lequal;
+    rs.depthWrite = state.depthWrite;
+    rs.cullBack = state.cull == CullMode::Back;
+    rs.polygonOffset = state.polygonOffset;
+    rs.offsetFactor = state.offsetFactor;
+    rs.offsetUnits = state.offsetUnits;
+    rs.blendAdditive = state.blendAdditive;
+    renderer_.draw(programAt(program).instantiate(units_), m.stream, m.data.indices, rs, instanceCount);
+  }
+
+  void finish() override { renderer_.flush(); }
+
+  ImageData readColor(Handle framebuffer, int attachment) override {
+    renderer_.flush();
+    const raster::Framebuffer& fb = framebufferAt(framebuffer);
+    if (attachment < 0 || attachment >= int(fb.colors.size())) throw std::runtime_error("no such colour attachment");
+    const raster::Texture& t = *fb.colors[size_t(attachment)];
+    ImageData image = imageHeader(t);
+    for (int row = 0; row < t.height; ++row) {
+      const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width) * 4;
+      if (t.format == raster::TexelFormat::RGBA8) {
+        image.rgba8.insert(image.rgba8.end(), t.rgba8.begin() + long(src), t.rgba8.begin() + long(src + size_t(t.width) * 4));
+      } else {
+        for (size_t i = 0; i < size_t(t.width) * 4; ++i) image.floats.push_back(raster::format::floatFromHalf(t.half[src + i]));
+      }
+    }
+    return image;
+  }
+
+  ImageData readDepth(Handle framebuffer) override {
+    renderer_.flush();
+    const raster::Framebuffer& fb = framebufferAt(framebuffer);
+    if (!fb.depth) throw std::runtime_error("framebuffer has no depth buffer");
+    const raster::Texture& t = *fb.depth;
+    ImageData image = imageHeader(t);
+    for (int row = 0; row < t.height; ++row) {
+      const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width);
+      image.depth.insert(image.depth.end(), t.depth.begin() + long(src), t.depth.begin() + long(src + size_t(t.width)));
+    }
+    return image;
+  }
+
+  raster::Renderer& renderer() { return renderer_; }
+
+ private:
+  static ImageData imageHeader(const raster::Texture& t) {
+    ImageData image;
+    image.width = t.width;
+    image.height = t.height;
+    image.channels = t.isDepth() ? 1 : 4;
+    image.depthBits = t.depthBits();
+    switch (t.format) {
+      case raster::TexelFormat::RGBA8: image.format = TextureFormat::RGBA8; break;
+      case raster::TexelFormat::RGBA16F: image.format = TextureFormat::RGBA16F; break;
+      case raster::TexelFormat::Depth16: image.format = TextureFormat::Depth16; break;
+      case raster::TexelFormat::Depth24: image.format = TextureFormat::Depth24; break;
+    }
+    return image;
+  }
+
+  // glTexImage2D: rows as given (row 0 = t = 0); float -> half rounds to nearest even.
+  static void upload(raster::Texture& t, const void* pixels) {
+    const size_t texels = size_t(t.width) * size_t(t.height);
+    if (t.format == raster::TexelFormat::RGBA8) {
+      const auto* src = static_cast<const uint8_t*>(pixels);
+      t.rgba8.assign(src, src + texels * 4);
+    } else if (t.format == raster::TexelFormat::RGBA16F) {
+      const auto* src = static_cast<const float*>(pixels);
+      for (size_t i = 0; i < texels * 4; ++i) t.half[i] = raster::format::halfFromFloatNearestEven(src[i]);
+    } else {
+      throw std::runtime_error("depth textures are not uploaded from the CPU in these scenes");
+    }
+  }
+
+  raster::Texture* texture(Handle h) {
+    if (h <= 0 || size_t(h) >= textures_.size()) throw std::runtime_error("unknown texture handle");
+    return textures_[size_t(h)].get();
+  }
+  raster::Framebuffer& framebufferAt(Handle h) {
+    if (h < 0 || size_t(h) >= framebuffers_.size()) throw std::runtime_error("unknown framebuffer handle");
+    return framebuffers_[size_t(h)];
+  }
+  BoundProgram& programAt(Handle h) {
+    if (h <= 0 || size_t(h) >= programs_.size()) throw std::runtime_error("unknown program handle");
+    return *programs_[size_t(h)];
+  }
+
+  raster::Renderer renderer_;
+  raster::Texture defaultColor_, defaultDepth_;
+  std::vector<std::unique_ptr<raster::Texture>> textures_;
+  std::vector<raster::Framebuffer> framebuffers_;
+  std::vector<std::unique_ptr<Mesh>> meshes_;
+  std::vector<std::unique_ptr<BoundProgram>> programs_;
+  TextureUnits units_{};
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> makeRasterBackend(int threads) { return std::make_unique<RasterBackend>(threads); }
+
+}  // namespace scenes

@@ -1,0 +1,53 @@
+// A scene: resources created once, then frames rendered at time t, through a Backend.
+//
+// The same Scene code runs on both backends; the comparison reads back the same named
+// targets from each. A frame N of a tutorial renders at t = N / 60.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scenes/backend.h"
+
+namespace scenes {
+
+struct SceneOptions {
+  float time = 1.0f;      // seconds
+  int width = 640;        // final image size
+  int height = 480;
+  std::string assetDir;   // empty: the default (see assetDirectory())
+};
+
+// One image the scene exposes for inspection and comparison.
+struct Target {
+  std::string name;       // e.g. "shadow_map", "final"
+  ImageData image;
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  virtual std::string name() const = 0;
+  // Creates programs, meshes, textures and framebuffers. Throws SceneError on bad assets.
+  virtual void setup(Backend& backend) = 0;
+  // Everything the tutorial's update() does for one frame at time t (no finish()).
+  virtual void renderFrame(Backend& backend, float time) = 0;
+  // Every target of the last frame (finishes the backend first), the final image last.
+  virtual std::vector<Target> readTargets(Backend& backend) = 0;
+};
+
+// A problem a user can fix (missing or corrupt asset, unknown scene): one clear line.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::vector<std::string> sceneNames();
+// Throws SceneError for an unknown name.
+std::unique_ptr<Scene> makeScene(const std::string& name, const SceneOptions& options);
+
+// The asset folder: options.assetDir, else $RASTER_ASSETS, else ../shared/assets.
+std::string assetDirectory(const SceneOptions& options);
+
+}  // namespace scenes

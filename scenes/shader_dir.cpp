@@ -1,0 +1,21 @@
+// Where the GLSL sources (and their C++ ports) live: shaders_cpp/ under the source root.
+//
+// $RASTER_SOURCE_DIR (when set and not empty) overrides the source root at run time (tests point it at a temporary
+// folder); otherwise the RASTER_SOURCE_DIR compile definition set by CMakeLists.txt is used.
+#include <cstdlib>
+#include <string>
+
+#include "scenes/backend.h"
+
+#ifndef RASTER_SOURCE_DIR
+#define RASTER_SOURCE_DIR "."
+#endif
+
+namespace scenes {
+
+std::string shaderSourceDir() {
+  const char* root = std::getenv("RASTER_SOURCE_DIR");
+  return std::string(root != nullptr && *root != '\0' ? root : RASTER_SOURCE_DIR) + "/shaders_cpp";
+}
+
+}  // namespace scenes

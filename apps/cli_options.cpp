@@ -1,0 +1,184 @@
+// The `raster` program's options and their validation (see cli_options.h).
+#include "apps/cli_options.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+#include "scenes/scene.h"
+
+namespace cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxSide = 16384;      // GL_MAX_TEXTURE_SIZE of llvmpipe
+constexpr int kMaxThreads = 1024;    // far above any machine this runs on
+
+void addFrameOptions(CLI::App& command, FrameArgs& args) {
+  std::string names;
+  for (const auto& name : scenes::sceneNames()) names += (names.empty() ? "" : ", ") + name;
+  command.add_option("scene", args.scene, "Scene: " + names)->required()->type_name("SCENE");
+  command.add_option("--time", args.time, "Time in seconds (frame N is N/60)")
+      ->type_name("T")->capture_default_str();
+  command.add_option("--size", args.size, "Final image size")->type_name("WxH")->capture_default_str();
+  command.add_option("--threads", args.threads,
+                     "Threads of this pipeline and llvmpipe (LP_NUM_THREADS), 0..1024; 0: every core")
+      ->type_name("N")->capture_default_str();
+  command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
+      ->type_name("DIR");
+}
+
+// A non-negative decimal integer that fits in uint64_t.
+std::optional<uint64_t> parseUnsigned(const std::string& text) {
+  uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+  return value;
+}
+
+// A finite number, the whole text.
+double parseNumber(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+    throw UsageError(option + ": '" + text + "' is not a finite number");
+  return value;
+}
+
+bool writableFolder(const fs::path& folder) {
+  std::error_code error;
+  return fs::is_directory(folder, error) && access(folder.c_str(), W_OK | X_OK) == 0;
+}
+
+}  // namespace
+
+CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args) {
+  CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to PNG");
+  addFrameOptions(*command, args);
+  command->add_option("--backend", args.backend, "raster (this pipeline) or gl (OSMesa)")
+      ->type_name("raster|gl")->capture_default_str();
+  command->add_option("--out", args.out, "PNG of the final image (default: SCENE.png)")
+      ->type_name("FILE.png");
+  command->add_option("--dump", args.dump,
+                      "Folder for every target: NAME.png, and NAME.pfm for depth/float targets")
+      ->type_name("DIR");
+  return command;
+}
+
+CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
+  CLI::App* command = app.add_subcommand(
+      "compare", "Render a scene with a test and a reference backend and compare every target");
+  addFrameOptions(*command, args);
+  command->add_option("--out", args.out,
+                      "Folder for NAME_ours.png, NAME_gl.png, NAME_diff.png (default: compare-SCENE)")
+      ->type_name("DIR");
+  command->add_option("--reference", args.reference, "Reference GL driver")
+      ->type_name("llvmpipe|softpipe")->capture_default_str();
+  command->add_option("--test", args.test, "Tested side: this pipeline, or softpipe")
+      ->type_name("raster|softpipe")->capture_default_str();
+  command->add_option("--max-rmse", args.maxRmse, "Fail if an RGBA8 target's RMSE (8-bit steps) exceeds X")
+      ->type_name("X");
+  command->add_option("--min-psnr", args.minPsnr, "Fail if an RGBA8 target's PSNR (dB) is below X")
+      ->type_name("X");
+  command->add_option("--max-share-over1", args.maxShareOver1,
+                      "Fail if an RGBA8 target has more than this fraction (0..1) of pixels off by > 1 step")
+      ->type_name("X");
+  command->add_option("--max-depth-lsb", args.maxDepthLsb,
+                      "Fail if a depth target differs anywhere by more than N LSBs")
+      ->type_name("N");
+  return command;
+}
+
+Frame validateFrame(const FrameArgs& args) {
+  Frame frame;
+  // The scene must be one the library knows.
+  const auto names = scenes::sceneNames();
+  if (std::find(names.begin(), names.end(), args.scene) == names.end()) {
+    std::string known;
+    for (const auto& name : names) known += (known.empty() ? "" : ", ") + name;
+    throw UsageError("unknown scene '" + args.scene + "' (known scenes: " + known + ")");
+  }
+  frame.scene = args.scene;
+
+  // --size: WxH, each side 1..kMaxSide.
+  const size_t x = args.size.find('x');
+  const auto width = parseUnsigned(args.size.substr(0, x));
+  const auto height = x == std::string::npos ? std::nullopt : parseUnsigned(args.size.substr(x + 1));
+  if (!width || !height)
+    throw UsageError("--size: '" + args.size + "' is not WxH (e.g. 640x480)");
+  if (*width < 1 || *height < 1 || *width > kMaxSide || *height > kMaxSide)
+    throw UsageError("--size: " + args.size + " is out of range (each side 1.." +
+                     std::to_string(kMaxSide) + ")");
+  frame.width = int(*width);
+  frame.height = int(*height);
+
+  // --time: finite, not negative, and still finite as a float.
+  const double time = parseNumber("--time", args.time);
+  if (time < 0 || !std::isfinite(float(time)))
+    throw UsageError("--time: " + args.time + " is out of range (0 or more seconds)");
+  frame.time = float(time);
+
+  if (args.threads < 0 || args.threads > kMaxThreads)
+    throw UsageError("--threads: " + std::to_string(args.threads) + " is out of range (0.." +
+                     std::to_string(kMaxThreads) + ")");
+  frame.threads = args.threads;
+
+  if (!args.assets.empty() && !fs::is_directory(args.assets))
+    throw UsageError("--assets: no such folder: " + args.assets);
+  frame.assets = args.assets;
+  return frame;
+}
+
+Thresholds validateThresholds(const CompareArgs& args) {
+  Thresholds limits;
+  if (!args.maxRmse.empty()) {
+    limits.maxRmse = parseNumber("--max-rmse", args.maxRmse);
+    if (*limits.maxRmse < 0) throw UsageError("--max-rmse: must be 0 or more");
+  }
+  if (!args.minPsnr.empty()) limits.minPsnr = parseNumber("--min-psnr", args.minPsnr);
+  if (!args.maxShareOver1.empty()) {
+    limits.maxShareOver1 = parseNumber("--max-share-over1", args.maxShareOver1);
+    if (*limits.maxShareOver1 < 0 || *limits.maxShareOver1 > 1)
+      throw UsageError("--max-share-over1: must be a fraction between 0 and 1");
+  }
+  if (!args.maxDepthLsb.empty()) {
+    limits.maxDepthLsb = parseUnsigned(args.maxDepthLsb);
+    if (!limits.maxDepthLsb)
+      throw UsageError("--max-depth-lsb: '" + args.maxDepthLsb + "' is not a whole number >= 0");
+  }
+  return limits;
+}
+
+void checkOutputFile(const std::string& option, const std::string& path) {
+  const fs::path file(path);
+  const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  if (path.empty() || !file.has_filename())
+    throw UsageError(option + ": '" + path + "' names no file");
+  if (fs::is_directory(file)) throw UsageError(option + ": " + path + " is a folder");
+  if (!writableFolder(folder))
+    throw UsageError(option + ": cannot write into " + folder.string() +
+                     " (no such folder, or not writable)");
+}
+
+void checkOutputFolder(const std::string& option, const std::string& path) {
+  if (path.empty()) throw UsageError(option + ": names no folder");
+  fs::path folder = fs::path(path).lexically_normal();
+  if (!folder.has_filename()) folder = folder.parent_path();   // "out/" -> "out"
+  std::error_code error;
+  if (fs::exists(folder, error)) {
+    if (!writableFolder(folder))
+      throw UsageError(option + ": " + path + " is not a writable folder");
+    return;
+  }
+  const fs::path parent = folder.has_parent_path() ? folder.parent_path() : fs::path(".");
+  if (!writableFolder(parent))
+    throw UsageError(option + ": cannot create " + path + " (" + parent.string() +
+                     " does not exist or is not writable)");
+}
+
+}  // namespace cli

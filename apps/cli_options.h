@@ -1,0 +1,75 @@
+// The `raster` program's options: what each subcommand accepts, and the checks that turn
+// raw text into validated values before any work starts.
+//
+// Every check throws UsageError with one line naming the option and the problem; main()
+// prints it as "raster: <line>" and exits with status 2. Output locations are checked here
+// too (their folder exists and is writable), so a bad path fails in milliseconds rather
+// than after a render, and nothing is written.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace cli {
+
+// Something the user asked for that cannot be done as asked (exit status 2).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Options shared by `render` and `compare`, as typed on the command line.
+struct FrameArgs {
+  std::string scene;
+  std::string time = "1";
+  std::string size = "640x480";
+  int threads = 0;             // 0: every core
+  std::string assets;          // empty: the scene library's default
+};
+
+struct RenderArgs : FrameArgs {
+  std::string backend = "raster";
+  std::string out;             // empty: SCENE.png
+  std::string dump;            // empty: no dump
+};
+
+struct CompareArgs : FrameArgs {
+  std::string out;             // empty: compare-SCENE
+  std::string reference = "llvmpipe";
+  std::string test = "raster";
+  std::string maxRmse, minPsnr, maxShareOver1, maxDepthLsb;   // empty: no threshold
+};
+
+// The validated frame: what to render, where, and when.
+struct Frame {
+  std::string scene;
+  float time = 1.0f;
+  int width = 0, height = 0;
+  int threads = 0;
+  std::string assets;
+};
+
+// Limits the compare thresholds set; absent ones are not checked.
+struct Thresholds {
+  std::optional<double> maxRmse, minPsnr, maxShareOver1;
+  std::optional<uint64_t> maxDepthLsb;
+};
+
+// Adds the subcommands to app, bound to args (parsed by app.parse()).
+CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
+CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
+
+// Checks the shared options: a known scene, WxH within 1..16384, a finite time >= 0,
+// threads within 0..1024, an existing asset folder.
+Frame validateFrame(const FrameArgs& args);
+Thresholds validateThresholds(const CompareArgs& args);
+
+// Checks that `path` can be created or replaced: its folder exists and is writable.
+void checkOutputFile(const std::string& option, const std::string& path);
+// Checks that `path` is a writable folder, or can be made in an existing writable folder.
+void checkOutputFolder(const std::string& option, const std::string& path);
+
+}  // namespace cli

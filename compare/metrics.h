@@ -1,0 +1,62 @@
+// Image comparison metrics: how far one backend's target is from another's.
+//
+// The unit of difference depends on what the target stores, so a number means the same
+// thing whatever the backend:
+//   rgba8: 8-bit steps of any of the four channels;
+//   depth: LSBs of the integer depth code (2^bits - 1 is the far plane);
+//   half:  half-float ULPs (values read back as floats are exact halves), counted on an
+//          integer order of the half bit patterns in which +0 and -0 are one point.
+// compareImages() summarises a whole target; pixelDifference() is the per-pixel measure
+// the heat map (image_io.h) draws.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "scenes/backend.h"
+
+namespace compare {
+
+struct TargetStats {
+  std::string name;
+  std::string kind;                    // "rgba8", "depth", "half"
+  double maxAbs = 0;                   // rgba8: steps; depth: LSBs; half: float value
+  double rmse = 0;                     // over every channel sample, in the same unit
+  double psnr = 0;                     // peak 255, 2^bits - 1 or 1.0; +inf when identical
+  double shareDiffering = 0;           // of pixels: any channel differs at all
+  double shareOver1 = 0;               // any channel differs by more than 1 unit
+  double shareOver4 = 0;               // ... by more than 4 units
+  uint64_t depthTexelsDiffering = 0;   // depth only
+  uint64_t maxDepthLsb = 0;            // depth only
+  double shareBitIdentical = 0;        // of pixels whose every channel has the same bits
+  uint64_t maxHalfUlps = 0;            // half only
+  int width = 0, height = 0;
+};
+
+// "rgba8", "depth" or "half"; throws std::invalid_argument for an inconsistent image.
+std::string imageKind(const scenes::ImageData& image);
+
+// Throws std::invalid_argument (naming `name`) unless a and b have the same size, kind and
+// layout (channel count of float images, bits of depth images).
+void checkComparable(const std::string& name, const scenes::ImageData& a,
+                     const scenes::ImageData& b);
+
+// Compares two images of the same size, kind and layout (see checkComparable).
+TargetStats compareImages(const std::string& name, const scenes::ImageData& a,
+                          const scenes::ImageData& b);
+
+// The largest difference over the channels of one pixel, in the kind's unit (see above);
+// a and b must be comparable.
+uint64_t pixelDifference(const scenes::ImageData& a, const scenes::ImageData& b, size_t pixel);
+
+// Half-float helpers: the bit pattern of a float rounded to half (to nearest even), and the
+// distance in ULPs between two halves (0 between +0 and -0).
+uint16_t halfBits(float value);
+uint64_t halfUlpDistance(uint16_t a, uint16_t b);
+
+// One aligned, human-readable line; depth lines add "texels N" (differing), half lines
+// "identical P%  max|d| X". E.g.
+//   final            rgba8 640x480    max 3            rmse 0.2827     psnr 59.10   differ  10.119%  >1   2.731%  >4   0.000%
+std::string formatStatsLine(const TargetStats& stats);
+
+}  // namespace compare

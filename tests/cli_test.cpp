@@ -1,0 +1,259 @@
+// The `raster` program's command line and the comparison machinery behind it.
+//
+// Bad input must fail fast and cleanly: exit status 2, one "raster: ..." line on stderr, and
+// no file written. These run the built executable (RASTER_CLI_PATH) in an empty temporary
+// folder and look at what it leaves. The metric and PFM checks pin down the units the
+// comparison reports (8-bit steps, depth LSBs, half ULPs) and that dumps load back exactly.
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "compare/image_io.h"
+#include "compare/metrics.h"
+#include "scenes/scene.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using scenes::ImageData;
+using scenes::TextureFormat;
+
+// A fresh temporary folder, removed with its content afterwards.
+struct TempFolder {
+  fs::path path;
+  TempFolder() {
+    std::string pattern = (fs::temp_directory_path() / "raster-cli-test-XXXXXX").string();
+    REQUIRE(mkdtemp(pattern.data()) != nullptr);
+    path = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+struct RunResult {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string shellQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs `raster ARGS` with the working folder `cwd`; its output is kept outside that folder.
+RunResult runCli(const fs::path& cwd, const std::string& args) {
+  const fs::path logs = cwd.parent_path();
+  const std::string command = "cd " + shellQuote(cwd) + " && " + shellQuote(RASTER_CLI_PATH) + " " +
+                              args + " >" + shellQuote(logs / "out.txt") + " 2>" +
+                              shellQuote(logs / "err.txt");
+  const int raw = std::system(command.c_str());
+  RunResult result;
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  result.out = readText(logs / "out.txt");
+  result.err = readText(logs / "err.txt");
+  return result;
+}
+
+// Runs a command that must be refused as bad input, and checks how it is refused.
+void expectRefused(const std::string& args) {
+  TempFolder temp;
+  const fs::path cwd = temp.path / "cwd";
+  fs::create_directory(cwd);
+  const RunResult result = runCli(cwd, args);
+  INFO("raster " << args << "\nstderr: " << result.err);
+  CHECK(result.status == 2);
+  CHECK(result.err.rfind("raster: ", 0) == 0);
+  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+  CHECK(fs::is_empty(cwd));
+}
+
+std::string aScene() { return scenes::sceneNames().front(); }
+
+ImageData rgba8Image(int width, int height, uint8_t value) {
+  ImageData image;
+  image.width = width;
+  image.height = height;
+  image.format = TextureFormat::RGBA8;
+  image.rgba8.assign(size_t(width) * height * 4, value);
+  return image;
+}
+
+ImageData halfImage(std::vector<float> rgba) {
+  ImageData image;
+  image.width = int(rgba.size() / 4);
+  image.height = 1;
+  image.format = TextureFormat::RGBA16F;
+  image.floats = std::move(rgba);
+  return image;
+}
+
+ImageData depthImage(int width, int height, std::vector<uint32_t> codes) {
+  ImageData image;
+  image.width = width;
+  image.height = height;
+  image.channels = 1;
+  image.format = TextureFormat::Depth24;
+  image.depthBits = 24;
+  image.depth = std::move(codes);
+  return image;
+}
+
+// The value of a half bit pattern, decoded independently of compare::halfBits.
+float halfValue(uint16_t bits) {
+  const int exponent = (bits >> 10) & 0x1f, mantissa = bits & 0x3ff;
+  const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
+                                        : std::ldexp(float(mantissa | 0x400), exponent - 25);
+  return (bits & 0x8000) ? -magnitude : magnitude;
+}
+
+}  // namespace
+
+TEST_SUITE("cli") {
+  TEST_CASE("--help at every level exits 0 and names the commands") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult top = runCli(cwd, "--help");
+    CHECK(top.status == 0);
+    CHECK(top.out.find("render") != std::string::npos);
+    CHECK(top.out.find("compare") != std::string::npos);
+    CHECK(runCli(cwd, "render --help").status == 0);
+    CHECK(runCli(cwd, "compare --help").status == 0);
+    CHECK(fs::is_empty(cwd));
+  }
+
+  TEST_CASE("an unknown scene is refused, naming the known ones") {
+    expectRefused("render no_such_scene");
+    expectRefused("compare no_such_scene");
+  }
+
+  TEST_CASE("bad sizes, times, threads and backends are refused") {
+    for (const char* size : {"0x0", "100000x100000", "640", "16385x10", "ax480", "640x-1"})
+      expectRefused("render " + aScene() + " --size=" + size);
+    for (const char* time : {"nan", "inf", "-1", "abc"})
+      expectRefused("render " + aScene() + " --time=" + time);
+    for (const char* threads : {"-1", "1025", "two"})
+      expectRefused("render " + aScene() + " --threads=" + threads);
+    expectRefused("render " + aScene() + " --backend foo");
+    expectRefused("compare " + aScene() + " --reference foo");
+    expectRefused("compare " + aScene() + " --test foo");
+    expectRefused("compare " + aScene() + " --max-rmse nan");
+  }
+
+  TEST_CASE("an --out that cannot be written is refused before rendering") {
+    expectRefused("render " + aScene() + " --out /nonexistent/dir/x.png");
+    CHECK_FALSE(fs::exists("/nonexistent/dir/x.png"));
+    expectRefused("render " + aScene() + " --dump /nonexistent/dir/dump");
+    expectRefused("compare " + aScene() + " --out /nonexistent/dir/cmp");
+  }
+
+  TEST_CASE("identical images: no difference, infinite PSNR") {
+    const compare::TargetStats s = compare::compareImages("t", rgba8Image(4, 4, 7), rgba8Image(4, 4, 7));
+    CHECK(s.kind == "rgba8");
+    CHECK(s.maxAbs == 0);
+    CHECK(s.rmse == 0);
+    CHECK(std::isinf(s.psnr));
+    CHECK(s.shareDiffering == 0);
+    CHECK(s.shareBitIdentical == 1);
+    CHECK(compare::formatStatsLine(s).find("inf") != std::string::npos);
+  }
+
+  TEST_CASE("one step in one pixel counts as one differing pixel, none over 1") {
+    const ImageData a = rgba8Image(4, 4, 100);
+    ImageData b = a;
+    b.rgba8[5 * 4 + 2] = 101;
+    const compare::TargetStats s = compare::compareImages("t", a, b);
+    CHECK(s.maxAbs == 1);
+    CHECK(s.shareDiffering == doctest::Approx(1.0 / 16));
+    CHECK(s.shareOver1 == 0);
+    CHECK(s.rmse == doctest::Approx(std::sqrt(1.0 / 64)));
+    CHECK(compare::pixelDifference(a, b, 5) == 1);
+  }
+
+  TEST_CASE("depth differences are counted in LSBs") {
+    const ImageData a = depthImage(2, 1, {1000, 2000});
+    const compare::TargetStats s = compare::compareImages("d", a, depthImage(2, 1, {1000, 2003}));
+    CHECK(s.kind == "depth");
+    CHECK(s.depthTexelsDiffering == 1);
+    CHECK(s.maxDepthLsb == 3);
+    CHECK(s.shareOver1 == doctest::Approx(0.5));
+    CHECK(s.shareOver4 == 0);
+  }
+
+  TEST_CASE("half ULPs: +0 and -0 are 0 apart, 1.0 and the next half 1") {
+    CHECK(compare::halfUlpDistance(compare::halfBits(0.0f), compare::halfBits(-0.0f)) == 0);
+    CHECK(compare::halfUlpDistance(0x0001, 0x8001) == 2);   // across zero
+    const float nextAfterOne = 1.0f + 1.0f / 1024;          // 0x3c01
+    CHECK(compare::halfBits(nextAfterOne) == 0x3c01);
+    const compare::TargetStats s = compare::compareImages(
+        "h", halfImage({0.0f, 1.0f, 0.5f, 1.0f}), halfImage({-0.0f, nextAfterOne, 0.5f, 1.0f}));
+    CHECK(s.kind == "half");
+    CHECK(s.maxHalfUlps == 1);
+    CHECK(s.shareBitIdentical == 0);
+    CHECK(compare::compareImages("z", halfImage({0, 0, 0, 1}), halfImage({-0.0f, 0, 0, 1})).maxHalfUlps == 0);
+  }
+
+  TEST_CASE("halfBits rounds every half value back to its own bits") {
+    for (uint32_t bits = 0; bits <= 0xffff; ++bits) {
+      if ((bits & 0x7c00) == 0x7c00 && (bits & 0x3ff)) continue;   // NaNs have no single pattern
+      const uint16_t half = uint16_t(bits);
+      if (compare::halfBits(halfValue(half)) != half) FAIL("half 0x" << std::hex << bits);
+    }
+    CHECK(compare::halfBits(65519.0f) == 0x7bff);   // rounds down to the largest half
+    CHECK(compare::halfBits(65520.0f) == 0x7c00);   // rounds up to infinity
+  }
+
+  TEST_CASE("PFM dumps round-trip depth codes and floats exactly") {
+    TempFolder temp;
+    const std::string depthPath = (temp.path / "depth.pfm").string();
+    const ImageData depth = depthImage(3, 2, {0, 1, 16777215, 12345678, 42, 8388608});
+    compare::writePfm(depthPath, depth);
+    const ImageData depthBack = compare::readPfmDepth(depthPath, 24);
+    CHECK(depthBack.width == 3);
+    CHECK(depthBack.height == 2);
+    CHECK(depthBack.depth == depth.depth);
+    CHECK(compare::compareImages("d", depth, depthBack).depthTexelsDiffering == 0);
+
+    const std::string floatPath = (temp.path / "hdr.pfm").string();
+    const ImageData opaque = halfImage({0.25f, -2.0f, 65504.0f, 1.0f, 0.0f, 1e-7f, 3.0f, 1.0f});
+    compare::writePfm(floatPath, opaque);
+    CHECK_FALSE(fs::exists(compare::alphaPfmPath(floatPath)));
+    CHECK(compare::readPfmFloat(floatPath).floats == opaque.floats);
+
+    const ImageData translucent = halfImage({0.25f, 0.5f, 0.75f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f});
+    compare::writePfm(floatPath, translucent);
+    CHECK(fs::exists(compare::alphaPfmPath(floatPath)));
+    CHECK(compare::readPfmFloat(floatPath).floats == translucent.floats);
+  }
+
+  TEST_CASE("writes leave no temporary file, and fail with the path named") {
+    TempFolder temp;
+    const std::string path = (temp.path / "x.png").string();
+    compare::writePng(path, rgba8Image(2, 2, 9));
+    CHECK(compare::readPng(path).rgba8 == rgba8Image(2, 2, 9).rgba8);
+    CHECK(std::distance(fs::directory_iterator(temp.path), fs::directory_iterator()) == 1);
+    CHECK_THROWS_WITH_AS(compare::writePng("/nonexistent/dir/x.png", rgba8Image(1, 1, 0)),
+                         doctest::Contains("cannot write /nonexistent/dir/x.png: "),
+                         std::runtime_error);
+  }
+}

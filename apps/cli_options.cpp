@@ -29,6 +29,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
   command.add_option("--threads", args.threads,
                      "Threads of this pipeline and llvmpipe (LP_NUM_THREADS), 0..1024; 0: every core")
       ->type_name("N")->capture_default_str();
+  command.add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
   command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
       ->type_name("DIR");
 }
@@ -127,6 +128,7 @@ Frame validateFrame(const FrameArgs& args) {
     throw UsageError("--threads: " + std::to_string(args.threads) + " is out of range (0.." +
                      std::to_string(kMaxThreads) + ")");
   frame.threads = args.threads;
+  frame.scalar = args.scalar;
 
   if (!args.assets.empty() && !fs::is_directory(args.assets))
     throw UsageError("--assets: no such folder: " + args.assets);

@@ -27,6 +27,7 @@ struct FrameArgs {
   std::string time = "1";
   std::string size = "640x480";
   int threads = 0;             // 0: every core
+  bool scalar = false;         // this pipeline with every SIMD fast path off
   std::string assets;          // empty: the scene library's default
 };
 
@@ -49,6 +50,7 @@ struct Frame {
   float time = 1.0f;
   int width = 0, height = 0;
   int threads = 0;
+  bool scalar = false;
   std::string assets;
 };
 

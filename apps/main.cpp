@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/bench.h"
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
 #include "compare/metrics.h"
@@ -62,7 +63,7 @@ Side renderInProcess(const Frame& frame, const std::string& backendKind) {
   std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, options);
   std::unique_ptr<scenes::Backend> backend;
   if (backendKind == "raster") {
-    backend = scenes::makeRasterBackend(frame.threads);
+    backend = scenes::makeRasterBackend(frame.threads, frame.scalar);
   } else {
     if (frame.threads > 0) setenv("LP_NUM_THREADS", std::to_string(frame.threads).c_str(), 1);
     backend = scenes::makeGlBackend();
@@ -296,8 +297,11 @@ int main(int argc, char** argv) {
   cli::RenderArgs renderArgs;
   cli::CompareArgs compareArgs;
   CLI::App* render = cli::addRenderCommand(app, renderArgs);
+  cli::BenchArgs benchArgs;
   cli::addCompareCommand(app, compareArgs);
-  app.footer("Run 'raster render --help' or 'raster compare --help' for a command's options.");
+  CLI::App* bench = cli::addBenchCommand(app, benchArgs);
+  CLI::App* list = app.add_subcommand("scenes", "List the scenes, one a line");
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -310,6 +314,11 @@ int main(int argc, char** argv) {
 
   // Run: bad input and scene problems exit 2, anything else is an internal failure (1).
   try {
+    if (list->parsed()) {
+      for (const std::string& name : scenes::sceneNames()) std::cout << name << "\n";
+      return 0;
+    }
+    if (bench->parsed()) return cli::runBench(benchArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

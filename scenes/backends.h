@@ -8,7 +8,8 @@
 namespace scenes {
 
 // This project's pipeline. threads = 0 uses every core; any count gives the same bytes.
-std::unique_ptr<Backend> makeRasterBackend(int threads = 0);
+// scalarOnly turns every SIMD fast path off (plain C++ lanes); the bytes are the same too.
+std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

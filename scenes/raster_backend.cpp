@@ -42,7 +42,7 @@ struct Mesh {
 
 class RasterBackend final : public Backend {
  public:
-  explicit RasterBackend(int threads) : renderer_(threads) {
+  RasterBackend(int threads, bool scalarOnly) : renderer_(threads, scalarOnly) {
     textures_.emplace_back();     // handle 0: no texture
     framebuffers_.emplace_back(); // handle 0: the default framebuffer
     meshes_.emplace_back();
@@ -168,8 +168,6 @@ class RasterBackend final : public Backend {
     return image;
   }
 
-  raster::Renderer& renderer() { return renderer_; }
-
  private:
   static ImageData imageHeader(const raster::Texture& t) {
     ImageData image;
@@ -224,6 +222,8 @@ class RasterBackend final : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> makeRasterBackend(int threads) { return std::make_unique<RasterBackend>(threads); }
+std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly) {
+  return std::make_unique<RasterBackend>(threads, scalarOnly);
+}
 
 }  // namespace scenes

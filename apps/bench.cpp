@@ -1,0 +1,121 @@
+// `raster bench`: side-by-side frame times of this pipeline and a GL driver (bench.h).
+//
+// Method: both backends set the scene up once (assets and resources are outside the
+// timing), then frames alternate A B A B: each timed frame is everything the tutorial's
+// update() does, plus finish() (glFinish for GL), on the same thread count (LP_NUM_THREADS
+// for llvmpipe). Medians are reported, and the ratio of the medians: on shared, noisy
+// machines the ratio is the figure to quote, not the absolute times.
+#include "apps/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "scenes/backends.h"
+#include "scenes/scene.h"
+
+namespace cli {
+namespace {
+
+struct Timed {
+  std::string backend;
+  std::vector<double> ms;
+  double median() const {
+    std::vector<double> v = ms;
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+  }
+};
+
+struct Contender {
+  std::unique_ptr<scenes::Backend> backend;
+  std::unique_ptr<scenes::Scene> scene;
+  Timed timed;
+};
+
+double renderOnce(Contender& c, float time) {
+  const auto start = std::chrono::steady_clock::now();
+  c.scene->renderFrame(*c.backend, time);
+  c.backend->finish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
+  CLI::App* command = app.add_subcommand("bench", "Time this pipeline against a GL driver, frames alternating");
+  command->add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
+  command->add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
+  command->add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
+  command->add_option("--threads", args.threads, "Threads for both (LP_NUM_THREADS for llvmpipe); 0: every core")
+      ->type_name("N")->capture_default_str();
+  command->add_option("--frames", args.frames, "Timed frames per backend (1..10000)")->capture_default_str();
+  command->add_option("--warmup", args.warmup, "Untimed frames per backend first (0..1000)")->capture_default_str();
+  command->add_option("--gl-driver", args.glDriver, "GL driver to race: llvmpipe or softpipe")->capture_default_str();
+  command->add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
+  command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  return command;
+}
+
+int runBench(const BenchArgs& args) {
+  const Frame frame = validateFrame(args);
+  if (args.frames < 1 || args.frames > 10000) throw UsageError("--frames: out of range (1..10000)");
+  if (args.warmup < 0 || args.warmup > 1000) throw UsageError("--warmup: out of range (0..1000)");
+  if (args.glDriver != "llvmpipe" && args.glDriver != "softpipe")
+    throw UsageError("--gl-driver: " + args.glDriver + " is not llvmpipe or softpipe");
+  if (!args.json.empty()) checkOutputFile("--json", args.json);
+
+  // Same thread count for both: 0 means every core, which is also llvmpipe's default.
+  const int threads = frame.threads > 0 ? frame.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  setenv("GALLIUM_DRIVER", args.glDriver.c_str(), 1);
+  setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
+
+  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets};
+  Contender contenders[2];
+  contenders[0].backend = scenes::makeRasterBackend(threads, frame.scalar);
+  contenders[1].backend = scenes::makeGlBackend();
+  for (Contender& c : contenders) {
+    c.timed.backend = c.backend->name();
+    c.scene = scenes::makeScene(frame.scene, options);
+    c.backend->resizeDefaultFramebuffer(frame.width, frame.height);
+    c.scene->setup(*c.backend);
+  }
+
+  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d: %d warm-up + %d timed frames each\n", frame.scene.c_str(),
+               frame.width, frame.height, frame.time, threads, args.warmup, args.frames);
+  for (int i = 0; i < args.warmup; ++i)
+    for (Contender& c : contenders) renderOnce(c, frame.time);
+  for (int i = 0; i < args.frames; ++i) {
+    for (Contender& c : contenders) c.timed.ms.push_back(renderOnce(c, frame.time));
+    if ((i + 1) % 10 == 0 || i + 1 == args.frames) std::fprintf(stderr, "  %d/%d frames\n", i + 1, args.frames);
+  }
+
+  const double ratio = contenders[1].timed.median() / contenders[0].timed.median();
+  for (const Contender& c : contenders)
+    std::printf("scene=%s backend=%s threads=%d size=%dx%d median_ms=%.3f\n", frame.scene.c_str(),
+                c.timed.backend.c_str(), threads, frame.width, frame.height, c.timed.median());
+  std::printf("ratio_%s_over_raster=%.3f\n", contenders[1].timed.backend.c_str(), ratio);
+
+  if (!args.json.empty()) {
+    std::ofstream json(args.json);
+    json << "{\"scene\":\"" << frame.scene << "\",\"size\":[" << frame.width << "," << frame.height
+         << "],\"time\":" << frame.time << ",\"threads\":" << threads << ",\"backends\":[";
+    for (int k = 0; k < 2; ++k) {
+      const Timed& t = contenders[k].timed;
+      json << (k ? "," : "") << "{\"name\":\"" << t.backend << "\",\"median_ms\":" << t.median() << ",\"frames_ms\":[";
+      for (size_t i = 0; i < t.ms.size(); ++i) json << (i ? "," : "") << t.ms[i];
+      json << "]}";
+    }
+    json << "],\"ratio\":" << ratio << "}\n";
+    if (!json) throw std::runtime_error("cannot write " + args.json);
+  }
+  return 0;
+}
+
+}  // namespace cli

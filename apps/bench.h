@@ -1,0 +1,23 @@
+// `raster bench`: this pipeline and a GL driver render the same frame, alternating in one
+// process, and the medians of their frame times are compared.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/cli_options.h"
+
+namespace cli {
+
+struct BenchArgs : FrameArgs {
+  int frames = 30;                 // timed frames per backend
+  int warmup = 3;                  // untimed frames per backend first
+  std::string glDriver = "llvmpipe";
+  std::string json;                // empty: no JSON file
+};
+
+CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);
+int runBench(const BenchArgs& args);
+
+}  // namespace cli

@@ -1,0 +1,142 @@
+// Shader ports: the SIMD instantiation (Float8) and the plain C++ one (Lanes<8>) of every
+// port agree bit for bit, vertex and fragment, on random inputs. Each lane type computes
+// every operation as the same single IEEE float32 operation, so no ULP allowance is needed.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <random>
+
+#include "raster/format/conversions.h"
+#include "shaders_cpp/shadow/main.h"
+#include "shaders_cpp/shadow/shadow.h"
+
+namespace {
+
+using Fast = raster::simd::FastLanes;
+using Plain = raster::simd::Lanes<8>;
+
+template <class F>
+F lanesFrom(const float (&values)[8]) {
+  return F::load(values);
+}
+
+bool sameBits(const float* a, const float* b, int n) { return std::memcmp(a, b, sizeof(float) * size_t(n)) == 0; }
+
+template <class F>
+void storeVec4(const raster::glsl::vec4<F>& v, float out[4][8]) {
+  v.x.store(out[0]);
+  v.y.store(out[1]);
+  v.z.store(out[2]);
+  v.w.store(out[3]);
+}
+
+// Runs Program::vertex on both lane types with the same random attributes.
+template <class Program>
+void checkVertexAgrees(const typename Program::Uniforms& u, std::mt19937& rng) {
+  std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+  raster::VertexInput<Fast> fastIn;
+  raster::VertexInput<Plain> plainIn;
+  for (int a = 0; a < raster::kMaxVertexAttributes; ++a) {
+    float comps[4][8];
+    for (auto& c : comps)
+      for (float& x : c) x = value(rng);
+    fastIn.attribute[a] = {lanesFrom<Fast>(comps[0]), lanesFrom<Fast>(comps[1]), lanesFrom<Fast>(comps[2]), lanesFrom<Fast>(comps[3])};
+    plainIn.attribute[a] = {lanesFrom<Plain>(comps[0]), lanesFrom<Plain>(comps[1]), lanesFrom<Plain>(comps[2]), lanesFrom<Plain>(comps[3])};
+  }
+  fastIn.gl_InstanceID = Fast(0.0f);
+  plainIn.gl_InstanceID = Plain(0.0f);
+  raster::glsl::vec4<Fast> fastPos;
+  raster::glsl::vec4<Plain> plainPos;
+  typename Program::template Varyings<Fast> fastOut;
+  typename Program::template Varyings<Plain> plainOut;
+  Program::vertex(u, fastIn, fastPos, fastOut);
+  Program::vertex(u, plainIn, plainPos, plainOut);
+  float a[4][8], b[4][8];
+  storeVec4(fastPos, a);
+  storeVec4(plainPos, b);
+  CHECK(sameBits(&a[0][0], &b[0][0], 32));
+  constexpr int n = raster::varyingFloatCount<Program>();
+  Fast fv[n > 0 ? n : 1];
+  Plain pv[n > 0 ? n : 1];
+  raster::varyingsToArray<Program, Fast>(fastOut, fv);
+  raster::varyingsToArray<Program, Plain>(plainOut, pv);
+  for (int i = 0; i < n; ++i) {
+    float x[8], y[8];
+    fv[i].store(x);
+    pv[i].store(y);
+    CHECK(sameBits(x, y, 8));
+  }
+}
+
+// Runs Program::fragment on both lane types with the same random varyings.
+template <class Program>
+void checkFragmentAgrees(const typename Program::Uniforms& u, std::mt19937& rng, float lo, float hi) {
+  constexpr int n = raster::varyingFloatCount<Program>();
+  std::uniform_real_distribution<float> value(lo, hi);
+  Fast fv[n > 0 ? n : 1];
+  Plain pv[n > 0 ? n : 1];
+  for (int i = 0; i < n; ++i) {
+    float lanes[8];
+    for (float& x : lanes) x = value(rng);
+    fv[i] = lanesFrom<Fast>(lanes);
+    pv[i] = lanesFrom<Plain>(lanes);
+  }
+  raster::FragmentInput<Fast> fastIn;
+  raster::FragmentInput<Plain> plainIn;
+  fastIn.gl_FragCoord = {Fast(0.5f), Fast(0.5f), Fast(0.5f), Fast(1.0f)};
+  plainIn.gl_FragCoord = {Plain(0.5f), Plain(0.5f), Plain(0.5f), Plain(1.0f)};
+  raster::FragmentOutput<Fast> fastOut;
+  raster::FragmentOutput<Plain> plainOut;
+  Program::fragment(u, fastIn, raster::varyingsFromArray<Program, Fast>(fv), fastOut);
+  Program::fragment(u, plainIn, raster::varyingsFromArray<Program, Plain>(pv), plainOut);
+  for (int k = 0; k < Program::kColorOutputs; ++k) {
+    float a[4][8], b[4][8];
+    storeVec4(fastOut.color[k], a);
+    storeVec4(plainOut.color[k], b);
+    CHECK(sameBits(&a[0][0], &b[0][0], 32));
+  }
+}
+
+glm::mat4 randomMatrix(std::mt19937& rng) {
+  std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+  glm::mat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = value(rng);
+  return m;
+}
+
+}  // namespace
+
+TEST_SUITE("shaders") {
+  TEST_CASE("shadow/shadow: SIMD and plain lanes agree bit for bit") {
+    std::mt19937 rng(11);
+    for (int round = 0; round < 200; ++round) {
+      shaders::shadow::ShadowPass::Uniforms u;
+      u.u_light_vp = randomMatrix(rng);
+      u.u_model = randomMatrix(rng);
+      checkVertexAgrees<shaders::shadow::ShadowPass>(u, rng);
+      checkFragmentAgrees<shaders::shadow::ShadowPass>(u, rng, -1.0f, 1.0f);
+    }
+  }
+
+  TEST_CASE("shadow/main: SIMD and plain lanes agree bit for bit") {
+    std::mt19937 rng(12);
+    raster::Texture shadowMap(64, 64, raster::TexelFormat::Depth24);
+    std::uniform_int_distribution<uint32_t> code(0, raster::format::kDepth24Max);
+    for (uint32_t& texel : shadowMap.depth) texel = code(rng);
+    std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+    for (int round = 0; round < 400; ++round) {
+      shaders::shadow::MainPass::Uniforms u;
+      u.u_light_vp = randomMatrix(rng);
+      u.u_model = randomMatrix(rng);
+      u.u_view = randomMatrix(rng);
+      u.u_proj = randomMatrix(rng);
+      u.u_light_dir = {value(rng), value(rng), value(rng)};
+      u.u_cam_pos = {value(rng), value(rng), value(rng)};
+      u.u_is_floor = float(round % 2);
+      u.shadow_map.texture = &shadowMap;
+      checkVertexAgrees<shaders::shadow::MainPass>(u, rng);
+      checkFragmentAgrees<shaders::shadow::MainPass>(u, rng, -2.0f, 2.0f);
+    }
+  }
+}

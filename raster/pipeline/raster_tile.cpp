@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "raster/format/conversions.h"
+#include "raster/pipeline/output_merge.h"
 
 namespace raster {
 namespace {
@@ -66,25 +67,36 @@ F evaluatePlane(const Plane& p, F px, F py) {
   return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
 }
 
-uint32_t depthCode(float z, TexelFormat format) {
-  return format == TexelFormat::Depth24 ? format::depth24FromFloat(z) : format::depth16FromFloat(z);
-}
-
-// Writes one lane's colour to an attachment (conversion and blending of the output merge).
-void writeColor(Texture& target, size_t texel, const float rgba[4], bool blendAdditive) {
+// Writes the covered lanes of one colour output to an attachment: conversion, then
+// blending. unorm8 ONE/ONE blending is a saturating 8-bit add (lp_bld_blend.c); float
+// targets blend in float32 (exact destination + source) and convert once, toward zero.
+template <class F>
+void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t* texel, unsigned laneMask,
+                      bool blendAdditive) {
   if (target.format == TexelFormat::RGBA8) {
-    uint8_t* dst = &target.rgba8[texel * 4];
-    for (int c = 0; c < 4; ++c) {
-      const uint8_t src = format::unorm8FromFloat(rgba[c]);
-      // unorm8 ONE/ONE blending is a saturating 8-bit add (lp_bld_blend.c).
-      dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
+    uint32_t packed[F::kCount];
+    output_merge::packRgba8(color, packed);
+    for (int i = 0; i < F::kCount; ++i) {
+      if (!(laneMask >> i & 1u)) continue;
+      uint8_t* dst = &target.rgba8[texel[i] * 4];
+      for (int c = 0; c < 4; ++c) {
+        const uint8_t src = uint8_t(packed[i] >> (8 * c));
+        dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
+      }
     }
   } else if (target.format == TexelFormat::RGBA16F) {
-    uint16_t* dst = &target.half[texel * 4];
-    for (int c = 0; c < 4; ++c) {
-      // Float targets blend in float32 (exact destination + source), then one conversion.
-      const float value = blendAdditive ? format::floatFromHalf(dst[c]) + rgba[c] : rgba[c];
-      dst[c] = format::halfFromFloatTowardZero(value);
+    alignas(32) float rgba[4][F::kCount];
+    color.x.store(rgba[0]);
+    color.y.store(rgba[1]);
+    color.z.store(rgba[2]);
+    color.w.store(rgba[3]);
+    for (int i = 0; i < F::kCount; ++i) {
+      if (!(laneMask >> i & 1u)) continue;
+      uint16_t* dst = &target.half[texel[i] * 4];
+      for (int c = 0; c < 4; ++c) {
+        const float value = blendAdditive ? format::floatFromHalf(dst[c]) + rgba[c][i] : rgba[c][i];
+        dst[c] = format::halfFromFloatTowardZero(value);
+      }
     }
   }
 }
@@ -103,20 +115,21 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   const F px = F::load(pxLanes);
   const F py = F::load(pyLanes);
 
+  size_t texel[kLanes];
+  for (int i = 0; i < kLanes; ++i) texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+
   // Depth: plane + offset, clamped to [0, 1] (NaN -> 0), quantized, tested, written.
   const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
   const RasterState& state = draw.state;
   if (state.depthTest && fb.depth) {
-    alignas(32) float zLanes[kLanes];
-    simd::min(simd::max(z, F(0.0f)), F(1.0f)).store(zLanes);
+    uint32_t codes[kLanes];
+    output_merge::depthCodes(simd::min(simd::max(z, F(0.0f)), F(1.0f)), fb.depth->format, codes);
     for (int i = 0; i < kLanes; ++i) {
       if (!(laneMask >> i & 1u)) continue;
-      const size_t texel = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
-      const uint32_t code = depthCode(zLanes[i], fb.depth->format);
-      uint32_t& stored = fb.depth->depth[texel];
-      const bool pass = state.depthFunc == DepthFunc::Less ? code < stored : code <= stored;
+      uint32_t& stored = fb.depth->depth[texel[i]];
+      const bool pass = state.depthFunc == DepthFunc::Less ? codes[i] < stored : codes[i] <= stored;
       if (!pass) laneMask &= ~(1u << i);
-      else if (state.depthWrite) stored = code;
+      else if (state.depthWrite) stored = codes[i];
     }
   }
   if (!laneMask) return;
@@ -141,19 +154,7 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   counters.laneGroupsShaded += 1;
   counters.lanesShaded += kLanes;
 
-  for (int k = 0; k < outputs; ++k) {
-    alignas(32) float rgba[4][kLanes];
-    out.color[k].x.store(rgba[0]);
-    out.color[k].y.store(rgba[1]);
-    out.color[k].z.store(rgba[2]);
-    out.color[k].w.store(rgba[3]);
-    for (int i = 0; i < kLanes; ++i) {
-      if (!(laneMask >> i & 1u)) continue;
-      const size_t texel = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
-      const float color[4] = {rgba[0][i], rgba[1][i], rgba[2][i], rgba[3][i]};
-      writeColor(*fb.colors[k], texel, color, state.blendAdditive);
-    }
-  }
+  for (int k = 0; k < outputs; ++k) writeColorOutput(*fb.colors[k], out.color[k], texel, laneMask, state.blendAdditive);
 }
 
 }  // namespace

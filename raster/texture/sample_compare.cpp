@@ -54,4 +54,53 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
   return std::fma(y.weight, row1 - row0, row0);
 }
 
+#if RASTER_AVX2
+namespace {
+
+struct LinearTaps8 {
+  __m256i i0, i1;
+  __m256 weight;
+};
+
+// wrapLinearClampToEdge, lane for lane: minps/maxps return the second operand on NaN and
+// on ties, exactly as the scalar ternaries do.
+LinearTaps8 wrapLinearClampToEdge8(__m256 coord, int size) {
+  const __m256 sizeF = _mm256_set1_ps(float(size));
+  __m256 c = _mm256_mul_ps(coord, sizeF);
+  c = _mm256_min_ps(c, sizeF);
+  c = _mm256_sub_ps(c, _mm256_set1_ps(0.5f));
+  c = _mm256_max_ps(c, _mm256_setzero_ps());
+  const __m256 floorC = _mm256_floor_ps(c);
+  LinearTaps8 taps;
+  taps.i0 = _mm256_cvttps_epi32(floorC);
+  taps.weight = _mm256_sub_ps(c, floorC);
+  taps.i1 = _mm256_min_epi32(_mm256_add_epi32(taps.i0, _mm256_set1_epi32(1)), _mm256_set1_epi32(size - 1));
+  return taps;
+}
+
+}  // namespace
+
+simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref8) {
+  __m256 ref = _mm256_max_ps(ref8.v, _mm256_setzero_ps());
+  ref = _mm256_min_ps(ref, _mm256_set1_ps(1.0f));
+  const LinearTaps8 x = wrapLinearClampToEdge8(s.v, depth.width);
+  const LinearTaps8 y = wrapLinearClampToEdge8(t.v, depth.height);
+  const __m256i width = _mm256_set1_epi32(depth.width);
+  const __m256i row0 = _mm256_mullo_epi32(y.i0, width), row1 = _mm256_mullo_epi32(y.i1, width);
+  const float scale = depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
+  const int* codes = reinterpret_cast<const int*>(depth.depth.data());
+  auto passes = [&](__m256i row, __m256i col) {
+    const __m256i code = _mm256_i32gather_epi32(codes, _mm256_add_epi32(row, col), 4);
+    const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(code), _mm256_set1_ps(scale));
+    return _mm256_cmp_ps(ref, texel, _CMP_LE_OQ);
+  };
+  const __m256 m00 = passes(row0, x.i0), m01 = passes(row0, x.i1);
+  const __m256 m10 = passes(row1, x.i0), m11 = passes(row1, x.i1);
+  const __m256 oneMinusW = _mm256_sub_ps(_mm256_set1_ps(1.0f), x.weight);
+  const __m256 r0 = _mm256_add_ps(_mm256_and_ps(x.weight, m01), _mm256_and_ps(oneMinusW, m00));
+  const __m256 r1 = _mm256_add_ps(_mm256_and_ps(x.weight, m11), _mm256_and_ps(oneMinusW, m10));
+  return simd::Float8(_mm256_fmadd_ps(y.weight, _mm256_sub_ps(r1, r0), r0));
+}
+#endif
+
 }  // namespace raster::texture

@@ -29,6 +29,11 @@ namespace texture {
 // The reference is clamped to [0, 1] (NaN -> 0) but not quantized to the depth format.
 float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 
+#if RASTER_AVX2
+// The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
+simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
+#endif
+
 }  // namespace texture
 
 // GLSL: texture(sampler2DShadow, vec3(uv, ref)), as the seed's textureCompare.
@@ -36,6 +41,10 @@ template <class F>
 F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
   if constexpr (std::is_same_v<F, float>) {
     return texture::compareLinearClamp(*sampler.texture, uv.x, uv.y, ref);
+#if RASTER_AVX2
+  } else if constexpr (std::is_same_v<F, simd::Float8>) {
+    return texture::compareLinearClamp8(*sampler.texture, uv.x, uv.y, ref);
+#endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], r[F::kCount], out[F::kCount];
     uv.x.store(s);

@@ -1,0 +1,70 @@
+// The output merge's SIMD conversions equal the scalar reference on every class of input.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "raster/pipeline/output_merge.h"
+
+namespace {
+
+using raster::simd::FastLanes;
+using Plain = raster::simd::Lanes<8>;
+
+// Interesting floats: rounding boundaries of both formats, specials, and random values.
+std::vector<float> interestingValues() {
+  std::vector<float> v = {0.0f, -0.0f, 1.0f, -1.0f, 2.0f, 1e10f, -1e10f, std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::denorm_min(), 1.0f + 1e-7f, 1.0f - 1e-8f};
+  for (int k = 0; k < 256; ++k) {
+    const float b = (float(k) + 0.5f) / 255.0f;
+    v.insert(v.end(), {b, std::nextafter(b, 0.0f), std::nextafter(b, 1.0f)});
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
+  for (int i = 0; i < 4000; ++i) v.push_back(unit(rng));
+  while (v.size() % 8) v.push_back(0.5f);
+  return v;
+}
+
+}  // namespace
+
+TEST_SUITE("format") {
+  TEST_CASE("RGBA8 packing: SIMD lanes equal the scalar conversion") {
+    const std::vector<float> values = interestingValues();
+    for (size_t i = 0; i + 8 <= values.size(); i += 8) {
+      float lanes[4][8];
+      for (int c = 0; c < 4; ++c)
+        for (int l = 0; l < 8; ++l) lanes[c][l] = values[(i + size_t(l) + size_t(c) * 3) % values.size()];
+      uint32_t fast[8], plain[8];
+      raster::output_merge::packRgba8(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
+                                                                    FastLanes::load(lanes[2]), FastLanes::load(lanes[3])),
+                                      fast);
+      raster::output_merge::packRgba8(
+          raster::glsl::vec4<Plain>(Plain::load(lanes[0]), Plain::load(lanes[1]), Plain::load(lanes[2]), Plain::load(lanes[3])),
+          plain);
+      CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
+    }
+  }
+
+  TEST_CASE("depth quantization: SIMD lanes equal the scalar conversion") {
+    std::vector<float> values;
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int i = 0; i < 80000; ++i) values.push_back(unit(rng));
+    for (uint32_t k = 0; k < 70000; k += 7) values.push_back((float(k) + 0.5f) / 65535.0f);
+    values.insert(values.end(), {0.0f, 1.0f, 0.5f, 1.0f / 16777215.0f});
+    while (values.size() % 8) values.push_back(0.25f);
+    for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
+      for (size_t i = 0; i < values.size(); i += 8) {
+        uint32_t fast[8], plain[8];
+        raster::output_merge::depthCodes(FastLanes::load(&values[i]), format, fast);
+        raster::output_merge::depthCodes(Plain::load(&values[i]), format, plain);
+        CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
+      }
+    }
+  }
+}

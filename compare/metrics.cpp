@@ -29,6 +29,8 @@ Kind kindOf(const ImageData& image) {
         return Kind::Depth;
       break;
     case TextureFormat::RGBA16F:
+    case TextureFormat::RGB16F:
+    case TextureFormat::RGBA32F:
       if (image.channels > 0 && image.floats.size() == pixels * size_t(image.channels))
         return Kind::Half;
       break;

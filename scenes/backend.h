@@ -38,9 +38,15 @@ struct MeshData {
   int strideFloats = 0;
   std::vector<VertexAttribute> attributes;
   std::vector<uint32_t> indices;         // GL_TRIANGLES, GL_UNSIGNED_INT
+  // Optional per-instance attributes (glVertexAttribDivisor 1), from a second buffer.
+  std::vector<float> instances;
+  int instanceStrideFloats = 0;
+  std::vector<VertexAttribute> instanceAttributes;
 };
 
-enum class TextureFormat { Depth24, Depth16, RGBA8, RGBA16F };
+// RGB16F is a sampled-only texture uploaded from 3 floats a texel (the HDR environment);
+// RGBA32F is a render target for tests that need exact float results.
+enum class TextureFormat { Depth24, Depth16, RGBA8, RGBA16F, RGB16F, RGBA32F };
 enum class Filter { Nearest, Linear };
 enum class Wrap { Repeat, ClampToEdge };
 
@@ -96,7 +102,7 @@ using UniformValue = std::variant<float, int, glm::vec2, glm::vec3, glm::vec4, g
 // ---- read-back ----------------------------------------------------------------------------
 // An image read back from a backend, top row first. Exactly one of the payloads is used:
 //   rgba8:   width*height*4 bytes (RGBA8 targets)
-//   floats:  width*height*channels floats (RGBA16F targets as exact float values)
+//   floats:  width*height*channels floats (RGBA16F / RGBA32F targets as exact float values)
 //   depth:   width*height integer depth codes (0 .. 2^bits - 1) of a depth attachment
 struct ImageData {
   int width = 0;
@@ -124,7 +130,8 @@ class Backend {
   virtual Handle createProgram(const std::string& program) = 0;
   virtual Handle createMesh(const MeshData& mesh) = 0;
   // Pixels (top row last, as glTexImage2D takes them) may be empty: uninitialised storage.
-  // RGBA8 takes 4 bytes a texel; RGBA16F takes 4 floats a texel (rounded to half on upload).
+  // RGBA8 takes 4 bytes a texel; RGBA16F 4 floats and RGB16F 3 floats a texel (rounded to
+  // half, to nearest even, on upload); RGBA32F 4 floats.
   virtual Handle createTexture(const TextureDesc& desc, const void* pixels = nullptr) = 0;
   virtual Handle createFramebuffer(const FramebufferDesc& desc) = 0;
 

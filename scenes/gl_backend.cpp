@@ -153,6 +153,20 @@ class GlBackend : public Backend {
                             GLsizei(mesh.strideFloats * sizeof(float)),
                             reinterpret_cast<const void*>(size_t(a.offsetFloats) * sizeof(float)));
     }
+    // Per-instance attributes: a second buffer, advanced once per instance.
+    if (!mesh.instances.empty()) {
+      glGenBuffers(1, &m.instanceVbo);
+      glBindBuffer(GL_ARRAY_BUFFER, m.instanceVbo);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.instances.size() * sizeof(float)), mesh.instances.data(),
+                   GL_STATIC_DRAW);
+      for (const VertexAttribute& a : mesh.instanceAttributes) {
+        glEnableVertexAttribArray(GLuint(a.location));
+        glVertexAttribPointer(GLuint(a.location), a.components, GL_FLOAT, GL_FALSE,
+                              GLsizei(mesh.instanceStrideFloats * sizeof(float)),
+                              reinterpret_cast<const void*>(size_t(a.offsetFloats) * sizeof(float)));
+        glVertexAttribDivisor(GLuint(a.location), 1);
+      }
+    }
     glBindVertexArray(0);
     checkGl("createMesh");
     meshes_[Handle(m.vao)] = m;
@@ -168,6 +182,8 @@ class GlBackend : public Backend {
       case TextureFormat::Depth16: internal = GL_DEPTH_COMPONENT16; format = GL_DEPTH_COMPONENT; type = GL_UNSIGNED_INT; break;
       case TextureFormat::RGBA8: break;
       case TextureFormat::RGBA16F: internal = GL_RGBA16F; type = GL_FLOAT; break;
+      case TextureFormat::RGB16F: internal = GL_RGB16F; format = GL_RGB; type = GL_FLOAT; break;
+      case TextureFormat::RGBA32F: internal = GL_RGBA32F; type = GL_FLOAT; break;
     }
     // Create through the active unit, leaving its binding as it was.
     GLint previous = 0;
@@ -323,7 +339,7 @@ class GlBackend : public Backend {
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + attachment));
     }
     size_t rowElements = size_t(image.width) * 4;
-    if (image.format == TextureFormat::RGBA16F) {
+    if (image.format == TextureFormat::RGBA16F || image.format == TextureFormat::RGBA32F) {
       image.floats.resize(rowElements * size_t(image.height));
       glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.floats.data());
       flipRows(image.floats, rowElements);
@@ -365,7 +381,7 @@ class GlBackend : public Backend {
 
  private:
   struct Mesh {
-    GLuint vao = 0, vbo = 0, ebo = 0;
+    GLuint vao = 0, vbo = 0, ebo = 0, instanceVbo = 0;
     GLsizei indexCount = 0;
   };
 

@@ -21,7 +21,9 @@ raster::TexelFormat toTexelFormat(TextureFormat f) {
     case TextureFormat::Depth24: return raster::TexelFormat::Depth24;
     case TextureFormat::Depth16: return raster::TexelFormat::Depth16;
     case TextureFormat::RGBA8: return raster::TexelFormat::RGBA8;
-    case TextureFormat::RGBA16F: return raster::TexelFormat::RGBA16F;
+    case TextureFormat::RGBA16F:
+    case TextureFormat::RGB16F: return raster::TexelFormat::RGBA16F;   // stored with alpha 1, as llvmpipe's RGBX
+    case TextureFormat::RGBA32F: return raster::TexelFormat::RGBA32F;
   }
   throw std::logic_error("unknown texture format");
 }
@@ -76,6 +78,12 @@ class RasterBackend final : public Backend {
     m->stream.strideFloats = mesh.strideFloats;
     m->stream.vertexCount = mesh.strideFloats > 0 ? int(mesh.vertices.size() / size_t(mesh.strideFloats)) : 0;
     for (const VertexAttribute& a : mesh.attributes) m->stream.attributes.push_back({a.location, a.components, a.offsetFloats});
+    if (!m->data.instances.empty()) {
+      m->stream.instances = m->data.instances.data();
+      m->stream.instanceStrideFloats = mesh.instanceStrideFloats;
+      for (const VertexAttribute& a : mesh.instanceAttributes)
+        m->stream.instanceAttributes.push_back({a.location, a.components, a.offsetFloats});
+    }
     meshes_.push_back(std::move(m));
     return Handle(meshes_.size() - 1);
   }
@@ -83,7 +91,8 @@ class RasterBackend final : public Backend {
   Handle createTexture(const TextureDesc& desc, const void* pixels) override {
     auto t = std::make_unique<raster::Texture>(desc.width, desc.height, toTexelFormat(desc.format));
     t->sampler = toSamplerState(desc.sampler);
-    if (pixels) upload(*t, pixels);
+    if (pixels) upload(*t, pixels, desc.format == TextureFormat::RGB16F ? 3 : 4);
+    else if (desc.format == TextureFormat::RGB16F) upload(*t, nullptr, 3);
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
   }
@@ -148,6 +157,8 @@ class RasterBackend final : public Backend {
       const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width) * 4;
       if (t.format == raster::TexelFormat::RGBA8) {
         image.rgba8.insert(image.rgba8.end(), t.rgba8.begin() + long(src), t.rgba8.begin() + long(src + size_t(t.width) * 4));
+      } else if (t.format == raster::TexelFormat::RGBA32F) {
+        image.floats.insert(image.floats.end(), t.f32.begin() + long(src), t.f32.begin() + long(src + size_t(t.width) * 4));
       } else {
         for (size_t i = 0; i < size_t(t.width) * 4; ++i) image.floats.push_back(raster::format::floatFromHalf(t.half[src + i]));
       }
@@ -178,6 +189,7 @@ class RasterBackend final : public Backend {
     switch (t.format) {
       case raster::TexelFormat::RGBA8: image.format = TextureFormat::RGBA8; break;
       case raster::TexelFormat::RGBA16F: image.format = TextureFormat::RGBA16F; break;
+      case raster::TexelFormat::RGBA32F: image.format = TextureFormat::RGBA32F; break;
       case raster::TexelFormat::Depth16: image.format = TextureFormat::Depth16; break;
       case raster::TexelFormat::Depth24: image.format = TextureFormat::Depth24; break;
     }
@@ -185,14 +197,21 @@ class RasterBackend final : public Backend {
   }
 
   // glTexImage2D: rows as given (row 0 = t = 0); float -> half rounds to nearest even.
-  static void upload(raster::Texture& t, const void* pixels) {
+  // Three-channel float uploads get alpha 1 (null pixels: undefined in GL, zero here).
+  static void upload(raster::Texture& t, const void* pixels, int channels) {
     const size_t texels = size_t(t.width) * size_t(t.height);
     if (t.format == raster::TexelFormat::RGBA8) {
       const auto* src = static_cast<const uint8_t*>(pixels);
       t.rgba8.assign(src, src + texels * 4);
     } else if (t.format == raster::TexelFormat::RGBA16F) {
       const auto* src = static_cast<const float*>(pixels);
-      for (size_t i = 0; i < texels * 4; ++i) t.half[i] = raster::format::halfFromFloatNearestEven(src[i]);
+      for (size_t i = 0; i < texels; ++i)
+        for (int c = 0; c < 4; ++c)
+          t.half[i * 4 + size_t(c)] = c < channels ? (src ? raster::format::halfFromFloatNearestEven(src[i * size_t(channels) + size_t(c)]) : 0)
+                                                   : raster::format::halfFromFloatNearestEven(1.0f);
+    } else if (t.format == raster::TexelFormat::RGBA32F) {
+      const auto* src = static_cast<const float*>(pixels);
+      t.f32.assign(src, src + texels * 4);
     } else {
       throw std::runtime_error("depth textures are not uploaded from the CPU in these scenes");
     }

@@ -4,7 +4,7 @@
 // uploads, the bottom of a rendered FBO image). The default framebuffer is the exception,
 // stored with row 0 at the top, as llvmpipe stores window-system buffers (see Framebuffer).
 //
-// Formats: RGBA8 (4 bytes a texel), RGBA16F (4 half-floats), and depth codes
+// Formats: RGBA8 (4 bytes a texel), RGBA16F (4 half-floats), RGBA32F (4 floats), and depth codes
 // (uint32 per texel holding a 16- or 24-bit unsigned-normalized value).
 #pragma once
 
@@ -13,7 +13,7 @@
 
 namespace raster {
 
-enum class TexelFormat { RGBA8, RGBA16F, Depth16, Depth24 };
+enum class TexelFormat { RGBA8, RGBA16F, RGBA32F, Depth16, Depth24 };
 
 enum class Filter { Nearest, Linear };
 enum class Wrap { Repeat, ClampToEdge };
@@ -33,6 +33,7 @@ struct Texture {
   SamplerState sampler;
   std::vector<uint8_t> rgba8;       // RGBA8
   std::vector<uint16_t> half;       // RGBA16F, 4 per texel
+  std::vector<float> f32;           // RGBA32F, 4 per texel
   std::vector<uint32_t> depth;      // Depth16 / Depth24 codes
 
   Texture() = default;
@@ -41,6 +42,7 @@ struct Texture {
     switch (f) {
       case TexelFormat::RGBA8: rgba8.assign(texels * 4, 0); break;
       case TexelFormat::RGBA16F: half.assign(texels * 4, 0); break;
+      case TexelFormat::RGBA32F: f32.assign(texels * 4, 0.0f); break;
       case TexelFormat::Depth16:
       case TexelFormat::Depth24: depth.assign(texels, 0); break;
     }

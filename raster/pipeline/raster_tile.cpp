@@ -84,7 +84,7 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
         dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
       }
     }
-  } else if (target.format == TexelFormat::RGBA16F) {
+  } else {
     alignas(32) float rgba[4][F::kCount];
     color.x.store(rgba[0]);
     color.y.store(rgba[1]);
@@ -92,6 +92,11 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
     color.w.store(rgba[3]);
     for (int i = 0; i < F::kCount; ++i) {
       if (!(laneMask >> i & 1u)) continue;
+      if (target.format == TexelFormat::RGBA32F) {
+        float* dst = &target.f32[texel[i] * 4];
+        for (int c = 0; c < 4; ++c) dst[c] = blendAdditive ? dst[c] + rgba[c][i] : rgba[c][i];
+        continue;
+      }
       uint16_t* dst = &target.half[texel[i] * 4];
       for (int c = 0; c < 4; ++c) {
         const float value = blendAdditive ? format::floatFromHalf(dst[c]) + rgba[c][i] : rgba[c][i];

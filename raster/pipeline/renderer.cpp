@@ -57,6 +57,8 @@ void Renderer::clear(const ClearValues& values) {
         uint8_t texel[4];
         for (int c = 0; c < 4; ++c) texel[c] = format::unorm8FromFloat(std::clamp(values.colorValue[c], 0.0f, 1.0f));
         for (size_t i = 0; i < target->rgba8.size(); i += 4) std::copy(texel, texel + 4, &target->rgba8[i]);
+      } else if (target->format == TexelFormat::RGBA32F) {
+        for (size_t i = 0; i < target->f32.size(); i += 4) std::copy(values.colorValue, values.colorValue + 4, &target->f32[i]);
       } else if (target->format == TexelFormat::RGBA16F) {
         uint16_t texel[4];
         for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatNearestEven(values.colorValue[c]);

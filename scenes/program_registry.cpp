@@ -8,7 +8,10 @@
 
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
+#include "shaders_cpp/test/derivatives.h"
+#include "shaders_cpp/test/color_lookup.h"
 #include "shaders_cpp/test/passthrough.h"
+#include "shaders_cpp/test/shadow_lookup.h"
 
 namespace scenes {
 namespace {
@@ -77,6 +80,9 @@ std::unique_ptr<BoundProgram> makeBoundProgram(const std::string& name) {
       entry<shaders::shadow::ShadowPass>(),
       entry<shaders::shadow::MainPass>(),
       entry<shaders::test::Passthrough>(),
+      entry<shaders::test::ColorLookup>(),
+      entry<shaders::test::Derivatives>(),
+      entry<shaders::test::ShadowLookup>(),
   };
   const auto it = registry.find(name);
   if (it == registry.end()) throw std::runtime_error("no C++ port of shader program " + name);

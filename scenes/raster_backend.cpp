@@ -196,8 +196,10 @@ class RasterBackend final : public Backend {
     return image;
   }
 
-  // glTexImage2D: rows as given (row 0 = t = 0); float -> half rounds to nearest even.
-  // Three-channel float uploads get alpha 1 (null pixels: undefined in GL, zero here).
+  // glTexImage2D: rows as given (row 0 = t = 0). float -> half TRUNCATES toward zero, as
+  // measured against Mesa 22.3's texture upload (tests/texture_test.cpp), though the
+  // reference notes expected round-to-nearest-even. Three-channel float uploads get
+  // alpha 1 (null pixels: undefined in GL, zero here).
   static void upload(raster::Texture& t, const void* pixels, int channels) {
     const size_t texels = size_t(t.width) * size_t(t.height);
     if (t.format == raster::TexelFormat::RGBA8) {
@@ -207,8 +209,8 @@ class RasterBackend final : public Backend {
       const auto* src = static_cast<const float*>(pixels);
       for (size_t i = 0; i < texels; ++i)
         for (int c = 0; c < 4; ++c)
-          t.half[i * 4 + size_t(c)] = c < channels ? (src ? raster::format::halfFromFloatNearestEven(src[i * size_t(channels) + size_t(c)]) : 0)
-                                                   : raster::format::halfFromFloatNearestEven(1.0f);
+          t.half[i * 4 + size_t(c)] = c < channels ? (src ? raster::format::halfFromFloatTowardZero(src[i * size_t(channels) + size_t(c)]) : 0)
+                                                   : raster::format::halfFromFloatTowardZero(1.0f);
     } else if (t.format == raster::TexelFormat::RGBA32F) {
       const auto* src = static_cast<const float*>(pixels);
       t.f32.assign(src, src + texels * 4);

@@ -8,7 +8,9 @@
 //   depth24ToFloat    texel read for sampling: code * (float)(1/16777215).
 //   halfFromFloatTowardZero  RGBA16F render-target write (vcvtps2ph imm 3): truncation,
 //                     so finite overflow gives 65504 (0x7BFF); Inf and NaN are kept.
-//   halfFromFloatNearestEven CPU-side upload (glTexImage GL_FLOAT -> half): nearest even.
+//                     Measured: glTexImage2D uploads (GL_FLOAT -> RGBA16F / RGB16F) and
+//                     glClear of half targets truncate the same way on Mesa 22.3.
+//   halfFromFloatNearestEven IEEE round-to-nearest-even, for comparison in tests.
 //   floatFromHalf     exact.
 //   depthClearCode    glClear's conversion: round(z * (2^bits - 1)) in double
 //                     (measured against the GL backend: truncation differs).

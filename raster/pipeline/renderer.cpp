@@ -61,7 +61,7 @@ void Renderer::clear(const ClearValues& values) {
         for (size_t i = 0; i < target->f32.size(); i += 4) std::copy(values.colorValue, values.colorValue + 4, &target->f32[i]);
       } else if (target->format == TexelFormat::RGBA16F) {
         uint16_t texel[4];
-        for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatNearestEven(values.colorValue[c]);
+        for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatTowardZero(values.colorValue[c]);
         for (size_t i = 0; i < target->half.size(); i += 4) std::copy(texel, texel + 4, &target->half[i]);
       }
     }

@@ -7,7 +7,7 @@
 #include "raster/format/conversions.h"
 #include "raster/texture/sampler.h"
 
-namespace raster::texture {
+namespace raster::sampling {
 namespace {
 
 struct LinearTaps {
@@ -103,4 +103,4 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
 }
 #endif
 
-}  // namespace raster::texture
+}  // namespace raster::sampling

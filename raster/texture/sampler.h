@@ -19,7 +19,7 @@ struct Sampler2DShadow {
   const Texture* texture = nullptr;
 };
 
-namespace texture {
+namespace sampling {
 
 // One shadow lookup, llvmpipe's arithmetic (lp_bld_sample_soa.c, linear filtering with
 // compare, CLAMP_TO_EDGE): the four bilinear texels are each compared with the reference
@@ -34,23 +34,47 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
 #endif
 
-}  // namespace texture
+// One colour lookup (sampler2D): RGBA8 through llvmpipe's 8-bit fixed-point path, float
+// formats in float32 (see sample_color.cpp). Writes r, g, b, a.
+void sampleColor(const Texture& texture, float s, float t, float out[4]);
+
+}  // namespace sampling
+
+// GLSL: texture(sampler2D, uv).
+template <class F>
+glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
+  if constexpr (std::is_same_v<F, float>) {
+    float rgba[4];
+    sampling::sampleColor(*sampler.texture, uv.x, uv.y, rgba);
+    return {rgba[0], rgba[1], rgba[2], rgba[3]};
+  } else {
+    alignas(32) float s[F::kCount], t[F::kCount], out[4][F::kCount];
+    uv.x.store(s);
+    uv.y.store(t);
+    for (int i = 0; i < F::kCount; ++i) {
+      float rgba[4];
+      sampling::sampleColor(*sampler.texture, s[i], t[i], rgba);
+      for (int c = 0; c < 4; ++c) out[c][i] = rgba[c];
+    }
+    return {F::load(out[0]), F::load(out[1]), F::load(out[2]), F::load(out[3])};
+  }
+}
 
 // GLSL: texture(sampler2DShadow, vec3(uv, ref)), as the seed's textureCompare.
 template <class F>
 F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
   if constexpr (std::is_same_v<F, float>) {
-    return texture::compareLinearClamp(*sampler.texture, uv.x, uv.y, ref);
+    return sampling::compareLinearClamp(*sampler.texture, uv.x, uv.y, ref);
 #if RASTER_AVX2
   } else if constexpr (std::is_same_v<F, simd::Float8>) {
-    return texture::compareLinearClamp8(*sampler.texture, uv.x, uv.y, ref);
+    return sampling::compareLinearClamp8(*sampler.texture, uv.x, uv.y, ref);
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], r[F::kCount], out[F::kCount];
     uv.x.store(s);
     uv.y.store(t);
     ref.store(r);
-    for (int i = 0; i < F::kCount; ++i) out[i] = texture::compareLinearClamp(*sampler.texture, s[i], t[i], r[i]);
+    for (int i = 0; i < F::kCount; ++i) out[i] = sampling::compareLinearClamp(*sampler.texture, s[i], t[i], r[i]);
     return F::load(out);
   }
 }

@@ -1,0 +1,108 @@
+// sampler2D lookups against llvmpipe, bit for bit: RGBA8 (llvmpipe's 8-bit fixed-point
+// path) and RGBA16F (its float path), NEAREST and LINEAR, REPEAT and CLAMP_TO_EDGE, at
+// random coordinates, coordinates far outside [0, 1], and exactly on texel centres and
+// edges. Results are written to an RGBA32F target so every bit of the lookup is compared.
+// The RGBA16F textures are uploaded from floats, which also checks the upload conversion
+// (Mesa 22.3 truncates toward zero there).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "tests/gl_compare_helpers.h"
+
+namespace {
+
+using namespace gltest;
+
+struct TextureCase {
+  int width, height;
+  TextureFormat format;
+  scenes::Filter filter;
+  scenes::Wrap wrapS, wrapT;
+};
+
+// A lookup coordinate: random, far outside, or on a texel centre / edge of the texture.
+float lookupCoordinate(std::mt19937& rng, int size) {
+  switch (rng() % 5) {
+    case 0: return uniform(rng, -0.2f, 1.2f);
+    case 1: return uniform(rng, -40.0f, 40.0f);
+    case 2: return (float(int(rng() % unsigned(size))) + 0.5f) / float(size);        // texel centre
+    case 3: return float(int(rng() % unsigned(size + 1))) / float(size);             // texel edge
+    default: return (float(int(rng() % unsigned(8 * size))) + 0.5f) / float(8 * size);  // 1/8 texel steps
+  }
+}
+
+// Renders one lookup per 2x2 cell with both backends and counts cells whose bits differ.
+void checkLookups(const TextureCase& c, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<uint8_t> bytes(size_t(c.width) * size_t(c.height) * 4);
+  std::vector<float> floats(bytes.size());
+  for (uint8_t& b : bytes) b = uint8_t(rng());
+  for (float& f : floats) f = uniform(rng, -4.0f, 4.0f);
+  scenes::TextureDesc desc;
+  desc.width = c.width;
+  desc.height = c.height;
+  desc.format = c.format;
+  desc.sampler = {c.filter, c.wrapS, c.wrapT, false};
+  const void* pixels = c.format == TextureFormat::RGBA8 ? static_cast<const void*>(bytes.data()) : floats.data();
+
+  constexpr int kSize = 128, kCell = 2;
+  const MeshData mesh = gridMesh(kSize, kSize, kCell, [&](int, int) {
+    GridCell cell;
+    cell.attribute = glm::vec4(lookupCoordinate(rng, c.width), lookupCoordinate(rng, c.height), 0.0f, 1.0f);
+    return cell;
+  });
+
+  BackendPair backends;
+  ImageData images[2];
+  Backend* sides[2] = {backends.raster.get(), backends.gl.get()};
+  for (int k = 0; k < 2; ++k) {
+    Backend& b = *sides[k];
+    scenes::TextureDesc targetDesc;
+    targetDesc.width = targetDesc.height = kSize;
+    targetDesc.format = TextureFormat::RGBA32F;
+    const Handle target = b.createTexture(targetDesc);
+    const Handle fb = b.createFramebuffer({{target}, 0});
+    const Handle texture = b.createTexture(desc, pixels);
+    const Handle program = b.createProgram("test/color_lookup");
+    const Handle meshHandle = b.createMesh(mesh);
+    b.beginPass(fb, {0, 0, kSize, kSize}, clearAll());
+    b.bindTexture(0, texture);
+    b.setUniform(program, "tex", 0);
+    DrawState state;
+    state.depthTest = false;
+    b.draw(program, meshHandle, state);
+    images[k] = b.readColor(fb);
+  }
+  const FloatComparison cmp = compareFloatBits(images[0], images[1]);
+  const std::string name = std::to_string(c.width) + "x" + std::to_string(c.height) +
+                           (c.format == TextureFormat::RGBA8 ? " RGBA8" : " RGBA16F") +
+                           (c.filter == scenes::Filter::Linear ? " linear" : " nearest");
+  MESSAGE(name << ": " << cmp.diffs << " of " << kSize * kSize << " pixels differ " << cmp.firstDiff);
+  CHECK(cmp.diffs == 0);
+}
+
+}  // namespace
+
+TEST_SUITE("texture") {
+  using scenes::Filter;
+  using scenes::Wrap;
+  TEST_CASE("RGBA8 bilinear, repeat and clamp, power-of-two and odd sizes, equals llvmpipe") {
+    checkLookups({16, 8, TextureFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::Repeat}, 1);
+    checkLookups({16, 16, TextureFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge}, 2);
+    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 3);
+    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 4);
+  }
+  TEST_CASE("RGBA8 nearest equals llvmpipe") {
+    checkLookups({16, 8, TextureFormat::RGBA8, Filter::Nearest, Wrap::Repeat, Wrap::ClampToEdge}, 5);
+    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Nearest, Wrap::ClampToEdge, Wrap::Repeat}, 6);
+  }
+  TEST_CASE("RGBA16F bilinear and nearest equal llvmpipe") {
+    checkLookups({16, 8, TextureFormat::RGBA16F, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 7);
+    checkLookups({13, 7, TextureFormat::RGBA16F, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 8);
+    checkLookups({16, 16, TextureFormat::RGBA16F, Filter::Nearest, Wrap::Repeat, Wrap::Repeat}, 9);
+    checkLookups({13, 7, TextureFormat::RGBA16F, Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge}, 10);
+  }
+}

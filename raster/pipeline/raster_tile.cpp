@@ -45,16 +45,19 @@ uint32_t blockBounds(int blockX, int blockY, int width, int height) {
 }
 
 // Lane layout of a group: quads of 2x2 (lanes TL, TR, BL, BR), quads side by side.
+// "Top" is GL's top: on window-system buffers, stored top row first, the quad's rows are
+// swapped, so dFdy = bottom - top lanes gives GL's sign. llvmpipe computes the memory-row
+// difference and negates it (nir_lower_wpos_ytransform); both are the same exact value.
 template <class F>
 struct LaneLayout {
   static constexpr int kLanes = F::kCount;
   static constexpr int kQuads = kLanes / 4;
   static constexpr int kGroupsPerBlock = 16 / kLanes;
   int dx[kLanes], dy[kLanes];
-  LaneLayout() {
+  explicit LaneLayout(bool flipY) {
     for (int i = 0; i < kLanes; ++i) {
       dx[i] = (i / 4) * 2 + (i & 1);
-      dy[i] = (i >> 1) & 1;
+      dy[i] = flipY ? 1 - ((i >> 1) & 1) : (i >> 1) & 1;
     }
   }
   // Group g's origin inside the block: 8 lanes cover rows 0-1 then 2-3; 4 lanes one quad.
@@ -167,7 +170,7 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
 template <class F>
 void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters) {
   const Framebuffer& fb = *job.framebuffer;
-  const LaneLayout<F> layout;
+  const LaneLayout<F> layout(fb.flipY);
   const int tileX0 = tileX * kTileSize, tileY0 = tileY * kTileSize;
   const int tileX1 = std::min(tileX0 + kTileSize, fb.width) - 1;
   const int tileY1 = std::min(tileY0 + kTileSize, fb.height) - 1;

@@ -8,6 +8,8 @@
 // Both give bit-identical results lane by lane: every operation is a single IEEE float32
 // operation (the build disables contraction), and fma() is the one fused operation,
 // used exactly where llvmpipe emits llvm.fmuladd (which becomes an FMA on FMA CPUs).
+// (One exception: when two operands are NaN, which NaN's payload survives may differ,
+// as the compiler may swap the operands of a commutative operation.)
 //
 // Lane order inside a quad follows llvmpipe (lp_bld_quad.h): 0 = top-left, 1 = top-right,
 // 2 = bottom-left, 3 = bottom-right ("top" = lower memory row). Float8 holds quad 0 in

@@ -1,0 +1,185 @@
+// sampler2DShadow lookups (LINEAR, CLAMP_TO_EDGE, LEQUAL) against GL (llvmpipe), with
+// shaders_cpp/test/shadow_lookup.{vert,frag,h}: out = (texture(shadow_map, (u, v, ref)), 0, 0, 1).
+//
+// 1. A 64x48 Depth24 shadow map is rendered by both backends from ~40 random passthrough
+//    triangles into a depth-only FBO; the depth codes must be identical.
+// 2. Each backend samples its own map: a 128x128 RGBA16F target is tiled with 2x2-pixel
+//    squares (each exactly one quad), every square with its own constant (u, v, ref), so
+//    interpolation is exact and each lookup is one known input. Inputs include u/v outside
+//    [0, 1], on texel centres (i + 0.5)/W and edges i/W (and their float neighbours), refs
+//    outside [0, 1], and refs equal to a stored texel value (code * float(1/16777215) and
+//    float(code / 16777215.0)) and their float neighbours. Results must be bit-identical.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "raster/format/conversions.h"
+#include "tests/gl_compare_helpers.h"
+
+namespace {
+
+using namespace gltest;
+
+constexpr int kMapWidth = 64, kMapHeight = 48;
+constexpr int kTarget = 128, kCell = 2;
+constexpr int kLookupsPerDraw = (kTarget / kCell) * (kTarget / kCell);
+
+// ~40 random passthrough triangles over (and past) the map, at random depths.
+MeshData shadowCasters(std::mt19937& rng) {
+  std::vector<Vertex> vertices;
+  for (int i = 0; i < 40; ++i) {
+    const glm::vec2 c(uniform(rng, -0.2f, 1.2f) * kMapWidth, uniform(rng, -0.2f, 1.2f) * kMapHeight);
+    const float radius = uniform(rng, 4.0f, 30.0f);
+    for (int v = 0; v < 3; ++v) {
+      const glm::vec2 p = c + glm::vec2(uniform(rng, -radius, radius), uniform(rng, -radius, radius));
+      vertices.push_back({clipFromWindow(p, uniform(rng, -0.98f, 0.98f), uniform(rng, 0.5f, 3.0f), kMapWidth, kMapHeight),
+                          glm::vec4(1.0f)});
+    }
+  }
+  return makeMesh(vertices);
+}
+
+// The lookup inputs: (u, v, ref), drawn from the interesting classes in turn.
+std::vector<glm::vec3> lookups(std::mt19937& rng, const std::vector<uint32_t>& codes, int count) {
+  auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  auto neighbour = [&](float x) {
+    switch (pick(5)) {
+      case 0: return std::nextafter(x, -INFINITY);
+      case 1: return std::nextafter(x, INFINITY);
+      default: return x;
+    }
+  };
+  // A coordinate along an axis of `size` texels.
+  auto coordinate = [&](int size) {
+    switch (pick(5)) {
+      case 0: return uniform(rng, 0.0f, 1.0f);
+      case 1: return uniform(rng, -0.6f, 1.6f);                                    // outside [0, 1] too
+      case 2: return neighbour((float(pick(size)) + 0.5f) / float(size));          // texel centres
+      case 3: return neighbour(float(pick(size + 1)) / float(size));               // texel edges, 0 and 1
+      default: return neighbour(float(pick(4 * size + 1)) / float(4 * size));      // quarter texels
+    }
+  };
+  std::vector<glm::vec3> out;
+  for (int i = 0; i < count; ++i) {
+    const float u = coordinate(kMapWidth), v = coordinate(kMapHeight);
+    // The texel nearest (u, v) (clamped): refs equal to its stored value hit the compare's edge.
+    const int tx = std::clamp(int(std::floor(u * kMapWidth)), 0, kMapWidth - 1);
+    const int ty = std::clamp(int(std::floor(v * kMapHeight)), 0, kMapHeight - 1);
+    const uint32_t code = codes[size_t(kMapHeight - 1 - ty) * kMapWidth + size_t(tx)];   // read-back is top row first
+    float ref = 0.0f;
+    switch (pick(6)) {
+      case 0: ref = uniform(rng, 0.0f, 1.0f); break;
+      case 1: ref = uniform(rng, -0.5f, 1.5f); break;                                       // outside [0, 1]
+      case 2: ref = neighbour(raster::format::depth24ToFloat(code)); break;                 // the texel as sampled
+      case 3: ref = neighbour(float(double(code) / 16777215.0)); break;                     // code / (2^24 - 1)
+      case 4: ref = neighbour(pick(2) ? 1.0f : 0.0f); break;
+      default: ref = neighbour(raster::format::depth24ToFloat(codes[size_t(pick(int(codes.size())))])); break;
+    }
+    out.emplace_back(u, v, ref);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_SUITE("shadow_compare") {
+  TEST_CASE("shadow lookups of a rendered Depth24 map are bit-identical to GL") {
+    std::mt19937 rng(7007);
+    const MeshData casters = shadowCasters(rng);
+    const int kDraws = 3;
+    std::vector<std::vector<glm::vec3>> inputs(kDraws);
+
+    // Each backend renders its map and samples it; the inputs are chosen from the GL map
+    // (identical to ours once the first check passes), so GL runs first.
+    struct Result {
+      ImageData depth;
+      std::vector<ImageData> lookups;
+    };
+    auto run = [&](Backend& backend) {
+      Result result;
+      scenes::TextureDesc mapDesc{kMapWidth, kMapHeight, TextureFormat::Depth24, {}};
+      mapDesc.sampler.filter = scenes::Filter::Linear;
+      mapDesc.sampler.wrapS = mapDesc.sampler.wrapT = scenes::Wrap::ClampToEdge;
+      mapDesc.sampler.compareLequal = true;
+      const Handle map = backend.createTexture(mapDesc);
+      scenes::FramebufferDesc depthOnly;
+      depthOnly.depthTexture = map;
+      const Handle mapFb = backend.createFramebuffer(depthOnly);
+      ClearOp clearDepth;
+      clearDepth.depth = true;
+      clearDepth.depthValue = 1.0f;
+      backend.beginPass(mapFb, {0, 0, kMapWidth, kMapHeight}, clearDepth);
+      backend.draw(backend.createProgram("test/passthrough"), backend.createMesh(casters), DrawState{});
+      backend.finish();
+      result.depth = backend.readDepth(mapFb);
+      if (inputs[0].empty())
+        for (auto& in : inputs) in = lookups(rng, result.depth.depth, kLookupsPerDraw);
+
+      const Handle program = backend.createProgram("test/shadow_lookup");
+      backend.bindTexture(0, map);
+      backend.setUniform(program, "shadow_map", 0);
+      scenes::FramebufferDesc colorOnly;
+      colorOnly.colorTextures = {backend.createTexture({kTarget, kTarget, TextureFormat::RGBA16F, {}})};
+      const Handle target = backend.createFramebuffer(colorOnly);
+      for (const auto& in : inputs) {
+        const MeshData grid = gridMesh(kTarget, kTarget, kCell, [&](int column, int row) {
+          const glm::vec3& l = in[size_t(row) * (kTarget / kCell) + size_t(column)];
+          return GridCell{glm::vec4(l, 0.0f), 0.0f};
+        });
+        ClearOp clear;
+        clear.color = true;
+        clear.colorValue = glm::vec4(-1.0f);
+        backend.beginPass(target, {0, 0, kTarget, kTarget}, clear);
+        DrawState state;
+        state.depthTest = false;
+        backend.draw(program, backend.createMesh(grid), state);
+        backend.finish();
+        result.lookups.push_back(backend.readColor(target));
+      }
+      return result;
+    };
+    Result gl, ours;
+    {
+      auto backend = scenes::makeGlBackend();
+      gl = run(*backend);
+    }
+    {
+      auto backend = scenes::makeRasterBackend(0);
+      ours = run(*backend);
+    }
+
+    const DepthComparison depth = compareDepth(ours.depth, gl.depth);
+    int cleared = 0;
+    for (uint32_t code : gl.depth.depth) cleared += code == 0xFFFFFFu;
+    MESSAGE("shadow map: " << kMapWidth * kMapHeight - cleared << " texels drawn, " << depth.diffs << " differ (max "
+                           << depth.maxDiff << " LSB)");
+    CAPTURE(depth.firstDiff);
+    REQUIRE(depth.diffs == 0);
+    CHECK(cleared > 0);
+    CHECK(cleared < kMapWidth * kMapHeight / 2);
+
+    int diffs = 0, partial = 0, zeros = 0, ones = 0;
+    std::string firstDiff;
+    for (int d = 0; d < kDraws; ++d) {
+      const FloatComparison cmp = compareFloatBits(ours.lookups[size_t(d)], gl.lookups[size_t(d)]);
+      diffs += cmp.diffs;
+      if (firstDiff.empty() && cmp.diffs) firstDiff = "draw " + std::to_string(d) + ", " + cmp.firstDiff;
+      const std::vector<float>& f = gl.lookups[size_t(d)].floats;
+      for (size_t i = 0; i < f.size(); i += 4) {
+        zeros += f[i] == 0.0f;
+        ones += f[i] == 1.0f;
+        partial += f[i] > 0.0f && f[i] < 1.0f;
+      }
+    }
+    // Every lookup covers 4 pixels; count lookups.
+    MESSAGE("shadow lookups: " << kDraws * kLookupsPerDraw << " inputs (" << zeros / 4 << " give 0, " << ones / 4
+                               << " give 1, " << partial / 4 << " in between); pixels differing from GL: " << diffs);
+    CAPTURE(firstDiff);
+    CHECK(diffs == 0);
+    CHECK(zeros + ones + partial == kDraws * kTarget * kTarget);   // every pixel written
+    CHECK(partial > kDraws * kLookupsPerDraw / 20);                // the filter's fractions are exercised
+  }
+}

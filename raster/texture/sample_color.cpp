@@ -29,6 +29,8 @@ bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 int32_t truncToInt(float x) { return (x > -2147483648.0f && x < 2147483648.0f) ? int32_t(x) : INT32_MIN; }
 int32_t floorToInt(float x) { return truncToInt(std::floor(x)); }
 float fract(float x) { return x - std::floor(x); }
+// 32-bit two's-complement subtraction, as the vector code does (cvtps2dq gives INT32_MIN on NaN).
+int32_t wrappingSub(int32_t a, int32_t b) { return int32_t(uint32_t(a) - uint32_t(b)); }
 // lp_build_fract_safe: fract kept below 1 (x - floor(x) rounds to 1 for tiny negatives); NaN -> the bound.
 float fractSafe(float x) {
   const float f = fract(x);
@@ -47,7 +49,7 @@ FixedTaps wrapLinearFixed(float coord, int size, Wrap wrap) {
   int32_t fixed;
   if (wrap == Wrap::Repeat && !isPowerOfTwo(size)) {
     const float scaled = fract(coord) * float(size) * 256.0f;
-    fixed = format::roundToNearestEven(scaled) - 128;
+    fixed = wrappingSub(format::roundToNearestEven(scaled), 128);
     taps.weight = fixed & 255;
     taps.x0 = fixed >> 8;
     if (taps.x0 < 0) taps.x0 = size - 1;
@@ -55,7 +57,7 @@ FixedTaps wrapLinearFixed(float coord, int size, Wrap wrap) {
     taps.x1 = taps.x0 != size - 1 ? taps.x0 + 1 : 0;
     return taps;
   }
-  fixed = format::roundToNearestEven(coord * float(size << 8)) - 128;
+  fixed = wrappingSub(format::roundToNearestEven(coord * float(size << 8)), 128);
   taps.weight = fixed & 255;
   const int x0 = fixed >> 8;
   if (wrap == Wrap::Repeat) {
@@ -121,7 +123,8 @@ FloatTaps wrapLinearFloat(float coord, int size, Wrap wrap) {
   if (wrap == Wrap::Repeat) {   // lp_build_coord_repeat_npot_linear
     c = fract(coord) * sizeF - 0.5f;
     const float floorC = std::floor(c);
-    taps.x0 = c < 0.0f ? size - 1 : truncToInt(floorC);
+    // A NaN coordinate gives texel 0 rather than an out-of-range index.
+    taps.x0 = c < 0.0f ? size - 1 : std::clamp(truncToInt(floorC), 0, size - 1);
     taps.weight = c - floorC;
     taps.x1 = taps.x0 != size - 1 ? taps.x0 + 1 : 0;
     return taps;

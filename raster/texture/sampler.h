@@ -38,6 +38,11 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
 // formats in float32 (see sample_color.cpp). Writes r, g, b, a.
 void sampleColor(const Texture& texture, float s, float t, float out[4]);
 
+#if RASTER_AVX2
+// The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
+#endif
+
 }  // namespace sampling
 
 // GLSL: texture(sampler2D, uv).
@@ -47,6 +52,12 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     float rgba[4];
     sampling::sampleColor(*sampler.texture, uv.x, uv.y, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#if RASTER_AVX2
+  } else if constexpr (std::is_same_v<F, simd::Float8>) {
+    simd::Float8 rgba[4];
+    sampling::sampleColor8(*sampler.texture, uv.x, uv.y, rgba);
+    return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], out[4][F::kCount];
     uv.x.store(s);

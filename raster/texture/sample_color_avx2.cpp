@@ -1,0 +1,191 @@
+// Colour texture sampling for 8 lanes at once (AVX2 gathers, F16C conversion): the same
+// operations as the scalar reference in sample_color.cpp, lane for lane, so the results
+// are bit-identical (tests/texture_test.cpp holds the two together).
+#if RASTER_AVX2
+#include <immintrin.h>
+
+#include "raster/texture/sampler.h"
+
+namespace raster::sampling {
+namespace {
+
+bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
+
+__m256i splat(int v) { return _mm256_set1_epi32(v); }
+__m256 splat(float v) { return _mm256_set1_ps(v); }
+__m256i select(__m256i mask, __m256i a, __m256i b) { return _mm256_blendv_epi8(b, a, mask); }
+__m256i clampInt(__m256i v, int lo, int hi) { return _mm256_min_epi32(_mm256_max_epi32(v, splat(lo)), splat(hi)); }
+__m256 fract(__m256 x) { return _mm256_sub_ps(x, _mm256_floor_ps(x)); }
+__m256 fractSafe(__m256 x) { return _mm256_min_ps(fract(x), splat(0.99999994f)); }   // NaN -> the bound
+__m256i floorToInt(__m256 x) { return _mm256_cvttps_epi32(_mm256_floor_ps(x)); }
+
+// ---- RGBA8: 8-bit fixed point (AoS) --------------------------------------------------------
+
+struct FixedTaps8 {
+  __m256i x0, x1, weight;
+};
+
+FixedTaps8 wrapLinearFixed(__m256 coord, int size, Wrap wrap) {
+  FixedTaps8 taps;
+  const __m256i last = splat(size - 1);
+  if (wrap == Wrap::Repeat && !isPowerOfTwo(size)) {
+    const __m256 scaled = _mm256_mul_ps(_mm256_mul_ps(fract(coord), splat(float(size))), splat(256.0f));
+    const __m256i fixed = _mm256_sub_epi32(_mm256_cvtps_epi32(scaled), splat(128));
+    taps.weight = _mm256_and_si256(fixed, splat(255));
+    __m256i x0 = _mm256_srai_epi32(fixed, 8);
+    x0 = select(_mm256_cmpgt_epi32(_mm256_setzero_si256(), x0), last, x0);
+    taps.x0 = _mm256_min_epi32(x0, last);
+    taps.x1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(taps.x0, last), _mm256_add_epi32(taps.x0, splat(1)));
+    return taps;
+  }
+  const __m256i fixed = _mm256_sub_epi32(_mm256_cvtps_epi32(_mm256_mul_ps(coord, splat(float(size << 8)))), splat(128));
+  taps.weight = _mm256_and_si256(fixed, splat(255));
+  const __m256i x0 = _mm256_srai_epi32(fixed, 8);
+  if (wrap == Wrap::Repeat) {
+    taps.x0 = _mm256_and_si256(x0, last);
+    taps.x1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(taps.x0, last), _mm256_add_epi32(taps.x0, splat(1)));
+  } else {
+    const __m256i low = _mm256_cmpgt_epi32(x0, splat(-1));    // x0 >= 0
+    const __m256i high = _mm256_cmpgt_epi32(last, x0);        // x0 < size - 1
+    taps.x0 = select(high, _mm256_and_si256(x0, low), last);
+    taps.x1 = _mm256_add_epi32(taps.x0, _mm256_and_si256(_mm256_and_si256(low, high), splat(1)));
+  }
+  return taps;
+}
+
+__m256i wrapNearest(__m256 coord, int size, Wrap wrap, bool floorClamp) {
+  if (wrap == Wrap::Repeat) {
+    if (isPowerOfTwo(size)) return _mm256_and_si256(floorToInt(_mm256_mul_ps(coord, splat(float(size)))), splat(size - 1));
+    return clampInt(_mm256_cvttps_epi32(_mm256_mul_ps(fractSafe(coord), splat(float(size)))), 0, size - 1);
+  }
+  // CLAMP_TO_EDGE: the AoS path floors, the float path truncates (both then clamp).
+  const __m256 scaled = _mm256_mul_ps(coord, splat(float(size)));
+  return clampInt(floorClamp ? floorToInt(scaled) : _mm256_cvttps_epi32(scaled), 0, size - 1);
+}
+
+// lerp8 with pmulhrsw: a + floor((w * (b - a) * 128 + 16384) / 32768), per 32-bit lane.
+__m256i lerp8(__m256i weight, __m256i a, __m256i b) {
+  const __m256i product = _mm256_mullo_epi32(_mm256_mullo_epi32(weight, _mm256_sub_epi32(b, a)), splat(128));
+  return _mm256_and_si256(_mm256_add_epi32(a, _mm256_srai_epi32(_mm256_add_epi32(product, splat(16384)), 15)), splat(0xFF));
+}
+
+__m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
+
+void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
+  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
+  const __m256i width = splat(t.width);
+  auto fetch = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4); };
+  const __m256 kUnorm8 = splat(float(1.0 / 255.0));
+  if (t.sampler.filter == Filter::Nearest) {
+    const __m256i p = fetch(wrapNearest(s, t.width, t.sampler.wrapS, true), wrapNearest(tc, t.height, t.sampler.wrapT, true));
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel(p, c)), kUnorm8));
+    return;
+  }
+  const FixedTaps8 x = wrapLinearFixed(s, t.width, t.sampler.wrapS);
+  const FixedTaps8 y = wrapLinearFixed(tc, t.height, t.sampler.wrapT);
+  const __m256i p00 = fetch(x.x0, y.x0), p01 = fetch(x.x1, y.x0), p10 = fetch(x.x0, y.x1), p11 = fetch(x.x1, y.x1);
+  for (int c = 0; c < 4; ++c) {
+    const __m256i row0 = lerp8(x.weight, channel(p00, c), channel(p01, c));
+    const __m256i row1 = lerp8(x.weight, channel(p10, c), channel(p11, c));
+    out[c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(y.weight, row0, row1)), kUnorm8));
+  }
+}
+
+// ---- half-float textures (SoA path) ------------------------------------------------------
+
+struct FloatTaps8 {
+  __m256i x0, x1;
+  __m256 weight;
+};
+
+FloatTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
+  const __m256 sizeF = splat(float(size));
+  const __m256i last = splat(size - 1);
+  FloatTaps8 taps;
+  if (wrap == Wrap::Repeat && isPowerOfTwo(size)) {
+    const __m256 c = _mm256_sub_ps(_mm256_mul_ps(coord, sizeF), splat(0.5f));
+    const __m256 floorC = _mm256_floor_ps(c);
+    const __m256i i = _mm256_cvttps_epi32(floorC);
+    taps.x0 = _mm256_and_si256(i, last);
+    taps.x1 = _mm256_and_si256(_mm256_add_epi32(i, splat(1)), last);
+    taps.weight = _mm256_sub_ps(c, floorC);
+    return taps;
+  }
+  if (wrap == Wrap::Repeat) {
+    const __m256 c = _mm256_sub_ps(_mm256_mul_ps(fract(coord), sizeF), splat(0.5f));
+    const __m256 floorC = _mm256_floor_ps(c);
+    const __m256i negative = _mm256_castps_si256(_mm256_cmp_ps(c, _mm256_setzero_ps(), _CMP_LT_OQ));
+    // A NaN coordinate gives texel 0 rather than an out-of-range index.
+    taps.x0 = select(negative, last, clampInt(_mm256_cvttps_epi32(floorC), 0, size - 1));
+    taps.weight = _mm256_sub_ps(c, floorC);
+    taps.x1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(taps.x0, last), _mm256_add_epi32(taps.x0, splat(1)));
+    return taps;
+  }
+  __m256 c = _mm256_min_ps(_mm256_mul_ps(coord, sizeF), sizeF);   // NaN -> size
+  c = _mm256_max_ps(_mm256_sub_ps(c, splat(0.5f)), _mm256_setzero_ps());
+  const __m256 floorC = _mm256_floor_ps(c);
+  taps.x0 = _mm256_cvttps_epi32(floorC);
+  taps.weight = _mm256_sub_ps(c, floorC);
+  taps.x1 = _mm256_min_epi32(_mm256_add_epi32(taps.x0, splat(1)), last);
+  return taps;
+}
+
+// Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
+void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
+  const long long* texels = reinterpret_cast<const long long*>(t.half.data());
+  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
+  const __m256i lo = _mm256_i32gather_epi64(texels, _mm256_castsi256_si128(index), 8);
+  const __m256i hi = _mm256_i32gather_epi64(texels, _mm256_extracti128_si256(index, 1), 8);
+  // Each 128-bit half holds two texels: convert to floats (r g b a r g b a) and transpose.
+  alignas(32) float lanes[8][4];
+  _mm256_store_ps(&lanes[0][0], _mm256_cvtph_ps(_mm256_castsi256_si128(lo)));
+  _mm256_store_ps(&lanes[2][0], _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1)));
+  _mm256_store_ps(&lanes[4][0], _mm256_cvtph_ps(_mm256_castsi256_si128(hi)));
+  _mm256_store_ps(&lanes[6][0], _mm256_cvtph_ps(_mm256_extracti128_si256(hi, 1)));
+  const __m256i stride = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
+  for (int c = 0; c < 4; ++c) rgba[c] = _mm256_i32gather_ps(&lanes[0][c], stride, 4);
+}
+
+void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
+  if (t.sampler.filter == Filter::Nearest) {
+    __m256 rgba[4];
+    fetchHalf(t, wrapNearest(s, t.width, t.sampler.wrapS, false), wrapNearest(tc, t.height, t.sampler.wrapT, false), rgba);
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
+    return;
+  }
+  const FloatTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
+  const FloatTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
+  __m256 p00[4], p01[4], p10[4], p11[4];
+  fetchHalf(t, x.x0, y.x0, p00);
+  fetchHalf(t, x.x1, y.x0, p01);
+  fetchHalf(t, x.x0, y.x1, p10);
+  fetchHalf(t, x.x1, y.x1, p11);
+  for (int c = 0; c < 4; ++c) {
+    const __m256 row0 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p01[c], p00[c]), p00[c]);
+    const __m256 row1 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p11[c], p10[c]), p10[c]);
+    out[c] = simd::Float8(_mm256_fmadd_ps(y.weight, _mm256_sub_ps(row1, row0), row0));
+  }
+}
+
+}  // namespace
+
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]) {
+  if (texture.format == TexelFormat::RGBA8) {
+    sampleRgba8(texture, s.v, t.v, out);
+  } else if (texture.format == TexelFormat::RGBA16F) {
+    sampleHalf(texture, s.v, t.v, out);
+  } else {   // RGBA32F targets are sampled only by tests: the scalar reference per lane
+    alignas(32) float ss[8], ts[8], planes[4][8];
+    s.store(ss);
+    t.store(ts);
+    for (int i = 0; i < 8; ++i) {
+      float rgba[4];
+      sampleColor(texture, ss[i], ts[i], rgba);
+      for (int c = 0; c < 4; ++c) planes[c][i] = rgba[c];
+    }
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8::load(planes[c]);
+  }
+}
+
+}  // namespace raster::sampling
+#endif

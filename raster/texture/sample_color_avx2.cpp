@@ -136,14 +136,17 @@ void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
   const __m256i lo = _mm256_i32gather_epi64(texels, _mm256_castsi256_si128(index), 8);
   const __m256i hi = _mm256_i32gather_epi64(texels, _mm256_extracti128_si256(index, 1), 8);
-  // Each 128-bit half holds two texels: convert to floats (r g b a r g b a) and transpose.
-  alignas(32) float lanes[8][4];
-  _mm256_store_ps(&lanes[0][0], _mm256_cvtph_ps(_mm256_castsi256_si128(lo)));
-  _mm256_store_ps(&lanes[2][0], _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1)));
-  _mm256_store_ps(&lanes[4][0], _mm256_cvtph_ps(_mm256_castsi256_si128(hi)));
-  _mm256_store_ps(&lanes[6][0], _mm256_cvtph_ps(_mm256_extracti128_si256(hi, 1)));
-  const __m256i stride = _mm256_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28);
-  for (int c = 0; c < 4; ++c) rgba[c] = _mm256_i32gather_ps(&lanes[0][c], stride, 4);
+  // Each 128-bit half holds two texels: convert to floats (r g b a r g b a), then transpose
+  // in registers; the unpacks leave lanes in the order 0 2 4 6 1 3 5 7, undone by a permute.
+  const __m256 v0 = _mm256_cvtph_ps(_mm256_castsi256_si128(lo)), v1 = _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1));
+  const __m256 v2 = _mm256_cvtph_ps(_mm256_castsi256_si128(hi)), v3 = _mm256_cvtph_ps(_mm256_extracti128_si256(hi, 1));
+  const __m256 t0 = _mm256_unpacklo_ps(v0, v1), t1 = _mm256_unpackhi_ps(v0, v1);
+  const __m256 t2 = _mm256_unpacklo_ps(v2, v3), t3 = _mm256_unpackhi_ps(v2, v3);
+  const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+  rgba[0] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(t0), _mm256_castps_pd(t2))), order);
+  rgba[1] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(t0), _mm256_castps_pd(t2))), order);
+  rgba[2] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(t1), _mm256_castps_pd(t3))), order);
+  rgba[3] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(t1), _mm256_castps_pd(t3))), order);
 }
 
 void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {

@@ -3,7 +3,7 @@
 // vec2/vec3/vec4<F> hold one value per lane per component (structure of arrays).
 // Functions carry GLSL names and the operation order llvmpipe's compiler produces from
 // the GLSL (NIR with ffma lowered: plain multiply and add, no fusion):
-//   dot(a, b)      = (a.x*b.x + a.y*b.y) + a.z*b.z
+//   dot(a, b)      = a.x*b.x + (a.y*b.y + a.z*b.z)   (measured against llvmpipe)
 //   normalize(v)   = v * (1 / sqrt(dot(v, v)))          (GLSL IR: v * rsq(dot); rsq = 1/sqrt)
 //   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form)
 //   mat4 * vec4    = ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w   (column by column)
@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/simd/gl_math.h"
 #include "raster/simd/lanes.h"
 
 namespace raster::glsl {
@@ -87,8 +88,8 @@ template <class F> vec2<F> operator+(vec2<F> a, glm::vec2 b) { return a + vec2<F
 template <class F> vec2<F> operator*(vec2<F> a, glm::vec2 b) { return a * vec2<F>(b); }
 
 template <class F> F dot(vec2<F> a, vec2<F> b) { return a.x * b.x + a.y * b.y; }
-template <class F> F dot(vec3<F> a, vec3<F> b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
-template <class F> F dot(vec4<F> a, vec4<F> b) { return ((a.x * b.x + a.y * b.y) + a.z * b.z) + a.w * b.w; }
+template <class F> F dot(vec3<F> a, vec3<F> b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
+template <class F> F dot(vec4<F> a, vec4<F> b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
 template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
 template <class F> vec3<F> normalize(vec3<F> v) { return v * (F(1.0f) / sqrt(dot(v, v))); }
 
@@ -97,16 +98,25 @@ template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.
 template <class F> F clamp(F x, F lo, F hi) { return min(max(x, lo), hi); }
 template <class F> vec3<F> max(vec3<F> a, F b) { return {max(a.x, b), max(a.y, b), max(a.z, b)}; }
 
-// pow(x, y) per lane with the C library. llvmpipe computes exp2(y * log2(x)) with its own
-// polynomial approximations (lp_build_pow), so results differ in the last bits.
-inline float pow(float x, float y) { return std::pow(x, y); }
-template <class F>
-F pow(F x, F y) {
-  alignas(32) float xs[F::kCount], ys[F::kCount];
-  x.store(xs);
-  y.store(ys);
-  for (int i = 0; i < F::kCount; ++i) xs[i] = std::pow(xs[i], ys[i]);
-  return F::load(xs);
+// Transcendentals (pow, exp2, log2, sin, cos, asin, acos, atan) are in gl_math.h: bit-exact
+// ports of llvmpipe's approximations. Component-wise vec3 forms of pow:
+//   pow(v, e)      run-time exponents (a uniform or computed vec3);
+//   pow<Y>(v)      GLSL pow(v, vec3(Y)) with a literal Y, folded as Mesa folds it (gl_math.h).
+template <class F> vec3<F> pow(vec3<F> v, vec3<F> e) { return {pow(v.x, e.x), pow(v.y, e.y), pow(v.z, e.z)}; }
+template <float Y, class F> vec3<F> pow(vec3<F> v) { return {pow<Y>(v.x), pow<Y>(v.y), pow<Y>(v.z)}; }
+
+template <class F> vec3<F> operator-(vec3<F> a) { return {-a.x, -a.y, -a.z}; }
+// GLSL cross as Mesa's builtin: a.yzx * b.zxy - a.zxy * b.yzx.
+template <class F> vec3<F> cross(vec3<F> a, vec3<F> b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+// Per-lane choice between two vectors (divergent branches and ternaries run under masks).
+template <class M, class F> vec2<F> select(M m, vec2<F> a, vec2<F> b) { return {select(m, a.x, b.x), select(m, a.y, b.y)}; }
+template <class M, class F> vec3<F> select(M m, vec3<F> a, vec3<F> b) {
+  return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+}
+template <class M, class F> vec4<F> select(M m, vec4<F> a, vec4<F> b) {
+  return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z), select(m, a.w, b.w)};
 }
 
 // mat4 * vec4, column by column in GLSL order.

@@ -1,0 +1,441 @@
+// GLSL transcendental functions computed exactly as llvmpipe computes them: the same
+// approximations, constants, operation order and fusion, bit for bit, on the reference
+// machine kind (x86-64 with AVX2 + FMA; Debian 12's Mesa 22.3.6 llvmpipe, LLVM 15, 8-wide).
+//
+// Source: Mesa 22.3.6 (the Debian source package mesa_22.3.6-1+deb12u2, i.e. the code that
+// is installed), files relative to src/:
+//   gallium/auxiliary/gallivm/lp_bld_nir.c     maps NIR opcodes: fexp2 -> lp_build_exp2,
+//       flog2 -> lp_build_log2_safe, fpow -> lp_build_pow, fsin/fcos -> lp_build_sin/cos,
+//       fsqrt -> llvm.sqrt, frcp -> 1/x (fdiv), fsign -> lp_build_sgn, comparisons ordered
+//       (except !=), fmin/fmax -> minps/maxps (plus a NaN fix-up when neither operand is
+//       known to be a number).
+//   gallium/auxiliary/gallivm/lp_bld_arit.c    lp_build_exp2, lp_build_log2_approx,
+//       lp_build_polynomial, lp_build_pow, lp_build_sin_or_cos, lp_build_sgn.
+//       lp_build_mad / lp_build_fmuladd emit llvm.fmuladd, which LLVM turns into one FMA on
+//       FMA CPUs (written fma() below); every other multiply and add rounds on its own.
+//   compiler/glsl/builtin_functions.cpp        acos = pi/2 - asin_expr(x) (a GLSL IR
+//       expression); atan(y, x) -> ir_binop_atan2 -> (glsl_to_nir.cpp) nir_atan2.
+//   compiler/nir/nir_builtin_builder.c         nir_atan, nir_atan2: polynomial atan.
+//   gallium/drivers/llvmpipe/lp_screen.c       NIR options: lower_ffma32 (so the ffma of the
+//       NIR builders become a separate multiply and add), no lower_fpow, no lower_fsign.
+//   compiler/nir/nir_opt_algebraic.py, compiler/glsl/opt_algebraic.cpp: constant folding of
+//       pow (see pow<Y> below).
+//
+// Denormals: llvmpipe's shaders run with the x86 FTZ and DAZ bits set (fragment shaders:
+// lp_rast.c, vertex shaders: draw_pt.c, util_fpstate_set_denorms_to_zero), so a denormal
+// operand reads as zero and a denormal result is flushed to zero. This pipeline runs with
+// the default MXCSR, so every function here flushes denormal arguments to a zero of the same
+// sign (daz() below), and flushes the intermediates where a denormal would change the result
+// (each is marked FTZ).
+//
+// Measured against llvmpipe (tests/gl_math_test.cpp, and a standalone GL probe): every
+// result bit-identical, NaN payloads included: all 2^32 arguments of sin; tens of millions
+// of arguments per function for the others.
+//
+// Lane types: float, simd::Lanes<N> (plain loops: the readable reference) and simd::Float8
+// (AVX2). One generic text per function, over a few bit-level helpers (detail::), so the
+// three give identical bits; tests/gl_math_test.cpp checks it, and checks all of them
+// against llvmpipe through real GL.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "raster/simd/lanes.h"
+
+namespace raster::glsl {
+namespace detail {
+
+// ---- 32-bit integer lanes of a lane type, for bit manipulation --------------------------
+template <int N>
+struct ULanes {
+  uint32_t lane[N];
+  ULanes() = default;
+  ULanes(uint32_t s) { for (int i = 0; i < N; ++i) lane[i] = s; }  // NOLINT: broadcast
+#define RASTER_ULANES_OP(op)                                                                  \
+  friend ULanes operator op(ULanes a, ULanes b) { for (int i = 0; i < N; ++i) a.lane[i] = a.lane[i] op b.lane[i]; return a; }
+  RASTER_ULANES_OP(&)
+  RASTER_ULANES_OP(|)
+  RASTER_ULANES_OP(^)
+  RASTER_ULANES_OP(+)
+  RASTER_ULANES_OP(-)
+#undef RASTER_ULANES_OP
+  friend ULanes operator~(ULanes a) { for (int i = 0; i < N; ++i) a.lane[i] = ~a.lane[i]; return a; }
+  friend ULanes operator<<(ULanes a, int n) { for (int i = 0; i < N; ++i) a.lane[i] <<= n; return a; }
+  friend ULanes operator>>(ULanes a, int n) { for (int i = 0; i < N; ++i) a.lane[i] >>= n; return a; }
+};
+
+// Scalar: the bit pattern and float conversions of one lane.
+inline uint32_t asBits(float f) { uint32_t u; std::memcpy(&u, &f, sizeof u); return u; }
+inline float asFloat(uint32_t u) { float f; std::memcpy(&f, &u, sizeof f); return f; }
+// cvttps2dq: truncate toward zero; NaN and out-of-range give 0x80000000 (what LLVM's
+// fptosi becomes on x86, and what llvmpipe's code relies on for huge arguments).
+inline uint32_t cvtt(float f) {
+  if (!(f >= -2147483648.0f && f < 2147483648.0f)) return 0x80000000u;
+  return uint32_t(int32_t(f));
+}
+// cvtdq2ps: signed integer to float, rounding to nearest even.
+inline float cvt(uint32_t u) { return float(int32_t(u)); }
+inline bool eq(uint32_t a, uint32_t b) { return a == b; }
+inline float sel(bool m, float a, float b) { return m ? a : b; }
+inline float fmaF(float a, float b, float c) { return std::fma(a, b, c); }
+inline float floorF(float a) { return std::floor(a); }
+inline float sqrtF(float a) { return std::sqrt(a); }
+// minps(a, b) / maxps(a, b): a < b ? a : b, so b is returned when either is NaN.
+inline float minps(float a, float b) { return a < b ? a : b; }
+inline float maxps(float a, float b) { return a > b ? a : b; }
+
+template <int N>
+ULanes<N> asBits(simd::Lanes<N> f) { ULanes<N> u; std::memcpy(u.lane, f.lane, sizeof u.lane); return u; }
+template <int N>
+simd::Lanes<N> asFloat(ULanes<N> u) { simd::Lanes<N> f; std::memcpy(f.lane, u.lane, sizeof f.lane); return f; }
+template <int N>
+ULanes<N> cvtt(simd::Lanes<N> f) { ULanes<N> u; for (int i = 0; i < N; ++i) u.lane[i] = cvtt(f.lane[i]); return u; }
+template <int N>
+simd::Lanes<N> cvt(ULanes<N> u) { simd::Lanes<N> f; for (int i = 0; i < N; ++i) f.lane[i] = cvt(u.lane[i]); return f; }
+template <int N>
+simd::Mask<N> eq(ULanes<N> a, ULanes<N> b) { simd::Mask<N> m; for (int i = 0; i < N; ++i) m.lane[i] = a.lane[i] == b.lane[i]; return m; }
+template <int N>
+simd::Lanes<N> sel(simd::Mask<N> m, simd::Lanes<N> a, simd::Lanes<N> b) { return simd::select(m, a, b); }
+template <int N>
+simd::Lanes<N> fmaF(simd::Lanes<N> a, simd::Lanes<N> b, simd::Lanes<N> c) { return simd::fma(a, b, c); }
+template <int N>
+simd::Lanes<N> floorF(simd::Lanes<N> a) { return simd::floor(a); }
+template <int N>
+simd::Lanes<N> sqrtF(simd::Lanes<N> a) { return simd::sqrt(a); }
+template <int N>
+simd::Lanes<N> minps(simd::Lanes<N> a, simd::Lanes<N> b) { return simd::min(a, b); }
+template <int N>
+simd::Lanes<N> maxps(simd::Lanes<N> a, simd::Lanes<N> b) { return simd::max(a, b); }
+
+#if RASTER_AVX2
+struct U8 {
+  __m256i v;
+  U8() = default;
+  U8(uint32_t s) : v(_mm256_set1_epi32(int(s))) {}  // NOLINT: broadcast
+  explicit U8(__m256i x) : v(x) {}
+  friend U8 operator&(U8 a, U8 b) { return U8(_mm256_and_si256(a.v, b.v)); }
+  friend U8 operator|(U8 a, U8 b) { return U8(_mm256_or_si256(a.v, b.v)); }
+  friend U8 operator^(U8 a, U8 b) { return U8(_mm256_xor_si256(a.v, b.v)); }
+  friend U8 operator+(U8 a, U8 b) { return U8(_mm256_add_epi32(a.v, b.v)); }
+  friend U8 operator-(U8 a, U8 b) { return U8(_mm256_sub_epi32(a.v, b.v)); }
+  friend U8 operator~(U8 a) { return U8(_mm256_xor_si256(a.v, _mm256_set1_epi32(-1))); }
+  friend U8 operator<<(U8 a, int n) { return U8(_mm256_slli_epi32(a.v, n)); }
+  friend U8 operator>>(U8 a, int n) { return U8(_mm256_srli_epi32(a.v, n)); }
+};
+inline U8 asBits(simd::Float8 f) { return U8(_mm256_castps_si256(f.v)); }
+inline simd::Float8 asFloat(U8 u) { return simd::Float8(_mm256_castsi256_ps(u.v)); }
+inline U8 cvtt(simd::Float8 f) { return U8(_mm256_cvttps_epi32(f.v)); }
+inline simd::Float8 cvt(U8 u) { return simd::Float8(_mm256_cvtepi32_ps(u.v)); }
+inline simd::Mask8 eq(U8 a, U8 b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
+inline simd::Float8 sel(simd::Mask8 m, simd::Float8 a, simd::Float8 b) { return simd::select(m, a, b); }
+inline simd::Float8 fmaF(simd::Float8 a, simd::Float8 b, simd::Float8 c) { return simd::fma(a, b, c); }
+inline simd::Float8 floorF(simd::Float8 a) { return simd::floor(a); }
+inline simd::Float8 sqrtF(simd::Float8 a) { return simd::sqrt(a); }
+inline simd::Float8 minps(simd::Float8 a, simd::Float8 b) { return simd::min(a, b); }
+inline simd::Float8 maxps(simd::Float8 a, simd::Float8 b) { return simd::max(a, b); }
+#endif
+
+template <class F> struct IntLanesOf;
+template <> struct IntLanesOf<float> { using type = uint32_t; };
+template <int N> struct IntLanesOf<simd::Lanes<N>> { using type = ULanes<N>; };
+#if RASTER_AVX2
+template <> struct IntLanesOf<simd::Float8> { using type = U8; };
+#endif
+template <class F> using UOf = typename IntLanesOf<F>::type;
+
+// The lane types these functions accept.
+template <class F>
+concept LaneType = requires { typename IntLanesOf<F>::type; };
+
+constexpr uint32_t kSignBit = 0x80000000u;
+
+template <class F> F fabsF(F x) { return asFloat(asBits(x) & UOf<F>(~kSignBit)); }
+template <class F> auto isFiniteMask(F x) { const UOf<F> e = asBits(x) & UOf<F>(0x7f800000u); return !eq(e, UOf<F>(0x7f800000u)); }
+// x86 DAZ, as llvmpipe's shader threads run: a denormal operand reads as a zero of its sign.
+template <class F> F daz(F x) { return sel(fabsF(x) < F(0x1p-126f), asFloat(asBits(x) & UOf<F>(kSignBit)), x); }
+// Unordered comparisons (LLVM fcmp u*, what lp_build_cmp emits): true when either is NaN.
+template <class F> auto ueq(F a, F b) { return !((a < b) | (a > b)); }
+template <class F> auto ult(F a, F b) { return !(a >= b); }
+template <class F> auto uge(F a, F b) { return !(a < b); }
+
+// ---- constants: the double literals of the Mesa source, rounded to float ----------------
+// lp_build_exp2_polynomial (EXP_POLY_DEGREE 5): minimax 2^x on [0, 1).
+constexpr float kExp2P0 = float(1.000000000000000000000);
+constexpr float kExp2P1 = float(0.693153073200168932794);
+constexpr float kExp2P2 = float(0.240153617044375388211);
+constexpr float kExp2P3 = float(0.0558263180532956664775);
+constexpr float kExp2P4 = float(0.00898934009049466391101);
+constexpr float kExp2P5 = float(0.00187757667519147912699);
+// lp_build_log2_polynomial (LOG_POLY_DEGREE 4): log2((1+sqrt z)/(1-sqrt z))/sqrt z.
+constexpr float kLog2P0 = float(2.88539009343309178325);
+constexpr float kLog2P1 = float(0.961791550404184197881);
+constexpr float kLog2P2 = float(0.577440339438736392009);
+constexpr float kLog2P3 = float(0.403343858251329912514);
+constexpr float kLog2P4 = float(0.406718052498846252698);
+// lp_build_sin_or_cos (Cephes sinf/cosf, as in sse_mathfun).
+constexpr float kFourOverPi = float(1.27323954473516);
+constexpr float kDP1 = float(-0.78515625);
+constexpr float kDP2 = float(-2.4187564849853515625e-4);
+constexpr float kDP3 = float(-3.77489497744594108e-8);
+constexpr float kCos0 = float(2.443315711809948E-005);
+constexpr float kCos1 = float(-1.388731625493765E-003);
+constexpr float kCos2 = float(4.166664568298827E-002);
+constexpr float kSin0 = float(-1.9515295891E-4);
+constexpr float kSin1 = float(8.3321608736E-3);
+constexpr float kSin2 = float(-1.6666654611E-1);
+// GLSL IR asin_expr (builtin_functions.cpp), the acos coefficients; M_PI_2f, M_PI_4f.
+constexpr float kPi2 = 1.57079632679489661923f;
+constexpr float kPi4Minus1 = 0.785398163397448309616f - 1.0f;
+constexpr float kAcosP0 = 0.08132463f;
+constexpr float kAcosP1 = -0.02363318f;
+constexpr float kAsinP0 = 0.086566724f;
+constexpr float kAsinP1 = -0.03102955f;
+// nir_atan (nir_builtin_builder.c): odd minimax polynomial on [0, 1].
+constexpr float kAtan1 = 0.9999793128310355f;
+constexpr float kAtan3 = -0.3326756418091246f;
+constexpr float kAtan5 = 0.1938924977115610f;
+constexpr float kAtan7 = -0.1173503194786851f;
+constexpr float kAtan9 = 0.0536813784310406f;
+constexpr float kAtan11 = -0.0121323213173444f;
+
+// lp_build_exp2 (lp_bld_arit.c):
+//   x = minps(128, x); x = maxps(-126.99999, x)        (NaN passes through)
+//   ipart = floor(x); fpart = x - ipart                 (lp_build_ifloor_fract, roundps)
+//   expipart = bits((cvtt(ipart) + 127) << 23)          (2^ipart; 0 for ipart = -127)
+//   P(f) = lp_build_polynomial(f, degree 5): f2 = f*f, even/odd Horner in f2 with
+//          fmuladd, then fmuladd(odd, f, even)
+//   result = expipart * P(fpart)                        (plain multiply)
+template <class F>
+F exp2Impl(F x) {
+  using U = UOf<F>;
+  x = daz(x);
+  x = minps(F(128.0f), x);
+  x = maxps(F(-126.99999f), x);
+  const F ipart = floorF(x);
+  const F fpart = x - ipart;
+  const F expipart = asFloat((cvtt(ipart) + U(127u)) << 23);
+  const F f2 = fpart * fpart;
+  F odd = F(kExp2P5);
+  F even = F(kExp2P4);
+  odd = fmaF(f2, odd, F(kExp2P3));
+  even = fmaF(f2, even, F(kExp2P2));
+  odd = fmaF(f2, odd, F(kExp2P1));
+  even = fmaF(f2, even, F(kExp2P0));
+  const F p = fmaF(odd, fpart, even);
+  return expipart * p;
+}
+
+// lp_build_log2_safe = lp_build_log2_approx(handle_edge_cases = TRUE):
+//   logexp = float(((bits(x) & 0x7f800000) >> 23) - 127)
+//   mant = bits((bits(x) & 0x007fffff) | bits(1.0))            (in [1, 2))
+//   y = (mant - 1) / (mant + 1);  z = y * y
+//   P(z) = lp_build_polynomial(z, degree 4): z2 = z*z, even/odd Horner with fmuladd
+//   result = fmuladd(y, P(z), logexp)
+//   then, unordered compares: x >= +inf -> +inf; x == 0 -> -inf; x < 0 -> NaN
+//   (so NaN -> NaN; with DAZ a denormal compares equal to 0 -> -inf).
+template <class F>
+F log2Impl(F x) {
+  using U = UOf<F>;
+  x = daz(x);
+  const U i = asBits(x);
+  const F logexp = cvt(((i & U(0x7f800000u)) >> 23) - U(127u));
+  const F mant = asFloat((i & U(0x007fffffu)) | U(0x3f800000u));
+  const F y = (mant - F(1.0f)) / (mant + F(1.0f));
+  const F z = y * y;
+  const F z2 = z * z;
+  F even = F(kLog2P4);
+  F odd = F(kLog2P3);
+  even = fmaF(z2, even, F(kLog2P2));
+  odd = fmaF(z2, odd, F(kLog2P1));
+  even = fmaF(z2, even, F(kLog2P0));
+  const F p = fmaF(odd, z, even);
+  F res = fmaF(y, p, logexp);
+  const float inf = __builtin_inff();
+  res = sel(uge(x, F(inf)), F(inf), res);
+  res = sel(ueq(x, F(0.0f)), F(-inf), res);
+  res = sel(ult(x, F(0.0f)), F(__builtin_nanf("")), res);
+  return res;
+}
+
+// lp_build_pow: x == 0 (unordered: NaN too) ? 0 : exp2(log2_safe(x) * y).
+// So pow(0, y) = 0 for every y, pow(NaN, y) = 0, pow(x < 0, y) = NaN.
+template <class F>
+F powImpl(F x, F y) {
+  x = daz(x);
+  y = daz(y);
+  const auto zero = ueq(x, F(0.0f));
+  // The product as the JIT code computes it: where both factors are NaN, y's NaN wins
+  // (measured); exp2Impl flushes a denormal product (FTZ).
+  const F res = exp2Impl(sel(y == y, log2Impl(x) * y, y));
+  return sel(zero, F(0.0f), res);
+}
+
+// lp_build_sin_or_cos (Cephes, via sse_mathfun), for |x| reduced by multiples of pi/4:
+//   ax = |x|;  j = cvtt(ax * 4/pi);  j = (j + 1) & ~1;  yj = float(j)
+//   r = fmuladd(yj, DP3, fmuladd(yj, DP2, fmuladd(yj, DP1, ax)))     (DPi = -pi/4 split)
+//   z = r * r
+//   cos poly: ((fmuladd(fmuladd(z, c0, c1), z, c2) * z) * z - z * 0.5) + 1
+//   sin poly: fmuladd(fmuladd(fmuladd(z, s0, s1), z, s2) * z, r, r)
+//   sin: sign = (bits(x) ^ ((cvtt + 1) << 29)) & sign bit;  poly = ((j & 2) == 0) ? sin : cos
+//   cos: j2 = j - 2; sign = ((~j2 & 4) << 29);               poly = ((j2 & 2) == 0) ? sin : cos
+//   result = clamp(poly ^ sign, -1, 1) (minps then maxps); NaN for infinite or NaN x.
+// Arguments with |x| * 4/pi >= 2^31 make cvtt return 0x80000000 (as on x86).
+template <class F>
+F sinOrCosImpl(F a, bool cosine) {
+  using U = UOf<F>;
+  a = daz(a);
+  const U ai = asBits(a);
+  const F xAbs = asFloat(ai & U(~kSignBit));
+  const F scaled = xAbs * F(kFourOverPi);
+  const U emm2Add = cvtt(scaled) + U(1u);
+  const U emm2And = emm2Add & U(~1u);
+  const F yj = cvt(emm2And);
+  U emm2, signBit;
+  if (cosine) {
+    emm2 = emm2And - U(2u);
+    signBit = (~emm2 & U(4u)) << 29;
+  } else {
+    emm2 = emm2And;
+    signBit = (ai ^ (emm2Add << 29)) & U(kSignBit);
+  }
+  const auto useSinPoly = eq(emm2 & U(2u), U(0u));
+  const F x1 = fmaF(yj, F(kDP1), xAbs);
+  const F x2 = fmaF(yj, F(kDP2), x1);
+  const F x3 = fmaF(yj, F(kDP3), x2);
+  const F z = x3 * x3;
+  const F c4 = fmaF(z, F(kCos0), F(kCos1));
+  const F c6 = fmaF(c4, z, F(kCos2));
+  const F c8 = (c6 * z) * z;
+  const F cosPoly = (c8 - z * F(0.5f)) + F(1.0f);
+  const F s4 = fmaF(z, F(kSin0), F(kSin1));
+  const F s6 = fmaF(s4, z, F(kSin2));
+  const F sinPoly = fmaF(s6 * z, x3, x3);
+  F res = asFloat(asBits(sel(useSinPoly, sinPoly, cosPoly)) ^ signBit);
+  res = minps(res, F(1.0f));
+  res = maxps(res, F(-1.0f));
+  return sel(isFiniteMask(a), res, F(__builtin_nanf("")));
+}
+
+// lp_build_sgn: (sign bit of x) | 1.0, then 0 where x == 0 (an unordered compare, so NaN
+// gives 0 too).
+template <class F>
+F signImpl(F x) {
+  using U = UOf<F>;
+  const F s = asFloat((asBits(x) & U(kSignBit)) | U(0x3f800000u));
+  return sel(ueq(x, F(0.0f)), F(0.0f), s);
+}
+
+// NIR fmin of two operands not known to be numbers (lp_bld_nir.c: GALLIVM_NAN_RETURN_OTHER):
+// minps(a, b), but a where b is NaN; so NaN only when both are.
+template <class F>
+F fminOther(F a, F b) {
+  return sel(b == b, minps(a, b), a);
+}
+
+// GLSL IR asin_expr(x, p0, p1) (builtin_functions.cpp), compiled without fusion:
+//   sign(x) * (pi/2 - sqrt(1 - |x|) * (pi/2 + |x| * ((pi/4 - 1) + |x| * (p0 + |x| * p1))))
+template <class F>
+F asinExpr(F x, float p0, float p1) {
+  const F ax = fabsF(x);
+  const F poly = F(kPi2) + ax * (F(kPi4Minus1) + ax * (F(p0) + ax * F(p1)));
+  return signImpl(x) * (F(kPi2) - sqrtF(F(1.0f) - ax) * poly);
+}
+
+// nir_atan(y_over_x) (nir_builtin_builder.c), with llvmpipe's NIR options: ffma lowered to
+// a multiply and an add, fdiv a true division, fmin/fmax minps/maxps, no NaN fix-up (the
+// shader is not `precise`).
+//   a = |v|;  t = min(a, 1) / max(a, 1)
+//   t2 = t*t, t3 = t2*t, t5 = t3*t2, t7 = t5*t2, t9 = t7*t2
+//   s = ((((t*c1 + t3*c3) + t5*c5) + t7*c7) + t9*c9) + (t9*c11)*t2
+//   The last term is nir_atan's (t9*t2)*c11 after nir_opt_algebraic's "propagate constants
+//   up multiplication chains" (fmul(fmul(a, b) used once, #c) -> fmul(fmul(a, c), b)):
+//   t11 is the only power used once. Measured: the literal (t9*t2)*c11 is 1 ulp off on
+//   0.05% of arguments near |v| = 1, this form matches all.
+//   s = b2f(1 < a) * (s * -2 + pi/2) + s       (range reduction fix-up, unfused)
+//   result = s * sign(v)
+template <class F>
+F atanCore(F v) {
+  const F a = fabsF(v);
+  const F t = minps(a, F(1.0f)) / maxps(a, F(1.0f));
+  const F t2 = t * t;
+  const F t3 = t2 * t;
+  const F t5 = t3 * t2;
+  const F t7 = t5 * t2;
+  const F t9 = t7 * t2;
+  F s = daz(t * F(kAtan1)) + t3 * F(kAtan3);   // FTZ: t * c1 is denormal for t just above 2^-126
+  s = s + t5 * F(kAtan5);
+  s = s + t7 * F(kAtan7);
+  s = s + t9 * F(kAtan9);
+  s = s + (t9 * F(kAtan11)) * t2;   // t11 * c11, reassociated by NIR (see above)
+  const F b2f = sel(F(1.0f) < a, F(1.0f), F(0.0f));
+  s = b2f * (s * F(-2.0f) + F(kPi2)) + s;
+  return s * signImpl(v);
+}
+
+// nir_atan2(y, x) (nir_builtin_builder.c), ffma lowered as above:
+//   flip = 0 >= x;  s = flip ? |x| : y;  t = flip ? y : |x|
+//   scale = |t| >= 1e18 ? 0.25 : 1;  rcp = 1 / (t * scale);  q = (s * scale) * rcp
+//   tan = |x| == |y| ? 1 : |q|
+//   arc = b2f(flip) * pi/2 + atan(tan)
+//   result = min(y, rcp) < 0 ? -arc : arc          (fmin: a NaN operand gives the other)
+template <class F>
+F atan2Impl(F y, F x) {
+  y = daz(y);
+  x = daz(x);
+  const F ax = fabsF(x);
+  const auto flip = F(0.0f) >= x;
+  const F s = sel(flip, ax, y);
+  const F t = sel(flip, y, ax);
+  const F scale = sel(fabsF(t) >= F(1e18f), F(0.25f), F(1.0f));
+  const F rcp = F(1.0f) / (t * scale);
+  const F q = daz((s * scale) * rcp);   // FTZ
+  const F tan = sel(ax == fabsF(y), F(1.0f), fabsF(q));
+  const F arc = sel(flip, F(1.0f), F(0.0f)) * F(kPi2) + atanCore(tan);
+  return sel(fminOther(y, rcp) < F(0.0f), -arc, arc);
+}
+
+}  // namespace detail
+
+// ---- the GLSL functions ------------------------------------------------------------------
+// One template each, for float, Lanes<N> and Float8 (detail::LaneType). A call with a float
+// argument picks these over the C library's double overloads (an exact match), so a port
+// instantiated with F = float computes what llvmpipe computes too.
+template <class F> requires detail::LaneType<F> F exp2(F x) { return detail::exp2Impl(x); }
+template <class F> requires detail::LaneType<F> F log2(F x) { return detail::log2Impl(x); }
+template <class F> requires detail::LaneType<F> F sin(F x) { return detail::sinOrCosImpl(x, false); }
+template <class F> requires detail::LaneType<F> F cos(F x) { return detail::sinOrCosImpl(x, true); }
+template <class F> requires detail::LaneType<F> F acos(F x) { return F(detail::kPi2) - detail::asinExpr(detail::daz(x), detail::kAcosP0, detail::kAcosP1); }
+template <class F> requires detail::LaneType<F> F asin(F x) { return detail::asinExpr(detail::daz(x), detail::kAsinP0, detail::kAsinP1); }
+// GLSL atan(y_over_x) and atan(y, x).
+template <class F> requires detail::LaneType<F> F atan(F yOverX) { return detail::atanCore(detail::daz(yOverX)); }
+template <class F> requires detail::LaneType<F> F atan(F y, F x) { return detail::atan2Impl(y, x); }
+
+// pow(x, y) with a run-time exponent (a varying, a uniform, a computed value): llvmpipe's
+// lp_build_pow, exp2(log2(x) * y), with pow(0, y) = 0.
+template <class F> requires detail::LaneType<F> F pow(F x, F y) { return detail::powImpl(x, y); }
+
+// pow(x, Y) with a literal exponent in the GLSL source: Mesa's compilers fold some of
+// these before llvmpipe sees them (GLSL IR opt_algebraic.cpp, NIR nir_opt_algebraic.py):
+//   pow(x, 1.0) = x;  pow(x, 2.0) = x * x;  pow(x, 4.0) = (x * x) * (x * x)
+// every other exponent is the run-time pow. Write pow<2.0f>(x) for GLSL pow(x, 2.0):
+// pow(x, F(2.0f)) is the run-time pow, which differs from x * x in the last bits (and is
+// NaN for x < 0). Measured against llvmpipe for 1, 2, 4, 2.2, 0.4545 and 48.
+// Not modelled (write them out in the port): a literal base, pow(2.0, y) = exp2(y) and
+// pow(1.0, y) = 1; and all-constant calls, which the compiler evaluates with the C library.
+template <float Y, class F> requires detail::LaneType<F>
+F pow(F x) {
+  if constexpr (Y == 1.0f) {
+    return x;
+  } else if constexpr (Y == 2.0f) {
+    return detail::daz(x * x);   // FTZ, as every multiply in llvmpipe's shaders
+  } else if constexpr (Y == 4.0f) {
+    const F squared = detail::daz(x * x);
+    return detail::daz(squared * squared);
+  } else {
+    return detail::powImpl(x, F(Y));
+  }
+}
+
+}  // namespace raster::glsl

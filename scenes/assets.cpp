@@ -1,0 +1,565 @@
+// Asset loading for the deferred scene: OBJ through tinyobjloader, JPEG/PNG and Radiance HDR
+// through stb_image, each checked first so that a bad file fails with one clear line.
+//
+// Order of checks for every file: it exists and is a regular file, it can be opened (so "no
+// such file" and "permission denied" are told apart from bad content), it is not empty; then
+// the format's signature; then the file's structure is walked to prove it is complete (JPEG
+// markers up to EOI, PNG chunks up to IEND, HDR header and every run-length scanline), since
+// stb_image 2.27 says no more than "expected marker" for a truncated JPEG, and never returns
+// on a truncated run-length HDR (measured: the cannon .hdr cut in half spins forever); then
+// the size (at most 16384 a side); then stb_image decodes.
+#include "scenes/assets.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <sstream>
+#include <unordered_map>
+
+#include <stb_image.h>
+#include <tbb/parallel_for.h>
+#include <tiny_obj_loader.h>
+
+#include <glm/glm.hpp>
+
+namespace scenes {
+
+std::string assetPath(const SceneOptions& options, const std::string& relative) {
+  return assetDirectory(options) + "/" + relative;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxImageSide = 16384;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw SceneError("asset " + path + ": " + what);
+}
+
+// Text from a library, made safe for a one-line message.
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+std::string hexBytes(const std::string& data, size_t count) {
+  std::string out;
+  char buf[4];
+  for (size_t i = 0; i < count && i < data.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%02x", static_cast<unsigned>(static_cast<uint8_t>(data[i])));
+    if (i) out += ' ';
+    out += buf;
+  }
+  return out;
+}
+
+// The whole file, after checking that it is there, is a file, can be read and is not empty.
+std::string readAssetFile(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (st.type() == fs::file_type::not_found) {
+    std::error_code ec2;
+    if (fs::is_symlink(fs::symlink_status(path, ec2))) fail(path, "no such file (a symbolic link to a missing file)");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::exists(parent, ec2) && !ec2)
+      fail(path, "no such file (the folder " + parent.string() + " does not exist)");
+    fail(path, "no such file");
+  }
+  if (ec) {
+    if (ec == std::errc::permission_denied) fail(path, "permission denied (cannot look into its folder)");
+    fail(path, "cannot be examined (" + ec.message() + ")");
+  }
+  if (fs::is_directory(st)) fail(path, "is a directory, not a file");
+  if (!fs::is_regular_file(st)) fail(path, "is not a regular file");
+
+  errno = 0;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    const int e = errno;
+    if (e == EACCES || e == EPERM) fail(path, "permission denied");
+    fail(path, std::string("cannot be opened (") + std::strerror(e) + ")");
+  }
+  std::string data;
+  const uintmax_t expected = fs::file_size(path, ec);
+  if (!ec) data.reserve(static_cast<size_t>(expected));
+  char buf[1 << 16];
+  size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) data.append(buf, got);
+  const bool readError = std::ferror(f) != 0;
+  const int e = errno;
+  std::fclose(f);
+  if (readError) fail(path, std::string("read error (") + std::strerror(e) + ")");
+  if (data.empty()) fail(path, "empty file (0 bytes)");
+  return data;
+}
+
+const uint8_t* bytesOf(const std::string& s) { return reinterpret_cast<const uint8_t*>(s.data()); }
+
+// ---- JPEG and PNG completeness ------------------------------------------------------------
+
+bool isJpeg(const std::string& d) {
+  return d.size() >= 3 && uint8_t(d[0]) == 0xFF && uint8_t(d[1]) == 0xD8 && uint8_t(d[2]) == 0xFF;
+}
+
+bool isPng(const std::string& d) {
+  static const uint8_t sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+  return d.size() >= 8 && std::memcmp(d.data(), sig, 8) == 0;
+}
+
+std::string jpegTruncated(size_t n, const char* where) {
+  return "truncated (the JPEG ends after " + std::to_string(n) + " bytes, " + where +
+         ", without the end-of-image marker FF D9)";
+}
+
+// Walks the JPEG's segments and entropy-coded scans up to the end-of-image marker. Returns
+// "" when it is reached, else what is wrong; *w and *h get the first frame header's size
+// (left alone if there is none). Lenient where decoders are (fill bytes, stray bytes
+// between segments, data after EOI); strict only about running out of file.
+std::string jpegStructureProblem(const std::string& s, long* w, long* h) {
+  const uint8_t* d = bytesOf(s);
+  const size_t n = s.size();
+  size_t pos = 2;  // after SOI
+  bool sawScan = false;
+  for (;;) {
+    while (pos < n && d[pos] != 0xFF) ++pos;  // stray bytes (libjpeg skips them too)
+    while (pos < n && d[pos] == 0xFF) ++pos;  // fill bytes
+    if (pos >= n) return jpegTruncated(n, sawScan ? "after its image data" : "inside its headers");
+    const uint8_t marker = d[pos++];
+    if (marker == 0xD9) return "";                                         // EOI
+    if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) continue;  // no length
+    if (pos + 2 > n) return jpegTruncated(n, "inside a segment header");
+    const size_t len = (size_t(d[pos]) << 8) | d[pos + 1];
+    if (len < 2) {
+      char m[8];
+      std::snprintf(m, sizeof m, "%02X", marker);
+      return "not a readable JPEG image (segment FF " + std::string(m) + " at byte " + std::to_string(pos - 2) +
+             " has length " + std::to_string(len) + ")";
+    }
+    if (pos + len > n) {
+      char m[8];
+      std::snprintf(m, sizeof m, "%02X", marker);
+      return "truncated or corrupt (segment FF " + std::string(m) + " at byte " + std::to_string(pos - 2) +
+             " claims " + std::to_string(len) + " bytes, but the file ends " + std::to_string(n - pos) +
+             " bytes later, without the end-of-image marker FF D9)";
+    }
+    const bool sof = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
+    if (sof && len >= 7 && *w < 0) {
+      *h = (long(d[pos + 3]) << 8) | d[pos + 4];
+      *w = (long(d[pos + 5]) << 8) | d[pos + 6];
+    }
+    pos += len;
+    if (marker != 0xDA) continue;
+    // SOS: entropy-coded data runs to the next marker that is not a stuffed 00, a restart
+    // marker or a fill byte.
+    sawScan = true;
+    for (;;) {
+      const void* ff = std::memchr(d + pos, 0xFF, n - pos);
+      if (!ff) return jpegTruncated(n, "inside its image data");
+      pos = size_t(static_cast<const uint8_t*>(ff) - d);
+      if (pos + 1 >= n) return jpegTruncated(n, "inside its image data");
+      const uint8_t b = d[pos + 1];
+      if (b == 0x00 || (b >= 0xD0 && b <= 0xD7)) {
+        pos += 2;
+      } else if (b == 0xFF) {
+        pos += 1;
+      } else {
+        break;  // a real marker at pos
+      }
+    }
+  }
+}
+
+// Walks the PNG's chunks up to IEND; *w and *h get the IHDR size when it comes first.
+std::string pngStructureProblem(const std::string& s, long* w, long* h) {
+  const uint8_t* d = bytesOf(s);
+  const size_t n = s.size();
+  auto be32 = [&](size_t at) {
+    return (uint32_t(d[at]) << 24) | (uint32_t(d[at + 1]) << 16) | (uint32_t(d[at + 2]) << 8) | d[at + 3];
+  };
+  if (n >= 24 && std::memcmp(d + 12, "IHDR", 4) == 0) {
+    *w = long(be32(16));
+    *h = long(be32(20));
+  }
+  size_t pos = 8;
+  for (;;) {
+    if (pos + 8 > n)
+      return "truncated (the PNG ends after " + std::to_string(n) + " bytes without its IEND chunk)";
+    const uint32_t len = (uint32_t(d[pos]) << 24) | (uint32_t(d[pos + 1]) << 16) | (uint32_t(d[pos + 2]) << 8) | d[pos + 3];
+    const std::string type(reinterpret_cast<const char*>(d + pos + 4), 4);
+    if (len > 0x7FFFFFFFu)
+      return "not a readable PNG image (chunk at byte " + std::to_string(pos) + " has length " + std::to_string(len) + ")";
+    if (pos + 12 + size_t(len) > n)
+      return "truncated (the PNG ends after " + std::to_string(n) + " bytes, inside its " + oneLine(type) +
+             " chunk, without its IEND chunk)";
+    if (type == "IEND") return "";
+    pos += 12 + size_t(len);
+  }
+}
+
+void checkImageSize(const std::string& path, long w, long h) {
+  if (w <= 0 || h <= 0)
+    fail(path, "not a readable image (it claims a size of " + std::to_string(w) + "x" + std::to_string(h) + ")");
+  if (w > kMaxImageSide || h > kMaxImageSide)
+    fail(path, "image too large (" + std::to_string(w) + "x" + std::to_string(h) + "; at most " +
+                   std::to_string(kMaxImageSide) + " texels a side)");
+}
+
+std::string stbReason() {
+  const char* r = stbi_failure_reason();
+  return std::string("stb_image: ") + (r ? r : "unknown error");
+}
+
+// ---- Radiance HDR ---------------------------------------------------------------------------
+
+// One header line as stb_image's stbi__hdr_gettoken reads it (up to '\n' or the end).
+bool hdrLine(const std::string& d, size_t& pos, std::string& line) {
+  if (pos >= d.size()) return false;
+  const size_t nl = d.find('\n', pos);
+  if (nl == std::string::npos) {
+    line = d.substr(pos);
+    pos = d.size();
+  } else {
+    line = d.substr(pos, nl - pos);
+    pos = nl + 1;
+  }
+  return true;
+}
+
+std::string quoteForMessage(const std::string& s) {
+  std::string out;
+  for (char c : s.substr(0, 60)) out += (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) ? '?' : c;
+  return "'" + out + (s.size() > 60 ? "...'" : "'");
+}
+
+bool looksLikeText(const std::string& s) {
+  if (s.empty() || s.size() > 200) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) >= 32 && static_cast<unsigned char>(c) < 127; });
+}
+
+// Checks the pixel data exactly as stb_image 2.27's stbi__hdr_load will consume it, so that
+// the decode never reads past the end (where it would loop forever on zero-length dumps).
+std::string hdrDataProblem(const std::string& s, size_t pos, int w, int h) {
+  const uint8_t* d = bytesOf(s);
+  const size_t n = s.size();
+  const size_t flatBytes = size_t(w) * size_t(h) * 4;
+  auto truncatedAt = [&](size_t row) {
+    return "truncated (the file ends in scanline " + std::to_string(row + 1) + " of " + std::to_string(h) + ")";
+  };
+  auto flatFrom = [&](size_t start) -> std::string {
+    if (n - start >= flatBytes) return "";
+    return truncatedAt((n - start) / (size_t(w) * 4));
+  };
+  if (w < 8 || w >= 32768) return flatFrom(pos);
+  for (int j = 0; j < h; ++j) {
+    if (pos + 3 > n) return truncatedAt(j);
+    const uint8_t c1 = d[pos], c2 = d[pos + 1], lenHi = d[pos + 2];
+    if (c1 != 2 || c2 != 2 || (lenHi & 0x80)) return flatFrom(pos);  // stb: the rest is flat
+    if (pos + 4 > n) return truncatedAt(j);
+    const int len = (int(lenHi) << 8) | d[pos + 3];
+    pos += 4;
+    if (len != w)
+      return "not a readable Radiance HDR file (scanline " + std::to_string(j + 1) + " holds " + std::to_string(len) +
+             " pixels; the image is " + std::to_string(w) + " wide)";
+    for (int k = 0; k < 4; ++k) {
+      int i = 0;
+      while (i < w) {
+        if (pos >= n) return truncatedAt(j);
+        int count = d[pos++];
+        if (count > 128) {
+          if (pos >= n) return truncatedAt(j);
+          ++pos;
+          count -= 128;
+          if (count > w - i)
+            return "not a readable Radiance HDR file (bad run-length data in scanline " + std::to_string(j + 1) + ")";
+          i += count;
+        } else {
+          if (count > w - i)
+            return "not a readable Radiance HDR file (bad run-length data in scanline " + std::to_string(j + 1) + ")";
+          if (pos + size_t(count) > n) return truncatedAt(j);
+          pos += size_t(count);
+          i += count;
+        }
+      }
+    }
+  }
+  return "";
+}
+
+// ---- OBJ ----------------------------------------------------------------------------------------
+
+struct TripleHash {
+  size_t operator()(const std::array<int, 3>& t) const {
+    uint64_t h = uint32_t(t[0]);
+    h = h * 0x9E3779B97F4A7C15ull ^ uint32_t(t[1]);
+    h = h * 0x9E3779B97F4A7C15ull ^ uint32_t(t[2]);
+    return size_t(h ^ (h >> 29));
+  }
+};
+
+void checkFinite(const std::string& path, const std::vector<tinyobj::real_t>& values, int perItem, const char* what) {
+  for (size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(static_cast<float>(values[i])))
+      fail(path, std::string(what) + " " + std::to_string(i / perItem + 1) + " has a coordinate that is not a finite float");
+}
+
+}  // namespace
+
+// ---- the cat mesh ---------------------------------------------------------------------------------
+
+MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) {
+  const std::string text = readAssetFile(path);
+  std::istringstream in(text);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warn, err;
+  // No triangulation by the loader (it would reorder quads by edge length and read vertex
+  // data through unchecked indices): faces are fanned below, in file order.
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, /*triangulate=*/false,
+                        /*default_vcols_fallback=*/false))
+    fail(path, "not a readable OBJ file (tinyobjloader: " + oneLine(err) + ")");
+
+  ObjLoadInfo info;
+  info.positions = attrib.vertices.size() / 3;
+  info.texcoords = attrib.texcoords.size() / 2;
+  info.normals = attrib.normals.size() / 3;
+  for (const tinyobj::shape_t& shape : shapes) {
+    info.faces += shape.mesh.num_face_vertices.size();
+    for (unsigned char nv : shape.mesh.num_face_vertices) info.triangles += nv >= 3 ? nv - 2 : 0;
+  }
+  const size_t P = info.positions, T = info.texcoords, N = info.normals;
+  if (P == 0) fail(path, "no vertices (no 'v' lines): not an OBJ mesh");
+  if (info.triangles == 0)
+    fail(path, "no triangles (" + std::to_string(P) + " vertices but no faces, 'f' lines)");
+  if (N == 0) fail(path, "no normals ('vn' lines); the scene needs a position, normal and uv per vertex");
+  if (T == 0) fail(path, "no texture coordinates ('vt' lines); the scene needs a position, normal and uv per vertex");
+  if (P > UINT32_MAX / 2) fail(path, "too many vertices (" + std::to_string(P) + ")");
+  checkFinite(path, attrib.vertices, 3, "vertex");
+  checkFinite(path, attrib.normals, 3, "normal");
+  checkFinite(path, attrib.texcoords, 2, "texture coordinate");
+
+  // Validate every corner, and find out whether v/vt/vn share one index throughout.
+  bool shared = (P == T && P == N);
+  size_t face = 0;
+  // tinyobjloader gives -1 for an absent vt or vn index (a v index is never absent).
+  auto checkIndex = [&](int idx, size_t count, const char* what, const char* countWhat, bool mayBeAbsent) {
+    if (idx == -1 && mayBeAbsent)
+      fail(path, "face " + std::to_string(face) + " has no " + what + " index (every corner must be v/vt/vn)");
+    if (idx < 0)
+      fail(path, "face " + std::to_string(face) + " uses a relative " + what + " index that points before the first " + what);
+    if (size_t(idx) >= count)
+      fail(path, "face " + std::to_string(face) + " uses " + what + " " + std::to_string(size_t(idx) + 1) +
+                     " but the file has " + std::to_string(count) + " " + countWhat);
+  };
+  for (const tinyobj::shape_t& shape : shapes) {
+    size_t corner = 0;
+    for (unsigned char nv : shape.mesh.num_face_vertices) {
+      ++face;
+      for (unsigned c = 0; c < nv; ++c, ++corner) {
+        const tinyobj::index_t& ix = shape.mesh.indices[corner];
+        checkIndex(ix.vertex_index, P, "vertex", "vertices", false);
+        checkIndex(ix.texcoord_index, T, "texture coordinate", "texture coordinates ('vt' lines)", true);
+        checkIndex(ix.normal_index, N, "normal", "normals ('vn' lines)", true);
+        if (ix.vertex_index != ix.texcoord_index || ix.vertex_index != ix.normal_index) shared = false;
+      }
+    }
+  }
+  info.sharedIndices = shared;
+
+  MeshData mesh;
+  mesh.strideFloats = 8;
+  mesh.attributes = {{0, 3, 0}, {1, 3, 3}, {2, 2, 6}};
+  mesh.indices.reserve(info.triangles * 3);
+
+  auto pushVertex = [&](int v, int vt, int vn) {
+    mesh.vertices.push_back(static_cast<float>(attrib.vertices[3 * size_t(v) + 0]));
+    mesh.vertices.push_back(static_cast<float>(attrib.vertices[3 * size_t(v) + 1]));
+    mesh.vertices.push_back(static_cast<float>(attrib.vertices[3 * size_t(v) + 2]));
+    mesh.vertices.push_back(static_cast<float>(attrib.normals[3 * size_t(vn) + 0]));
+    mesh.vertices.push_back(static_cast<float>(attrib.normals[3 * size_t(vn) + 1]));
+    mesh.vertices.push_back(static_cast<float>(attrib.normals[3 * size_t(vn) + 2]));
+    mesh.vertices.push_back(static_cast<float>(attrib.texcoords[2 * size_t(vt) + 0]));
+    mesh.vertices.push_back(static_cast<float>(attrib.texcoords[2 * size_t(vt) + 1]));
+  };
+
+  // Per corner, the output vertex index; then faces are fanned (0, k, k + 1) in file order.
+  std::vector<uint32_t> cornerVertex;
+  if (shared) {
+    mesh.vertices.reserve(P * 8);
+    for (size_t i = 0; i < P; ++i) pushVertex(int(i), int(i), int(i));
+  }
+  std::unordered_map<std::array<int, 3>, uint32_t, TripleHash> seen;
+  for (const tinyobj::shape_t& shape : shapes) {
+    cornerVertex.clear();
+    for (const tinyobj::index_t& ix : shape.mesh.indices) {
+      if (shared) {
+        cornerVertex.push_back(uint32_t(ix.vertex_index));
+        continue;
+      }
+      const std::array<int, 3> key{ix.vertex_index, ix.texcoord_index, ix.normal_index};
+      auto [it, inserted] = seen.try_emplace(key, uint32_t(mesh.vertices.size() / 8));
+      if (inserted) pushVertex(ix.vertex_index, ix.texcoord_index, ix.normal_index);
+      cornerVertex.push_back(it->second);
+    }
+    size_t corner = 0;
+    for (unsigned char nv : shape.mesh.num_face_vertices) {
+      for (unsigned k = 1; k + 1 < nv; ++k) {
+        mesh.indices.push_back(cornerVertex[corner]);
+        mesh.indices.push_back(cornerVertex[corner + k]);
+        mesh.indices.push_back(cornerVertex[corner + k + 1]);
+      }
+      corner += nv;
+    }
+  }
+
+  // upload_cat's normalisation, in float: centre x/z, min y at 0, height 2.2.
+  const size_t count = mesh.vertices.size() / 8;
+  glm::vec3 bmin(1.0e30f), bmax(-1.0e30f);
+  for (size_t i = 0; i < count; ++i) {
+    const glm::vec3 p(mesh.vertices[i * 8 + 0], mesh.vertices[i * 8 + 1], mesh.vertices[i * 8 + 2]);
+    bmin = glm::min(bmin, p);
+    bmax = glm::max(bmax, p);
+  }
+  const glm::vec3 center = (bmin + bmax) * 0.5f;
+  const float s = 2.2f / std::max(bmax.y - bmin.y, 0.001f);
+  for (size_t i = 0; i < count; ++i) {
+    float* v = &mesh.vertices[i * 8];
+    v[0] = (v[0] - center.x) * s;
+    v[1] = (v[1] - bmin.y) * s;
+    v[2] = (v[2] - center.z) * s;
+  }
+
+  if (infoOut) *infoOut = info;
+  return mesh;
+}
+
+// ---- images ---------------------------------------------------------------------------------------
+
+ImageRgba8 loadImageRgba8(const std::string& path) {
+  const std::string data = readAssetFile(path);
+  const bool jpeg = isJpeg(data), png = isPng(data);
+  if (!jpeg && !png) {
+    int w, h, c;
+    std::string why = "stb_image: unknown image type";
+    if (data.size() <= size_t(INT_MAX) && !stbi_info_from_memory(bytesOf(data), int(data.size()), &w, &h, &c))
+      why = stbReason();
+    fail(path, "not a readable JPEG/PNG image (it starts with bytes " + hexBytes(data, 4) +
+                   ", which is neither a JPEG nor a PNG signature; " + why + ")");
+  }
+  const char* kind = jpeg ? "JPEG" : "PNG";
+  if (data.size() > size_t(INT_MAX)) fail(path, "file too large for stb_image");
+  long headerW = -1, headerH = -1;
+  const std::string problem =
+      jpeg ? jpegStructureProblem(data, &headerW, &headerH) : pngStructureProblem(data, &headerW, &headerH);
+  if (!problem.empty()) fail(path, problem);
+  // Refuse an absurd size before decoding (a zero JPEG height is stb_image's to refuse).
+  if (headerW > kMaxImageSide || headerH > kMaxImageSide) checkImageSize(path, headerW, headerH);
+
+  int w = 0, h = 0, c = 0;
+  stbi_set_flip_vertically_on_load_thread(0);  // the tutorial's loader: rows as in the file
+  stbi_uc* pixels = stbi_load_from_memory(bytesOf(data), int(data.size()), &w, &h, &c, 4);
+  if (!pixels) fail(path, std::string("not a readable ") + kind + " image (" + stbReason() + ")");
+  if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide) {
+    stbi_image_free(pixels);
+    checkImageSize(path, w, h);
+  }
+  ImageRgba8 image;
+  image.width = w;
+  image.height = h;
+  image.pixels.assign(pixels, pixels + size_t(w) * size_t(h) * 4);
+  stbi_image_free(pixels);
+  return image;
+}
+
+std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths) {
+  std::vector<ImageRgba8> images(paths.size());
+  std::vector<std::exception_ptr> errors(paths.size());
+  tbb::parallel_for(size_t(0), paths.size(), [&](size_t i) {
+    try {
+      images[i] = loadImageRgba8(paths[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return images;
+}
+
+ImageRgbFloat loadHdrRgb(const std::string& path) {
+  const std::string data = readAssetFile(path);
+  size_t pos = 0;
+  std::string line;
+  hdrLine(data, pos, line);
+  const bool terminated = pos <= data.size() && pos > 0 && data[pos - 1] == '\n';
+  if (!terminated || (line != "#?RADIANCE" && line != "#?RGBE"))
+    fail(path, "not a Radiance HDR file (it does not start with the line #?RADIANCE; it starts with " +
+                   (looksLikeText(line) ? quoteForMessage(line) : "bytes " + hexBytes(data, 4)) + ")");
+  bool formatOk = false, endOfHeader = false;
+  std::string otherFormat;
+  while (hdrLine(data, pos, line)) {
+    if (line.empty()) {
+      endOfHeader = true;
+      break;
+    }
+    if (line == "FORMAT=32-bit_rle_rgbe") formatOk = true;
+    else if (line.rfind("FORMAT=", 0) == 0) otherFormat = line.substr(7);
+  }
+  if (!endOfHeader) fail(path, "truncated (the file ends inside its header, before the blank line and the resolution line)");
+  if (!formatOk)
+    fail(path, otherFormat.empty()
+                   ? "not a Radiance HDR file stb_image can read (its header has no FORMAT=32-bit_rle_rgbe line)"
+                   : "not a Radiance HDR file stb_image can read (FORMAT is " + quoteForMessage(otherFormat) +
+                         ", expected 32-bit_rle_rgbe)");
+  if (!hdrLine(data, pos, line)) fail(path, "truncated (the file ends before its resolution line)");
+  // As stb_image parses it: "-Y <height> +X <width>".
+  const char* t = line.c_str();
+  char* end = nullptr;
+  long h = -1, w = -1;
+  bool layoutOk = std::strncmp(t, "-Y ", 3) == 0;
+  if (layoutOk) {
+    h = std::strtol(t + 3, &end, 10);
+    while (*end == ' ') ++end;
+    layoutOk = std::strncmp(end, "+X ", 3) == 0;
+    if (layoutOk) w = std::strtol(end + 3, nullptr, 10);
+  }
+  if (!layoutOk)
+    fail(path, "not a Radiance HDR file stb_image can read (resolution line " + quoteForMessage(line) +
+                   " is not '-Y <height> +X <width>')");
+  if (w <= 0 || h <= 0)
+    fail(path, "not a readable Radiance HDR file (resolution line " + quoteForMessage(line) + " gives a size of " +
+                   std::to_string(w) + "x" + std::to_string(h) + ")");
+  checkImageSize(path, w, h);
+  const std::string problem = hdrDataProblem(data, pos, int(w), int(h));
+  if (!problem.empty()) fail(path, problem);
+  if (data.size() > size_t(INT_MAX)) fail(path, "file too large for stb_image");
+
+  stbi_set_flip_vertically_on_load_thread(0);
+  int x = 0, y = 0, comp = 0;
+  float* pixels = stbi_loadf_from_memory(bytesOf(data), int(data.size()), &x, &y, &comp, 3);
+  if (!pixels) fail(path, "not a readable Radiance HDR file (" + stbReason() + ")");
+  if (x != w || y != h) {
+    stbi_image_free(pixels);
+    fail(path, "not a readable Radiance HDR file (stb_image decoded " + std::to_string(x) + "x" + std::to_string(y) +
+                   ", the header says " + std::to_string(w) + "x" + std::to_string(h) + ")");
+  }
+  ImageRgbFloat image;
+  image.width = x;
+  image.height = y;
+  image.pixels.assign(pixels, pixels + size_t(x) * size_t(y) * 3);
+  stbi_image_free(pixels);
+  return image;
+}
+
+}  // namespace scenes

@@ -1,0 +1,19 @@
+#version 330 core
+// Deferred, geometry pass: world position, normal and uv for the G-buffer.
+uniform mat4 u_model;
+uniform mat4 u_view;
+uniform mat4 u_proj;
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+out vec3 gv_world_pos;
+out vec3 gv_world_normal;
+out vec2 gv_uv;
+
+void main() {
+    vec4 world = u_model * vec4(a_pos, 1.0);
+    gv_world_pos = world.xyz;
+    gv_world_normal = normalize((u_model * vec4(a_normal, 0.0)).xyz);
+    gv_uv = a_uv;
+    gl_Position = u_proj * u_view * world;
+}

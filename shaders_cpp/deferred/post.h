@@ -1,0 +1,22 @@
+// C++ port of post.vert, the fullscreen pass vertex shader the SSAO and lighting passes share.
+#pragma once
+
+#include "raster/pipeline/program.h"
+
+namespace shaders::deferred {
+
+using namespace raster::glsl;
+
+template <class F>
+struct PostVaryings {
+  vec2<F> l_uv;
+};
+
+template <class F>
+void post_vs(const raster::VertexInput<F>& in, vec4<F>& gl_Position, PostVaryings<F>& out) {
+  const vec2<F> q_pos = in.attribute[0].xy();
+  gl_Position = vec4<F>(q_pos.x, q_pos.y, F(0.0f), F(1.0f));
+  out.l_uv = q_pos * F(0.5f) + vec2<F>(F(0.5f), F(0.5f));
+}
+
+}  // namespace shaders::deferred

@@ -1,0 +1,99 @@
+// C++ port of post.vert / ssao.frag (10 - Deferred Shading, SSAO pass), line by line.
+// Per-lane branches run under masks: both sides are computed and select() keeps the one
+// GLSL would take, which gives the same values lane by lane.
+#pragma once
+
+#include "raster/pipeline/program.h"
+#include "shaders_cpp/deferred/post.h"
+
+namespace shaders::deferred {
+
+using namespace raster::glsl;
+
+struct SsaoPass {
+  static constexpr const char* kName = "deferred/post+ssao";
+  static constexpr int kColorOutputs = 1;
+  struct Uniforms {
+    glm::mat4 u_view{1.0f};
+    glm::mat4 u_proj{1.0f};
+    raster::Sampler2D ssao_g_normal, ssao_g_worldpos;
+  };
+  static constexpr auto kUniformTable = std::tuple{
+      raster::uniform("u_view", &Uniforms::u_view),
+      raster::uniform("u_proj", &Uniforms::u_proj),
+      raster::uniform("ssao_g_normal", &Uniforms::ssao_g_normal),
+      raster::uniform("ssao_g_worldpos", &Uniforms::ssao_g_worldpos),
+  };
+
+  template <class F>
+  using Varyings = PostVaryings<F>;
+
+  template <class F>
+  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
+    post_vs(in, gl_Position, out);
+  }
+
+  static constexpr int SSAO_K = 16;
+  static constexpr float SSAO_RADIUS = 0.6f;
+  static constexpr float SSAO_BIAS = 0.03f;
+  static constexpr float SSAO_STRENGTH = 1.7f;
+
+  template <class F>
+  static F smoothstep3(F a, F b, F x) {
+    const F t = clamp((x - a) / (b - a), F(0.0f), F(1.0f));
+    return t * t * (F(3.0f) - F(2.0f) * t);
+  }
+
+  template <class F>
+  static F hash21(vec2<F> p) {
+    const F v = sin(dot(p, vec2<F>(F(127.1f), F(311.7f)))) * F(43758.5453f);
+    return v - floor(v);
+  }
+
+  template <class F>
+  static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
+                       raster::FragmentOutput<F>& out) {
+    const vec2<F> l_uv = in.l_uv;
+    const vec3<F> n_raw = raster::texture(u.ssao_g_normal, l_uv).xyz();
+    F ao = F(1.0f);
+    const auto has_surface = dot(n_raw, n_raw) >= F(0.01f);
+    if (any(has_surface)) {
+      const vec3<F> n = normalize(n_raw);
+      const vec3<F> p = raster::texture(u.ssao_g_worldpos, l_uv).xyz();
+      const F cur_vz = (u.u_view * vec4<F>(p, F(1.0f))).z;
+
+      vec3<F> up = vec3<F>(F(0.0f), F(1.0f), F(0.0f));
+      up = select(abs(n.y) > F(0.95f), vec3<F>(F(1.0f), F(0.0f), F(0.0f)), up);
+      const vec3<F> tangent = normalize(cross(up, n));
+      const vec3<F> bitangent = cross(n, tangent);
+      const F ang0 = hash21(l_uv * F(1024.0f)) * F(6.2831853f);
+
+      F occ = F(0.0f);
+      for (int i = 0; i < SSAO_K; i++) {
+        // Constant per unrolled iteration: folded by the GLSL compiler in float.
+        const float fi = (float(i) + 0.5f) / float(SSAO_K);
+        const F ang = ang0 + F(float(i) * 2.3998277f);
+        const float rr = SSAO_RADIUS * std::sqrt(fi);
+        const vec3<F> off = (cos(ang) * tangent + sin(ang) * bitangent) * F(rr) + n * F(rr * 0.5f);
+        const vec3<F> sp = p + off;
+        const vec4<F> clip = u.u_proj * (u.u_view * vec4<F>(sp, F(1.0f)));
+        const F wv = max(clip.w, F(0.0001f));
+        const vec2<F> suv = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
+        const vec3<F> stored_p = raster::texture(u.ssao_g_worldpos, suv).xyz();
+        const vec3<F> stored_n = raster::texture(u.ssao_g_normal, suv).xyz();
+        const F stored_vz = (u.u_view * vec4<F>(stored_p, F(1.0f))).z;
+        const F sample_vz = (u.u_view * vec4<F>(sp, F(1.0f))).z;
+        const F range_check = smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / max(abs(cur_vz - stored_vz), F(0.0001f)));
+        // view looks down -Z: a stored surface closer to the camera (greater z) occludes
+        const auto occludes = (clip.w > F(0.0f)) & (suv.x >= F(0.0f)) & (suv.x <= F(1.0f)) & (suv.y >= F(0.0f)) &
+                              (suv.y <= F(1.0f)) & (dot(stored_n, stored_n) > F(0.01f)) &
+                              (stored_vz >= sample_vz + F(SSAO_BIAS));
+        occ = select(occludes, occ + range_check, occ);
+      }
+      ao = select(has_surface, clamp(F(1.0f) - F(SSAO_STRENGTH) * occ / F(float(SSAO_K)), F(0.0f), F(1.0f)), ao);
+    }
+    out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));
+  }
+};
+
+}  // namespace shaders::deferred

@@ -1,0 +1,49 @@
+// C++ port of post.vert / down.frag (11 - HDR + Bloom, pass 3: the 5-tap downsample), line
+// by line. The offsets -o.x, -o.y negate a uniform: exact, wherever it is computed.
+// lt + rt + lb + rb: Mesa's compiler rebalances the chain ((lt + rt) + lb) + rb into
+// (lt + rt) + (lb + rb) (most likely GLSL IR's opt_rebalance_tree), so the port adds in that
+// order. Measured: a + b + c + d of four varyings is (a + b) + (c + d) in 4096 of 4096 cases.
+#pragma once
+
+#include "raster/pipeline/program.h"
+#include "shaders_cpp/hdr/post.h"
+
+namespace shaders::hdr {
+
+using namespace raster::glsl;
+
+struct DownPass {
+  static constexpr const char* kName = "hdr/post+down";
+  static constexpr int kColorOutputs = 1;
+  struct Uniforms {
+    raster::Sampler2D src0;           // the larger mip (texture unit 0)
+    glm::vec2 u_src_rcp{0.0f};        // 1 / source-mip size, the sample offset
+  };
+  static constexpr auto kUniformTable = std::tuple{
+      raster::uniform("src0", &Uniforms::src0),
+      raster::uniform("u_src_rcp", &Uniforms::u_src_rcp),
+  };
+
+  template <class F>
+  using Varyings = PostVaryings<F>;
+
+  template <class F>
+  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
+    post_vs(in, gl_Position, out);
+  }
+
+  template <class F>
+  static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
+                       raster::FragmentOutput<F>& out) {
+    const glm::vec2 o = u.u_src_rcp;
+    const vec3<F> c = raster::texture(u.src0, in.v_uv).xyz();
+    const vec3<F> lt = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, -o.y)).xyz();
+    const vec3<F> rt = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, -o.y)).xyz();
+    const vec3<F> lb = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, o.y)).xyz();
+    const vec3<F> rb = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, o.y)).xyz();
+    const vec3<F> sum = c * F(0.5f) + ((lt + rt) + (lb + rb)) * F(0.125f);
+    out.color[0] = vec4<F>(sum, F(1.0f));
+  }
+};
+
+}  // namespace shaders::hdr

@@ -1,0 +1,24 @@
+// C++ port of post.vert (11 - HDR + Bloom, post_vs), the fullscreen-triangle vertex shader
+// the bright, down, up and composite passes share.
+
+#pragma once
+
+#include "raster/pipeline/program.h"
+
+namespace shaders::hdr {
+
+using namespace raster::glsl;
+
+template <class F>
+struct PostVaryings {
+  vec2<F> v_uv;
+};
+
+template <class F>
+void post_vs(const raster::VertexInput<F>& in, vec4<F>& gl_Position, PostVaryings<F>& out) {
+  const vec2<F> q_pos = in.attribute[0].xy();
+  gl_Position = vec4<F>(q_pos.x, q_pos.y, F(0.0f), F(1.0f));
+  out.v_uv = q_pos * F(0.5f) + vec2<F>(F(0.5f), F(0.5f));
+}
+
+}  // namespace shaders::hdr

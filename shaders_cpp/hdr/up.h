@@ -1,0 +1,54 @@
+// C++ port of post.vert / up.frag (11 - HDR + Bloom, pass 4: the 9-tap tent upsample), line
+// by line. The weights 1.0 / 16.0, 2.0 / 16.0, 4.0 / 16.0 are folded constants (exact).
+// Each four-tap sum a + b + c + d is rebalanced by Mesa's compiler into (a + b) + (c + d)
+// (see down.h), so the port adds in that order.
+#pragma once
+
+#include "raster/pipeline/program.h"
+#include "shaders_cpp/hdr/post.h"
+
+namespace shaders::hdr {
+
+using namespace raster::glsl;
+
+struct UpPass {
+  static constexpr const char* kName = "hdr/post+up";
+  static constexpr int kColorOutputs = 1;
+  struct Uniforms {
+    raster::Sampler2D src0;           // the smaller mip (texture unit 0)
+    glm::vec2 u_src_rcp{0.0f};        // 1 / source-mip size, the sample offset
+  };
+  static constexpr auto kUniformTable = std::tuple{
+      raster::uniform("src0", &Uniforms::src0),
+      raster::uniform("u_src_rcp", &Uniforms::u_src_rcp),
+  };
+
+  template <class F>
+  using Varyings = PostVaryings<F>;
+
+  template <class F>
+  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
+    post_vs(in, gl_Position, out);
+  }
+
+  template <class F>
+  static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
+                       raster::FragmentOutput<F>& out) {
+    const glm::vec2 o = u.u_src_rcp;
+    const vec3<F> s00 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, -o.y)).xyz();
+    const vec3<F> s10 = raster::texture(u.src0, in.v_uv + glm::vec2(0.0f, -o.y)).xyz();
+    const vec3<F> s20 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, -o.y)).xyz();
+    const vec3<F> s01 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, 0.0f)).xyz();
+    const vec3<F> s11 = raster::texture(u.src0, in.v_uv).xyz();
+    const vec3<F> s21 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, 0.0f)).xyz();
+    const vec3<F> s02 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, o.y)).xyz();
+    const vec3<F> s12 = raster::texture(u.src0, in.v_uv + glm::vec2(0.0f, o.y)).xyz();
+    const vec3<F> s22 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, o.y)).xyz();
+    const vec3<F> tent = (((s00 + s20) + (s02 + s22)) * F(1.0f / 16.0f) +
+                          ((s10 + s01) + (s21 + s12)) * F(2.0f / 16.0f) +
+                          s11 * F(4.0f / 16.0f));
+    out.color[0] = vec4<F>(tent, F(1.0f));
+  }
+};
+
+}  // namespace shaders::hdr

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "raster/util/cycles.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
 
@@ -44,6 +45,31 @@ double renderOnce(Contender& c, float time) {
   c.scene->renderFrame(*c.backend, time);
   c.backend->finish();
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Where this pipeline's time goes, per frame: stages in milliseconds of CPU time (the tile
+// stages summed over threads), and the counters that explain them.
+void printBreakdown(const std::vector<std::pair<std::string, double>>& stats, int frames, double cyclesPerMs,
+                    int pixels) {
+  auto get = [&](const std::string& name) {
+    for (const auto& [key, value] : stats)
+      if (key == name) return value / frames;
+    return 0.0;
+  };
+  const char* stages[][2] = {{"vertex shading", "cycles_vertex"},         {"clip + setup", "cycles_clip_setup"},
+                             {"binning", "cycles_bin"},                   {"rasterization", "cycles_raster"},
+                             {"fragment shading", "cycles_fragment_shading"}, {"output merge", "cycles_output_merge"}};
+  double total = 0;
+  for (const auto& stage : stages) total += get(stage[1]);
+  std::printf("per frame, this pipeline (CPU ms, tile stages summed over threads):\n");
+  for (const auto& stage : stages)
+    std::printf("  %-18s %9.3f ms  %5.1f%%\n", stage[0], get(stage[1]) / cyclesPerMs, 100.0 * get(stage[1]) / total);
+  const double lanes = get("lanes_shaded"), covered = get("lanes_covered");
+  std::printf("  triangles in %.0f, rejected %.0f, clipped %.0f, set up %.0f, tile bin entries %.0f\n",
+              get("triangles_in"), get("triangles_rejected"), get("triangles_clipped"), get("triangles_set_up"),
+              get("tile_bin_entries"));
+  std::printf("  lane groups shaded %.0f, lanes %.0f, helper-lane share %.1f%%, shaded fragments per pixel %.2f\n",
+              get("lane_groups_shaded"), lanes, lanes > 0 ? 100.0 * (lanes - covered) / lanes : 0.0, covered / pixels);
 }
 
 }  // namespace
@@ -91,10 +117,17 @@ int runBench(const BenchArgs& args) {
                frame.width, frame.height, frame.time, threads, args.warmup, args.frames);
   for (int i = 0; i < args.warmup; ++i)
     for (Contender& c : contenders) renderOnce(c, frame.time);
+  contenders[0].backend->resetStatistics();
+  const uint64_t tscStart = raster::cycleCount();
+  const auto clockStart = std::chrono::steady_clock::now();
   for (int i = 0; i < args.frames; ++i) {
     for (Contender& c : contenders) c.timed.ms.push_back(renderOnce(c, frame.time));
     if ((i + 1) % 10 == 0 || i + 1 == args.frames) std::fprintf(stderr, "  %d/%d frames\n", i + 1, args.frames);
   }
+
+  const double elapsedMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - clockStart).count();
+  const double cyclesPerMs = double(raster::cycleCount() - tscStart) / elapsedMs;
+  printBreakdown(contenders[0].backend->statistics(), args.frames, cyclesPerMs, frame.width * frame.height);
 
   const double ratio = contenders[1].timed.median() / contenders[0].timed.median();
   for (const Contender& c : contenders)

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -126,7 +127,9 @@ class Backend {
   // The default framebuffer (handle 0): RGBA8 colour + 24-bit depth, width x height.
   virtual void resizeDefaultFramebuffer(int width, int height) = 0;
 
-  // `program` names shaders_cpp/<program>.vert and .frag, e.g. "shadow/main".
+  // `program` names shaders_cpp/<program>.vert and .frag, e.g. "shadow/main"; a vertex
+  // shader shared by several programs is named with '+': "deferred/post+ssao" is
+  // shaders_cpp/deferred/post.vert with shaders_cpp/deferred/ssao.frag.
   virtual Handle createProgram(const std::string& program) = 0;
   virtual Handle createMesh(const MeshData& mesh) = 0;
   // Pixels (top row last, as glTexImage2D takes them) may be empty: uninitialised storage.
@@ -149,9 +152,21 @@ class Backend {
   virtual ImageData readColor(Handle framebuffer, int attachment = 0) = 0;
   // Read back a framebuffer's depth buffer as integer codes.
   virtual ImageData readDepth(Handle framebuffer) = 0;
+
+  // Named counters of the work done since the last reset (the raster backend's pipeline
+  // counters and per-stage cycles; empty for GL, which does not expose them).
+  virtual std::vector<std::pair<std::string, double>> statistics() const { return {}; }
+  virtual void resetStatistics() {}
 };
 
 // Where the GLSL sources live: $RASTER_SOURCE_DIR/shaders_cpp, else the build's source dir.
 std::string shaderSourceDir();
+
+// The two GLSL files of a program name (see Backend::createProgram).
+struct ProgramFiles {
+  std::string vertex;
+  std::string fragment;
+};
+ProgramFiles programFiles(const std::string& program);
 
 }  // namespace scenes

@@ -113,9 +113,9 @@ class GlBackend : public Backend {
   }
 
   Handle createProgram(const std::string& program) override {
-    std::string base = shaderSourceDir() + "/" + program;
-    GLuint vertex = compileShader(GL_VERTEX_SHADER, base + ".vert");
-    GLuint fragment = compileShader(GL_FRAGMENT_SHADER, base + ".frag");
+    const ProgramFiles files = programFiles(program);
+    GLuint vertex = compileShader(GL_VERTEX_SHADER, files.vertex);
+    GLuint fragment = compileShader(GL_FRAGMENT_SHADER, files.fragment);
     GLuint id = glCreateProgram();
     glAttachShader(id, vertex);
     glAttachShader(id, fragment);
@@ -127,7 +127,7 @@ class GlBackend : public Backend {
     if (linked != GL_TRUE) {
       std::string log = infoLog(id, glGetProgramiv, glGetProgramInfoLog);
       glDeleteProgram(id);
-      throw std::runtime_error("GL backend: linking " + base + ".vert/.frag failed:\n" + log);
+      throw std::runtime_error("GL backend: linking " + files.vertex + " and " + files.fragment + " failed:\n" + log);
     }
     checkGl("createProgram");
     return Handle(id);

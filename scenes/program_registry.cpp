@@ -6,10 +6,21 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "shaders_cpp/deferred/gbuffer.h"
+#include "shaders_cpp/deferred/lighting.h"
+#include "shaders_cpp/deferred/shadow.h"
+#include "shaders_cpp/deferred/ssao.h"
+#include "shaders_cpp/hdr/bright.h"
+#include "shaders_cpp/hdr/composite.h"
+#include "shaders_cpp/hdr/down.h"
+#include "shaders_cpp/hdr/scene.h"
+#include "shaders_cpp/hdr/up.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 #include "shaders_cpp/test/derivatives.h"
+#include "shaders_cpp/test/instanced.h"
 #include "shaders_cpp/test/color_lookup.h"
+#include "shaders_cpp/test/math_probe.h"
 #include "shaders_cpp/test/passthrough.h"
 #include "shaders_cpp/test/shadow_lookup.h"
 
@@ -79,10 +90,21 @@ std::unique_ptr<BoundProgram> makeBoundProgram(const std::string& name) {
   static const std::map<std::string, std::function<std::unique_ptr<BoundProgram>()>> registry = {
       entry<shaders::shadow::ShadowPass>(),
       entry<shaders::shadow::MainPass>(),
+      entry<shaders::deferred::ShadowPass>(),
+      entry<shaders::deferred::GBufferPass>(),
+      entry<shaders::deferred::SsaoPass>(),
+      entry<shaders::deferred::LightingPass>(),
+      entry<shaders::hdr::ScenePass>(),
+      entry<shaders::hdr::BrightPass>(),
+      entry<shaders::hdr::DownPass>(),
+      entry<shaders::hdr::UpPass>(),
+      entry<shaders::hdr::CompositePass>(),
       entry<shaders::test::Passthrough>(),
       entry<shaders::test::ColorLookup>(),
       entry<shaders::test::Derivatives>(),
+      entry<shaders::test::Instanced>(),
       entry<shaders::test::ShadowLookup>(),
+      entry<shaders::test::MathProbe>(),
   };
   const auto it = registry.find(name);
   if (it == registry.end()) throw std::runtime_error("no C++ port of shader program " + name);

@@ -18,4 +18,12 @@ std::string shaderSourceDir() {
   return std::string(root != nullptr && *root != '\0' ? root : RASTER_SOURCE_DIR) + "/shaders_cpp";
 }
 
+ProgramFiles programFiles(const std::string& program) {
+  const std::string base = shaderSourceDir() + "/" + program;
+  const size_t plus = base.find('+');
+  if (plus == std::string::npos) return {base + ".vert", base + ".frag"};
+  const size_t slash = base.rfind('/', plus);
+  return {base.substr(0, plus) + ".vert", base.substr(0, slash + 1) + base.substr(plus + 1) + ".frag"};
+}
+
 }  // namespace scenes

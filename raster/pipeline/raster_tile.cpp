@@ -9,6 +9,7 @@
 
 #include "raster/format/conversions.h"
 #include "raster/pipeline/output_merge.h"
+#include "raster/util/cycles.h"
 
 namespace raster {
 namespace {
@@ -141,9 +142,9 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
     }
   }
   if (!laneMask) return;
-  counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
   const int outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
   if (outputs == 0) return;   // depth-only: the colour the shader would write is discarded
+  counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
 
   // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
   const F w = evaluatePlane(tri.w, px, py);
@@ -158,11 +159,15 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
   in.gl_FrontFacing = tri.frontFacing;
   FragmentOutput<F> out;
+  const uint64_t shadeStart = cycleCount();
   draw.shader->shadeFragments(in, varyings, out);
+  const uint64_t mergeStart = cycleCount();
+  counters.shadeCycles += mergeStart - shadeStart;
   counters.laneGroupsShaded += 1;
   counters.lanesShaded += kLanes;
 
   for (int k = 0; k < outputs; ++k) writeColorOutput(*fb.colors[k], out.color[k], texel, laneMask, state.blendAdditive);
+  counters.mergeCycles += cycleCount() - mergeStart;
 }
 
 }  // namespace
@@ -174,6 +179,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   const int tileX0 = tileX * kTileSize, tileY0 = tileY * kTileSize;
   const int tileX1 = std::min(tileX0 + kTileSize, fb.width) - 1;
   const int tileY1 = std::min(tileY0 + kTileSize, fb.height) - 1;
+  const uint64_t tileStart = cycleCount(), shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
 
   for (uint32_t index : bin) {
     const SetupTriangle& tri = job.triangles[index];
@@ -196,6 +202,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
       }
     }
   }
+  counters.rasterCycles += (cycleCount() - tileStart) - (counters.shadeCycles - shadeBefore) - (counters.mergeCycles - mergeBefore);
 }
 
 template void rasterizeTile<FastLanes>(const TileJob&, int, int, std::span<const uint32_t>, PipelineCounters&);

@@ -8,6 +8,7 @@
 #include "raster/format/conversions.h"
 #include "raster/pipeline/clip.h"
 #include "raster/pipeline/raster_tile.h"
+#include "raster/util/cycles.h"
 
 namespace raster {
 
@@ -20,6 +21,12 @@ PipelineCounters& PipelineCounters::operator+=(const PipelineCounters& o) {
   laneGroupsShaded += o.laneGroupsShaded;
   lanesShaded += o.lanesShaded;
   lanesCovered += o.lanesCovered;
+  vertexCycles += o.vertexCycles;
+  setupCycles += o.setupCycles;
+  binCycles += o.binCycles;
+  rasterCycles += o.rasterCycles;
+  shadeCycles += o.shadeCycles;
+  mergeCycles += o.mergeCycles;
   return *this;
 }
 
@@ -82,6 +89,7 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
                               std::to_string(vertices.vertexCount) + " vertices)");
 
   // Vertex shading: every vertex of the buffer once per instance; instances in parallel.
+  const uint64_t vertexStart = cycleCount();
   ShadedVertices shaded;
   shaded.varyingFloats = varyingFloats;
   shaded.stride = vertex_stage::kVaryingOffset + varyingFloats;
@@ -91,6 +99,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   pool_.parallelFor(instanceCount, [&](int instance) {
     shader->shadeVertices(vertices, instance, instance * vertices.vertexCount, viewport_, shaded);
   });
+
+  const uint64_t setupStart = cycleCount();
+  counters_.vertexCycles += setupStart - vertexStart;
 
   // Primitive assembly, clipping and setup, in API order.
   SetupState setup;
@@ -132,7 +143,10 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
     }
   }
   draws_.push_back(RecordedDraw{std::move(shader), state});
+  const uint64_t binStart = cycleCount();
+  counters_.setupCycles += binStart - setupStart;
   bin(firstTriangle);
+  counters_.binCycles += cycleCount() - binStart;
 }
 
 // Bins triangles [firstTriangle, end) into the tiles their bounds touch, skipping tiles

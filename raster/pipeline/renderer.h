@@ -75,7 +75,13 @@ struct PipelineCounters {
   uint64_t tileBinEntries = 0;     // (triangle, tile) pairs binned
   uint64_t laneGroupsShaded = 0;   // fragment-shader invocations (lane groups)
   uint64_t lanesShaded = 0;        // lanes in those groups (pixels + helpers)
-  uint64_t lanesCovered = 0;       // lanes that passed coverage and depth
+  uint64_t lanesCovered = 0;       // shaded lanes that passed coverage and depth (the rest are helpers)
+  // Time-stamp-counter cycles per stage. Vertex shading, clip + setup and binning run on
+  // the calling thread (vertex shading's cycles are its wall time); the tile stages are
+  // summed over every thread: raster = coverage, depth and interpolation; shade = the
+  // fragment shader; merge = colour conversion and writes.
+  uint64_t vertexCycles = 0, setupCycles = 0, binCycles = 0;
+  uint64_t rasterCycles = 0, shadeCycles = 0, mergeCycles = 0;
   PipelineCounters& operator+=(const PipelineCounters& o);
 };
 

@@ -86,6 +86,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   command->add_option("--gl-driver", args.glDriver, "GL driver to race: llvmpipe or softpipe")->capture_default_str();
   command->add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
   command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..1000000)")->capture_default_str();
   return command;
 }
 
@@ -102,7 +103,7 @@ int runBench(const BenchArgs& args) {
   setenv("GALLIUM_DRIVER", args.glDriver.c_str(), 1);
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
 
-  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets};
+  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
   Contender contenders[2];
   contenders[0].backend = scenes::makeRasterBackend(threads, frame.scalar);
   contenders[1].backend = scenes::makeGlBackend();

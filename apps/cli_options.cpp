@@ -29,6 +29,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
   command.add_option("--threads", args.threads,
                      "Threads of this pipeline and llvmpipe (LP_NUM_THREADS), 0..1024; 0: every core")
       ->type_name("N")->capture_default_str();
+  command.add_option("--instances", args.instances, "Cubes in the hdr scene (1..1000000)")->capture_default_str();
   command.add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
   command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
       ->type_name("DIR");
@@ -129,6 +130,9 @@ Frame validateFrame(const FrameArgs& args) {
                      std::to_string(kMaxThreads) + ")");
   frame.threads = args.threads;
   frame.scalar = args.scalar;
+  if (args.instances < 1 || args.instances > 1000000)
+    throw UsageError("--instances: " + std::to_string(args.instances) + " is out of range (1..1000000)");
+  frame.instances = args.instances;
 
   if (!args.assets.empty() && !fs::is_directory(args.assets))
     throw UsageError("--assets: no such folder: " + args.assets);

@@ -28,6 +28,7 @@ struct FrameArgs {
   std::string size = "640x480";
   int threads = 0;             // 0: every core
   bool scalar = false;         // this pipeline with every SIMD fast path off
+  int instances = 1000;        // the hdr scene's cube count
   std::string assets;          // empty: the scene library's default
 };
 
@@ -51,6 +52,7 @@ struct Frame {
   int width = 0, height = 0;
   int threads = 0;
   bool scalar = false;
+  int instances = 1000;
   std::string assets;
 };
 

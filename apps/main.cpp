@@ -59,7 +59,7 @@ std::string sizeAndTime(const Frame& frame) {
 
 // Renders one frame with a backend made in this process ("raster" or "gl").
 Side renderInProcess(const Frame& frame, const std::string& backendKind) {
-  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets};
+  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
   std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, options);
   std::unique_ptr<scenes::Backend> backend;
   if (backendKind == "raster") {
@@ -152,6 +152,7 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
                                    "--time", time, "--threads", std::to_string(frame.threads),
                                    "--dump", dump.path, "--out", dump.path + "/out.png"};
   if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
+  args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
 
   // The environment as it is, with GALLIUM_DRIVER replaced.
   std::vector<std::string> environment;

@@ -18,6 +18,7 @@ struct SceneOptions {
   int width = 640;        // final image size
   int height = 480;
   std::string assetDir;   // empty: the default (see assetDirectory())
+  int instances = 1000;   // the HDR scene's cube count (the seed's N_INSTANCES)
 };
 
 // One image the scene exposes for inspection and comparison.

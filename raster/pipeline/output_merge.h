@@ -23,6 +23,42 @@ void depthCodes(F z, TexelFormat format, uint32_t* codes) {
     codes[i] = format == TexelFormat::Depth24 ? format::depth24FromFloat(lanes[i]) : format::depth16FromFloat(lanes[i]);
 }
 
+// The depth test (LESS or LEQUAL on integer codes) of the covered lanes, and the depth
+// write of the lanes that pass. Returns the lanes that pass.
+template <int kLanes>
+unsigned depthTest(const uint32_t* codes, uint32_t* depth, const size_t* texel, unsigned laneMask, bool lessEqual,
+                   bool write) {
+  for (int i = 0; i < kLanes; ++i) {
+    if (!(laneMask >> i & 1u)) continue;
+    uint32_t& stored = depth[texel[i]];
+    const bool pass = lessEqual ? codes[i] <= stored : codes[i] < stored;
+    if (!pass) laneMask &= ~(1u << i);
+    else if (write) stored = codes[i];
+  }
+  return laneMask;
+}
+
+#if RASTER_AVX2
+// The same test for 8 lanes: one masked gather and one compare; only the writes are per lane.
+template <>
+inline unsigned depthTest<8>(const uint32_t* codes, uint32_t* depth, const size_t* texel, unsigned laneMask,
+                             bool lessEqual, bool write) {
+  const __m256i index = _mm256_setr_epi32(int(texel[0]), int(texel[1]), int(texel[2]), int(texel[3]), int(texel[4]),
+                                          int(texel[5]), int(texel[6]), int(texel[7]));
+  const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(laneMask)), _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128)),
+                                           _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128));
+  const __m256i stored = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(depth), index, lanes, 4);
+  const __m256i code = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(codes));
+  // Codes are below 2^24, so signed compares are exact. LESS: stored > code; LEQUAL: !(code > stored).
+  const __m256i pass = lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
+                                 : _mm256_cmpgt_epi32(stored, code);
+  laneMask &= unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(pass)));
+  if (write)
+    for (unsigned m = laneMask; m; m &= m - 1) depth[texel[__builtin_ctz(m)]] = codes[__builtin_ctz(m)];
+  return laneMask;
+}
+#endif
+
 // RGBA8 texels (r in the low byte, as stored in memory) per lane.
 template <class F>
 void packRgba8(const glsl::vec4<F>& color, uint32_t* texels) {
@@ -37,7 +73,49 @@ void packRgba8(const glsl::vec4<F>& color, uint32_t* texels) {
   }
 }
 
+// Writes the covered lanes' colours to RGBA16F texels (4 halves each, at texel[i] * 4):
+// the source converted toward zero, or with ONE/ONE blending the exact destination plus the
+// source in float32, converted once toward zero.
+template <class F>
+void writeHalfTexels(const glsl::vec4<F>& color, uint16_t* texels, const size_t* texel, unsigned laneMask, bool blend) {
+  alignas(32) float c[4][F::kCount];
+  color.x.store(c[0]);
+  color.y.store(c[1]);
+  color.z.store(c[2]);
+  color.w.store(c[3]);
+  for (int i = 0; i < F::kCount; ++i) {
+    if (!(laneMask >> i & 1u)) continue;
+    uint16_t* dst = texels + texel[i] * 4;
+    for (int ch = 0; ch < 4; ++ch) {
+      const float value = blend ? format::floatFromHalf(dst[ch]) + c[ch][i] : c[ch][i];
+      dst[ch] = format::halfFromFloatTowardZero(value);
+    }
+  }
+}
+
 #if RASTER_AVX2
+// F16C's vcvtps2ph with truncation is halfFromFloatTowardZero (tests/simd and format hold
+// them equal on every class of input); vcvtph2ps is exact.
+template <>
+inline void writeHalfTexels<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel,
+                                          unsigned laneMask, bool blend) {
+  // Planes -> one RGBA vector per lane: v[k] holds lane k in its low half, lane k + 4 high.
+  const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
+  const __m256 t2 = _mm256_unpacklo_ps(color.z.v, color.w.v), t3 = _mm256_unpackhi_ps(color.z.v, color.w.v);
+  const __m256 v[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
+                       _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};
+  for (int k = 0; k < 4; ++k) {
+    for (int half = 0; half < 2; ++half) {
+      const int lane = k + 4 * half;
+      if (!(laneMask >> lane & 1u)) continue;
+      uint16_t* dst = texels + texel[lane] * 4;
+      __m128 value = half ? _mm256_extractf128_ps(v[k], 1) : _mm256_castps256_ps128(v[k]);
+      if (blend) value = _mm_add_ps(_mm_cvtph_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(dst))), value);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(dst), _mm_cvtps_ph(value, _MM_FROUND_TO_ZERO));
+    }
+  }
+}
+
 template <>
 inline void depthCodes<simd::Float8>(simd::Float8 z, TexelFormat format, uint32_t* codes) {
   __m256i result;

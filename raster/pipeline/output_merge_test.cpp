@@ -67,4 +67,30 @@ TEST_SUITE("format") {
       }
     }
   }
+
+  TEST_CASE("RGBA16F writes and ONE/ONE blends: SIMD lanes equal the scalar conversion") {
+    const std::vector<float> values = interestingValues();
+    std::vector<float> extremes = {65504.0f, 65519.0f, 65520.0f, 70000.0f, -70000.0f, 1e-6f, -1e-7f, 6.1e-5f, 1.0007f};
+    std::mt19937 rng(5);
+    long compared = 0;
+    for (int round = 0; round < 2000; ++round) {
+      float lanes[4][8];
+      for (auto& channel : lanes)
+        for (float& x : channel) x = rng() % 4 == 0 ? extremes[rng() % extremes.size()] * float(rng() % 3) : values[rng() % values.size()] * 9.0f;
+      const bool blend = round % 2 == 1;
+      std::vector<uint16_t> fast(8 * 4), plain(8 * 4);
+      for (size_t i = 0; i < fast.size(); ++i) fast[i] = plain[i] = raster::format::halfFromFloatTowardZero(values[rng() % values.size()] * 70000.0f);
+      const size_t texel[8] = {3, 0, 7, 1, 6, 2, 5, 4};
+      const unsigned laneMask = unsigned(rng()) & 0xFFu;
+      raster::output_merge::writeHalfTexels(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
+                                                                          FastLanes::load(lanes[2]), FastLanes::load(lanes[3])),
+                                            fast.data(), texel, laneMask, blend);
+      raster::output_merge::writeHalfTexels(raster::glsl::vec4<Plain>(Plain::load(lanes[0]), Plain::load(lanes[1]),
+                                                                      Plain::load(lanes[2]), Plain::load(lanes[3])),
+                                            plain.data(), texel, laneMask, blend);
+      CHECK(fast == plain);
+      ++compared;
+    }
+    CHECK(compared == 2000);
+  }
 }

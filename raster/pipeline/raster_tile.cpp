@@ -64,7 +64,29 @@ struct LaneLayout {
   // Group g's origin inside the block: 8 lanes cover rows 0-1 then 2-3; 4 lanes one quad.
   static int originX(int g) { return kQuads == 2 ? 0 : (g & 1) * 2; }
   static int originY(int g) { return kQuads == 2 ? g * 2 : (g >> 1) * 2; }
+  // Lane mask of group g from the block's coverage (bit row * 4 + col).
+  unsigned laneMask(uint32_t coverage, int g) const {
+    unsigned mask = 0;
+    for (int i = 0; i < kLanes; ++i) {
+      const int row = originY(g) + dy[i], col = originX(g) + dx[i];
+      mask |= (coverage >> (row * kBlock + col) & 1u) << i;
+    }
+    return mask;
+  }
 };
+
+// laneMask() for every pair of block rows at once: a table from the rows' 8 coverage bits
+// (upper row in bits 0-3) to the 8 lanes of a group, one per orientation.
+struct RowPairLanes {
+  uint8_t lanes[2][256];
+  RowPairLanes() {
+    for (int flip = 0; flip < 2; ++flip) {
+      const LaneLayout<simd::Lanes<8>> layout(flip == 1);
+      for (unsigned bits = 0; bits < 256; ++bits) lanes[flip][bits] = uint8_t(layout.laneMask(bits, 0));
+    }
+  }
+};
+const RowPairLanes kRowPairLanes;
 
 template <class F>
 F evaluatePlane(const Plane& p, F px, F py) {
@@ -88,7 +110,9 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
         dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
       }
     }
-  } else {
+  } else if (target.format == TexelFormat::RGBA16F) {
+    output_merge::writeHalfTexels(color, target.half.data(), texel, laneMask, blendAdditive);
+  } else {   // RGBA32F, for tests
     alignas(32) float rgba[4][F::kCount];
     color.x.store(rgba[0]);
     color.y.store(rgba[1]);
@@ -96,16 +120,8 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
     color.w.store(rgba[3]);
     for (int i = 0; i < F::kCount; ++i) {
       if (!(laneMask >> i & 1u)) continue;
-      if (target.format == TexelFormat::RGBA32F) {
-        float* dst = &target.f32[texel[i] * 4];
-        for (int c = 0; c < 4; ++c) dst[c] = blendAdditive ? dst[c] + rgba[c][i] : rgba[c][i];
-        continue;
-      }
-      uint16_t* dst = &target.half[texel[i] * 4];
-      for (int c = 0; c < 4; ++c) {
-        const float value = blendAdditive ? format::floatFromHalf(dst[c]) + rgba[c][i] : rgba[c][i];
-        dst[c] = format::halfFromFloatTowardZero(value);
-      }
+      float* dst = &target.f32[texel[i] * 4];
+      for (int c = 0; c < 4; ++c) dst[c] = blendAdditive ? dst[c] + rgba[c][i] : rgba[c][i];
     }
   }
 }
@@ -133,13 +149,8 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   if (state.depthTest && fb.depth) {
     uint32_t codes[kLanes];
     output_merge::depthCodes(simd::min(simd::max(z, F(0.0f)), F(1.0f)), fb.depth->format, codes);
-    for (int i = 0; i < kLanes; ++i) {
-      if (!(laneMask >> i & 1u)) continue;
-      uint32_t& stored = fb.depth->depth[texel[i]];
-      const bool pass = state.depthFunc == DepthFunc::Less ? codes[i] < stored : codes[i] <= stored;
-      if (!pass) laneMask &= ~(1u << i);
-      else if (state.depthWrite) stored = codes[i];
-    }
+    laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), texel, laneMask,
+                                                state.depthFunc == DepthFunc::Lequal, state.depthWrite);
   }
   if (!laneMask) return;
   const int outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
@@ -192,11 +203,8 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
         if (!coverage) continue;
         for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
           const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
-          unsigned laneMask = 0;
-          for (int i = 0; i < F::kCount; ++i) {
-            const int row = gy - blockY + layout.dy[i], col = gx - blockX + layout.dx[i];
-            if (coverage >> (row * kBlock + col) & 1u) laneMask |= 1u << i;
-          }
+          const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
+                                                   : layout.laneMask(coverage, g);
           if (laneMask) shadeGroup(job, tri, draw, layout, gx, gy, laneMask, counters);
         }
       }

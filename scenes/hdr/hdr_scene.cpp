@@ -38,7 +38,6 @@
 namespace scenes {
 namespace {
 
-constexpr int N_INSTANCES = 1000;
 constexpr int BLOOM_MIPS = 5;
 constexpr float PI = 3.14159265358979323846f;
 
@@ -110,7 +109,7 @@ struct BloomChain {
 class HdrScene final : public Scene {
  public:
   explicit HdrScene(const SceneOptions& options)
-      : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)) {
+      : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)), N_INSTANCES(options.instances) {
     // bloom mip chain: mip i lives at (HDR >> (i+1)) -- mip 0 is half res, then halving.
     for (int i = 0; i < BLOOM_MIPS; ++i) {
       bloom_w_[size_t(i)] = std::max(HDR_W >> (i + 1), 1);
@@ -261,6 +260,7 @@ class HdrScene final : public Scene {
   }
 
   const int HDR_W, HDR_H;   // the HDR target: the scene's width x height (see the file header)
+  const int N_INSTANCES;    // 1000 in the seed; --instances scales the swarm for benchmarks
   std::array<int, BLOOM_MIPS> bloom_w_{}, bloom_h_{};
   Handle prog_scene_ = 0, prog_bright_ = 0, prog_down_ = 0, prog_up_ = 0, prog_composite_ = 0;
   Handle scene_mesh_ = 0, quad_ = 0;

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Side-by-side benchmarks of this pipeline against llvmpipe (and softpipe), all scenes.
+
+For every scene, size and thread count it runs `raster bench` (this pipeline and the GL
+driver alternating frame by frame in one process, medians compared), reads the
+machine-readable lines it prints, measures each backend's peak memory at 1920x1080 in
+separate processes, and writes:
+  bench/results/results.json   every figure
+  bench/results/results.md     the table
+  bench/results/frame_time.png frame time against pixel count, a line per backend, per scene
+Usage: bench/run_benchmarks.py [--quick] [--frames N] [--scenes shadow,deferred,hdr]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RASTER = os.path.join(ROOT, "build", "raster")
+OUT = os.path.join(ROOT, "bench", "results")
+SIZES = ["640x480", "1280x720", "1920x1080", "3840x2160"]
+LINE = re.compile(r"scene=(\S+) backend=(\S+) threads=(\d+) size=(\S+) median_ms=([\d.]+)")
+
+
+def run_bench(scene, size, threads, frames, driver="llvmpipe", extra=()):
+    """One `raster bench` run; returns {backend: median_ms} and the breakdown text."""
+    cmd = [RASTER, "bench", scene, "--size", size, "--threads", str(threads), "--frames", str(frames),
+           "--warmup", "2", "--gl-driver", driver, *extra]
+    result = subprocess.run(cmd, capture_output=True, text=True, check=True)
+    medians = {m.group(2): float(m.group(5)) for m in LINE.finditer(result.stdout)}
+    breakdown = "\n".join(l for l in result.stdout.splitlines() if l.startswith("  ") or l.startswith("per frame"))
+    return medians, breakdown
+
+
+def peak_memory_mb(scene, size, backend):
+    """Peak resident memory of one `raster render` process (this pipeline or GL)."""
+    cmd = [RASTER, "render", scene, "--size", size, "--backend", backend, "--out", os.devnull + ".png"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    return usage.ru_maxrss / 1024.0   # ru_maxrss is in KiB on Linux
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true", help="640x480 and 1920x1080 only, fewer frames")
+    parser.add_argument("--frames", type=int, default=15, help="timed frames per backend and configuration")
+    parser.add_argument("--scenes", default="shadow,deferred,hdr")
+    args = parser.parse_args()
+    if not os.path.exists(RASTER):
+        sys.exit("run_benchmarks: build/raster is missing; run ./setup.sh first")
+    sizes = ["640x480", "1920x1080"] if args.quick else SIZES
+    frames = max(3, args.frames // 2) if args.quick else args.frames
+    scenes = args.scenes.split(",")
+    os.makedirs(OUT, exist_ok=True)
+
+    results = {"frames": frames, "machine": os.uname().machine, "cores": os.cpu_count(), "runs": [], "memory_mb": {}}
+    jobs = [(s, size, t) for s in scenes for size in sizes for t in (1, 2)]
+    started = time.time()
+    for i, (scene, size, threads) in enumerate(jobs, 1):
+        print(f"[{i}/{len(jobs)}] {scene} {size} threads={threads} ({time.time() - started:.0f} s)", flush=True)
+        medians, breakdown = run_bench(scene, size, threads, frames)
+        results["runs"].append({"scene": scene, "size": size, "threads": threads, "medians_ms": medians,
+                                "breakdown": breakdown})
+    for scene in scenes:   # softpipe for scale, at 640x480
+        print(f"softpipe {scene} 640x480", flush=True)
+        medians, _ = run_bench(scene, "640x480", 2, max(3, frames // 3), driver="softpipe")
+        results["runs"].append({"scene": scene, "size": "640x480", "threads": 2, "medians_ms": medians,
+                                "driver": "softpipe"})
+        for backend in ("raster", "gl"):
+            results["memory_mb"].setdefault(scene, {})[backend] = peak_memory_mb(scene, "1920x1080", backend)
+
+    with open(os.path.join(OUT, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    write_table(results)
+    write_chart(results, scenes)
+    print(f"wrote {OUT}/results.json, results.md, frame_time.png")
+
+
+def write_table(results):
+    lines = ["| scene | size | threads | raster ms | llvmpipe ms | llvmpipe / raster | softpipe ms |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
+    for run in results["runs"]:
+        m = run["medians_ms"]
+        if run.get("driver") == "softpipe":
+            lines.append(f"| {run['scene']} | {run['size']} | {run['threads']} | {m['raster']:.2f} | | | {m['softpipe']:.2f} |")
+        else:
+            lines.append(f"| {run['scene']} | {run['size']} | {run['threads']} | {m['raster']:.2f} | "
+                         f"{m['llvmpipe']:.2f} | {m['llvmpipe'] / m['raster']:.2f} | |")
+    lines += ["", "Peak resident memory of one `raster render` process at 1920x1080 (MiB):", "",
+              "| scene | raster | GL (llvmpipe) |", "| --- | --- | --- |"]
+    for scene, mem in results["memory_mb"].items():
+        lines.append(f"| {scene} | {mem['raster']:.0f} | {mem['gl']:.0f} |")
+    with open(os.path.join(OUT, "results.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def write_chart(results, scenes):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        for backend, style in (("raster", "-o"), ("llvmpipe", "--s")):
+            for threads in (1, 2):
+                runs = [r for r in results["runs"] if r["scene"] == scene and r["threads"] == threads
+                        and r.get("driver") != "softpipe"]
+                pixels = [eval(r["size"].replace("x", "*")) / 1e6 for r in runs]
+                ax.plot(pixels, [r["medians_ms"][backend] for r in runs], style, label=f"{backend}, {threads} thr")
+        ax.set_title(scene)
+        ax.set_xlabel("megapixels")
+        ax.set_ylabel("median frame time (ms)")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, "frame_time.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()

@@ -39,23 +39,31 @@ unsigned depthTest(const uint32_t* codes, uint32_t* depth, const size_t* texel, 
 }
 
 #if RASTER_AVX2
-// The same test for 8 lanes: one masked gather and one compare; only the writes are per lane.
-template <>
-inline unsigned depthTest<8>(const uint32_t* codes, uint32_t* depth, const size_t* texel, unsigned laneMask,
-                             bool lessEqual, bool write) {
-  const __m256i index = _mm256_setr_epi32(int(texel[0]), int(texel[1]), int(texel[2]), int(texel[3]), int(texel[4]),
-                                          int(texel[5]), int(texel[6]), int(texel[7]));
-  const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(laneMask)), _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128)),
-                                           _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128));
-  const __m256i stored = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(depth), index, lanes, 4);
-  const __m256i code = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(codes));
+// The same test for an 8-lane group: two 2x2 quads side by side, i.e. two memory rows of 4
+// codes (rowTop at the group's first row, rowBottom the next). Masked row loads and stores
+// touch only covered lanes, so pixels past the framebuffer edge, or a neighbouring tile's,
+// are never read or written. `flipped`: the quads' rows are swapped (window-system buffers).
+inline unsigned depthTestRows(const uint32_t* codes, uint32_t* rowTop, uint32_t* rowBottom, unsigned laneMask,
+                              bool flipped, bool lessEqual, bool write) {
+  // Quad lane order <-> row-major order [top x..x+3 | bottom x..x+3].
+  const __m256i toRows = flipped ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+  const __m256i toQuads = flipped ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+  const __m256i covered = _mm256_permutevar8x32_epi32(
+      _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(laneMask)), bit), bit), toRows);
+  const __m256i code = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(codes)), toRows);
+  const __m128i maskTop = _mm256_castsi256_si128(covered), maskBottom = _mm256_extracti128_si256(covered, 1);
+  const __m256i stored = _mm256_setr_m128i(_mm_maskload_epi32(reinterpret_cast<const int*>(rowTop), maskTop),
+                                           _mm_maskload_epi32(reinterpret_cast<const int*>(rowBottom), maskBottom));
   // Codes are below 2^24, so signed compares are exact. LESS: stored > code; LEQUAL: !(code > stored).
-  const __m256i pass = lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
-                                 : _mm256_cmpgt_epi32(stored, code);
-  laneMask &= unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(pass)));
-  if (write)
-    for (unsigned m = laneMask; m; m &= m - 1) depth[texel[__builtin_ctz(m)]] = codes[__builtin_ctz(m)];
-  return laneMask;
+  const __m256i passes = lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
+                                   : _mm256_cmpgt_epi32(stored, code);
+  const __m256i pass = _mm256_and_si256(passes, covered);
+  if (write) {
+    _mm_maskstore_epi32(reinterpret_cast<int*>(rowTop), _mm256_castsi256_si128(pass), _mm256_castsi256_si128(code));
+    _mm_maskstore_epi32(reinterpret_cast<int*>(rowBottom), _mm256_extracti128_si256(pass, 1), _mm256_extracti128_si256(code, 1));
+  }
+  return unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_permutevar8x32_epi32(pass, toQuads))));
 }
 #endif
 

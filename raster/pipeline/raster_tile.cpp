@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/format/conversions.h"
 #include "raster/pipeline/output_merge.h"
@@ -149,8 +150,17 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   if (state.depthTest && fb.depth) {
     uint32_t codes[kLanes];
     output_merge::depthCodes(simd::min(simd::max(z, F(0.0f)), F(1.0f)), fb.depth->format, codes);
-    laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), texel, laneMask,
-                                                state.depthFunc == DepthFunc::Lequal, state.depthWrite);
+#if RASTER_AVX2
+    if constexpr (std::is_same_v<F, simd::Float8>) {
+      uint32_t* rowTop = fb.depth->depth.data() + size_t(gy) * size_t(fb.width) + size_t(gx);
+      laneMask = output_merge::depthTestRows(codes, rowTop, rowTop + fb.width, laneMask, fb.flipY,
+                                             state.depthFunc == DepthFunc::Lequal, state.depthWrite);
+    } else
+#endif
+    {
+      laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), texel, laneMask,
+                                                  state.depthFunc == DepthFunc::Lequal, state.depthWrite);
+    }
   }
   if (!laneMask) return;
   const int outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));

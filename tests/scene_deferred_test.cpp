@@ -2,16 +2,14 @@
 // and the command line's answer to missing or corrupt assets.
 //
 // Thresholds, from measurement on this machine kind (Mesa 22.3.6 llvmpipe, AVX2/FMA):
-//   shadow_map, gbuffer_albedo, gbuffer_worldpos, gbuffer_depth: bit-identical (measured 0
-//     differing texels at t = 0.5, 1, 3.7 and at 333x217).
-//   gbuffer_normal (half): >= 99.9% of pixels bit-identical, |difference| <= 0.004.
-//     Measured 99.96-99.98% identical, max 0.0005-0.002 (5-41 half ULPs near zero). The
-//     residue comes from the derivative TBN (perturb_normal), where Mesa's compiler
-//     rewrites some expressions in ways the port does not reproduce exactly.
-//   ssao (RGBA8): <= 0.01% of pixels differ, PSNR >= 60 dB. Measured identical except a
-//     few pixels at t = 3.7 (max 27 steps) fed by the normal residue above.
+//   shadow_map, gbuffer_albedo, gbuffer_normal, gbuffer_worldpos, gbuffer_depth:
+//     bit-identical (measured 0 differing texels at t = 0.5, 1, 3.7, 10 and at 333x217).
+//   ssao (RGBA8): <= 0.01% of pixels differ, PSNR >= 60 dB. Measured identical at t = 0.5,
+//     1 and 333x217; one or two pixels differ at t = 3.7 (max 27 steps) and t = 10 (max 11),
+//     where a sample's occlusion test flips: the SSAO shader has sums of products that Mesa's
+//     compiler may reassociate in ways the port does not reproduce everywhere.
 //   final (RGBA8): <= 0.01% of pixels off by more than 1 step, PSNR >= 80 dB. Measured
-//     max 1 (t = 1, 0.5), max 5 at t = 3.7 (PSNR 91 dB), identical at 333x217.
+//     identical except at t = 3.7 and 10 (max 5 steps, PSNR 91 dB), downstream of the SSAO.
 //   For scale, softpipe against llvmpipe at t = 1: final PSNR 38.6 dB with 19% of pixels
 //   off by more than 1; SSAO 28.8 dB; normals 42% bit-identical. The last scene test holds
 //   us closer to llvmpipe than softpipe on every target.
@@ -44,17 +42,14 @@ void checkAgainstLlvmpipe(float t, int w, int h) {
     const compare::TargetStats s = compare::compareImages(name, mine[i].image, gl[i].image);
     MESSAGE(compare::formatStatsLine(s));
     INFO(name);
-    if (name == "gbuffer_normal") {
-      CHECK(s.shareBitIdentical >= 0.999);
-      CHECK(s.maxAbs <= 0.004);
-    } else if (name == "ssao") {
+    if (name == "ssao") {
       CHECK(s.shareDiffering <= 0.0001);
       CHECK(s.psnr >= 60.0);
     } else if (name == "final") {
       CHECK(s.shareOver1 <= 0.0001);
       CHECK(s.psnr >= 80.0);
     } else {
-      CHECK(s.shareDiffering == 0.0);   // shadow_map, albedo, worldpos, depth: bit-identical
+      CHECK(s.shareDiffering == 0.0);   // shadow map and every G-buffer target: bit-identical
     }
   }
 }

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Side-by-side benchmarks of this pipeline against llvmpipe (and softpipe), all scenes.
 
 For every scene, size and thread count it runs `raster bench` (this pipeline and the GL
@@ -8,7 +8,8 @@ separate processes, and writes:
   bench/results/results.json   every figure
   bench/results/results.md     the table
   bench/results/frame_time.png frame time against pixel count, a line per backend, per scene
-Usage: bench/run_benchmarks.py [--quick] [--frames N] [--scenes shadow,deferred,hdr]
+Usage: bench/run_benchmarks.py [--quick] [--frames N] [--scenes shadow,deferred,hdr] [--replot]
+(Debian's /usr/bin/python3, which has python3-matplotlib from ./setup.sh.)
 """
 import argparse
 import json
@@ -48,7 +49,14 @@ def main():
     parser.add_argument("--quick", action="store_true", help="640x480 and 1920x1080 only, fewer frames")
     parser.add_argument("--frames", type=int, default=15, help="timed frames per backend and configuration")
     parser.add_argument("--scenes", default="shadow,deferred,hdr")
+    parser.add_argument("--replot", action="store_true", help="only rewrite the table and chart from results.json")
     args = parser.parse_args()
+    if args.replot:
+        with open(os.path.join(OUT, "results.json")) as f:
+            results = json.load(f)
+        write_table(results)
+        write_chart(results, sorted({r["scene"] for r in results["runs"]}, key=["shadow", "deferred", "hdr"].index))
+        return
     if not os.path.exists(RASTER):
         sys.exit("run_benchmarks: build/raster is missing; run ./setup.sh first")
     sizes = ["640x480", "1920x1080"] if args.quick else SIZES

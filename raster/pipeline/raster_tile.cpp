@@ -6,7 +6,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <type_traits>
+#if RASTER_AVX2
+#include <immintrin.h>
+#endif
 
 #include "raster/format/conversions.h"
 #include "raster/pipeline/output_merge.h"
@@ -16,6 +20,32 @@ namespace raster {
 namespace {
 
 constexpr int kBlock = 4;   // 4x4 pixel blocks, as llvmpipe hands them to the shader
+
+// Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
+// Coverage of one edge over a 4x4 block whose corners straddle it: bit (row * 4 + col) set
+// where c00 - dcdx * col + dcdy * row > 0.
+uint32_t edgeCoverage(const EdgeFunction& e, int64_t c00) {
+#if RASTER_AVX2
+  // Straddling means |c00| <= 3 (|dcdx| + |dcdy|): with small steps everything fits 32 bits.
+  if (std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28)) {
+    const __m256i col = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+    const __m256i dcdx = _mm256_set1_epi32(int32_t(e.dcdx)), dcdy = _mm256_set1_epi32(int32_t(e.dcdy));
+    const __m256i threshold = _mm256_set1_epi32(int32_t(-c00));
+    const __m256i xTerm = _mm256_mullo_epi32(dcdx, col);
+    auto rows = [&](int firstRow) {
+      const __m256i row = _mm256_add_epi32(_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_set1_epi32(firstRow));
+      const __m256i delta = _mm256_sub_epi32(_mm256_mullo_epi32(dcdy, row), xTerm);
+      return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(delta, threshold))));
+    };
+    return rows(0) | rows(2) << 8;
+  }
+#endif
+  uint32_t mask = 0;
+  for (int row = 0; row < kBlock; ++row)
+    for (int col = 0; col < kBlock; ++col)
+      if (c00 - e.dcdx * col + e.dcdy * row > 0) mask |= 1u << (row * kBlock + col);
+  return mask;
+}
 
 // Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
 uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
@@ -28,11 +58,7 @@ uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
     const int64_t c33 = e.at(blockX + 3, blockY + 3);
     if (std::max({c00, c30, c03, c33}) <= 0) return 0;     // all outside this edge
     if (std::min({c00, c30, c03, c33}) > 0) continue;      // all inside this edge
-    uint32_t edgeMask = 0;
-    for (int row = 0; row < kBlock; ++row)
-      for (int col = 0; col < kBlock; ++col)
-        if (e.at(blockX + col, blockY + row) > 0) edgeMask |= 1u << (row * kBlock + col);
-    mask &= edgeMask;
+    mask &= edgeCoverage(e, c00);
   }
   return mask;
 }

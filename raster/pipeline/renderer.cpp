@@ -54,28 +54,37 @@ void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewpor
     viewport_.scale[1] = -viewport_.scale[1];
     viewport_.translate[1] = float(framebuffer.height) - viewport_.translate[1];
   }
-  clear(clearValues);
+  pendingClear_ = clearValues;
 }
 
-void Renderer::clear(const ClearValues& values) {
+// Clears one rectangle of the bound framebuffer: glClear, carried out tile by tile inside
+// the tiles' tasks (parallel, and the tile's pixels are then in cache for its triangles).
+void Renderer::clearRect(int x0, int y0, int x1, int y1) const {
+  const ClearValues& values = pendingClear_;
+  const size_t width = size_t(framebuffer_.width);
+  auto fillRows = [&](auto* data, const auto* texel, size_t perTexel) {
+    for (int y = y0; y < y1; ++y)
+      for (size_t i = (size_t(y) * width + size_t(x0)) * perTexel; i < (size_t(y) * width + size_t(x1)) * perTexel; i += perTexel)
+        std::copy(texel, texel + perTexel, data + i);
+  };
   if (values.color) {
     for (Texture* target : framebuffer_.colors) {
       if (target->format == TexelFormat::RGBA8) {
         uint8_t texel[4];
         for (int c = 0; c < 4; ++c) texel[c] = format::unorm8FromFloat(std::clamp(values.colorValue[c], 0.0f, 1.0f));
-        for (size_t i = 0; i < target->rgba8.size(); i += 4) std::copy(texel, texel + 4, &target->rgba8[i]);
+        fillRows(target->rgba8.data(), texel, 4);
       } else if (target->format == TexelFormat::RGBA32F) {
-        for (size_t i = 0; i < target->f32.size(); i += 4) std::copy(values.colorValue, values.colorValue + 4, &target->f32[i]);
+        fillRows(target->f32.data(), values.colorValue, 4);
       } else if (target->format == TexelFormat::RGBA16F) {
         uint16_t texel[4];
         for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatTowardZero(values.colorValue[c]);
-        for (size_t i = 0; i < target->half.size(); i += 4) std::copy(texel, texel + 4, &target->half[i]);
+        fillRows(target->half.data(), texel, 4);
       }
     }
   }
   if (values.depth && framebuffer_.depth) {
     const uint32_t code = format::depthClearCode(values.depthValue, framebuffer_.depth->depthBits());
-    std::fill(framebuffer_.depth->depth.begin(), framebuffer_.depth->depth.end(), code);
+    fillRows(framebuffer_.depth->depth.data(), &code, 1);
   }
 }
 
@@ -170,7 +179,8 @@ void Renderer::bin(uint32_t firstTriangle) {
 }
 
 void Renderer::flush() {
-  if (!triangles_.empty()) {
+  const bool clearing = pendingClear_.color || pendingClear_.depth;
+  if (!triangles_.empty() || clearing) {
     TileJob job;
     job.framebuffer = &framebuffer_;
     job.triangles = triangles_;
@@ -178,13 +188,17 @@ void Renderer::flush() {
     job.draws = draws_;
     std::vector<PipelineCounters> tileCounters(bins_.size());
     pool_.parallelFor(int(bins_.size()), [&](int tile) {
-      if (bins_[size_t(tile)].empty()) return;
       const int tileX = tile % tilesX_, tileY = tile / tilesX_;
+      if (clearing)
+        clearRect(tileX * kTileSize, tileY * kTileSize, std::min((tileX + 1) * kTileSize, framebuffer_.width),
+                  std::min((tileY + 1) * kTileSize, framebuffer_.height));
+      if (bins_[size_t(tile)].empty()) return;
       if (scalarOnly_) rasterizeTile<ScalarLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);
       else rasterizeTile<FastLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);
     });
     for (const PipelineCounters& c : tileCounters) counters_ += c;
   }
+  pendingClear_ = {};
   triangles_.clear();
   varyingPlanes_.clear();
   draws_.clear();

@@ -102,12 +102,13 @@ class Renderer {
   int threads() const { return pool_.threads(); }
 
  private:
-  void clear(const ClearValues& clear);
+  void clearRect(int x0, int y0, int x1, int y1) const;
   void bin(uint32_t firstTriangle);
 
   ThreadPool pool_;
   bool scalarOnly_;
   Framebuffer framebuffer_;
+  ClearValues pendingClear_;   // the pass's glClear, carried out by the tiles at flush
   ViewportTransform viewport_{};
   std::vector<RecordedDraw> draws_;
   std::vector<SetupTriangle> triangles_;

@@ -118,7 +118,7 @@ int runBench(const BenchArgs& args) {
                frame.width, frame.height, frame.time, threads, args.warmup, args.frames);
   for (int i = 0; i < args.warmup; ++i)
     for (Contender& c : contenders) renderOnce(c, frame.time);
-  contenders[0].backend->resetStatistics();
+  contenders[0].backend->resetStatistics(/*timeStages=*/true);
   const uint64_t tscStart = raster::cycleCount();
   const auto clockStart = std::chrono::steady_clock::now();
   for (int i = 0; i < args.frames; ++i) {

@@ -154,9 +154,10 @@ class Backend {
   virtual ImageData readDepth(Handle framebuffer) = 0;
 
   // Named counters of the work done since the last reset (the raster backend's pipeline
-  // counters and per-stage cycles; empty for GL, which does not expose them).
+  // counters, and per-stage cycles once resetStatistics(true) asked for them; empty for GL,
+  // which does not expose them).
   virtual std::vector<std::pair<std::string, double>> statistics() const { return {}; }
-  virtual void resetStatistics() {}
+  virtual void resetStatistics(bool timeStages = false) {}
 };
 
 // Where the GLSL sources live: $RASTER_SOURCE_DIR/shaders_cpp, else the build's source dir.

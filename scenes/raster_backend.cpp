@@ -189,7 +189,10 @@ class RasterBackend final : public Backend {
             {"cycles_bin", double(c.binCycles)},               {"cycles_raster", double(c.rasterCycles)},
             {"cycles_fragment_shading", double(c.shadeCycles)}, {"cycles_output_merge", double(c.mergeCycles)}};
   }
-  void resetStatistics() override { renderer_.resetCounters(); }
+  void resetStatistics(bool timeStages) override {
+    renderer_.resetCounters();
+    renderer_.setStageTiming(timeStages);
+  }
 
  private:
   static ImageData imageHeader(const raster::Texture& t) {

@@ -206,15 +206,15 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
   in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
   in.gl_FrontFacing = tri.frontFacing;
   FragmentOutput<F> out;
-  const uint64_t shadeStart = cycleCount();
+  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   draw.shader->shadeFragments(in, varyings, out);
-  const uint64_t mergeStart = cycleCount();
+  const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;
   counters.laneGroupsShaded += 1;
   counters.lanesShaded += kLanes;
 
   for (int k = 0; k < outputs; ++k) writeColorOutput(*fb.colors[k], out.color[k], texel, laneMask, state.blendAdditive);
-  counters.mergeCycles += cycleCount() - mergeStart;
+  if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
 
 }  // namespace
@@ -226,7 +226,8 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   const int tileX0 = tileX * kTileSize, tileY0 = tileY * kTileSize;
   const int tileX1 = std::min(tileX0 + kTileSize, fb.width) - 1;
   const int tileY1 = std::min(tileY0 + kTileSize, fb.height) - 1;
-  const uint64_t tileStart = cycleCount(), shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
+  const uint64_t tileStart = job.timeStages ? cycleCount() : 0;
+  const uint64_t shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
 
   for (uint32_t index : bin) {
     const SetupTriangle& tri = job.triangles[index];
@@ -246,7 +247,8 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
       }
     }
   }
-  counters.rasterCycles += (cycleCount() - tileStart) - (counters.shadeCycles - shadeBefore) - (counters.mergeCycles - mergeBefore);
+  if (job.timeStages)
+    counters.rasterCycles += (cycleCount() - tileStart) - (counters.shadeCycles - shadeBefore) - (counters.mergeCycles - mergeBefore);
 }
 
 template void rasterizeTile<FastLanes>(const TileJob&, int, int, std::span<const uint32_t>, PipelineCounters&);

@@ -25,6 +25,7 @@ struct TileJob {
   std::span<const SetupTriangle> triangles;
   std::span<const Plane> varyingPlanes;
   std::span<const RecordedDraw> draws;
+  bool timeStages = false;   // read the cycle counter around each stage (raster bench)
 };
 
 constexpr int kTileSize = 64;   // llvmpipe TILE_ORDER 6

@@ -186,6 +186,7 @@ void Renderer::flush() {
     job.triangles = triangles_;
     job.varyingPlanes = varyingPlanes_;
     job.draws = draws_;
+    job.timeStages = timeStages_;
     std::vector<PipelineCounters> tileCounters(bins_.size());
     pool_.parallelFor(int(bins_.size()), [&](int tile) {
       const int tileX = tile % tilesX_, tileY = tile / tilesX_;

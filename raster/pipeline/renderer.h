@@ -98,6 +98,9 @@ class Renderer {
   void flush();
 
   const PipelineCounters& counters() const { return counters_; }
+  // Per-stage cycle counts cost a few percent (the counter is read around every lane
+  // group), so they are taken only when asked for.
+  void setStageTiming(bool on) { timeStages_ = on; }
   void resetCounters() { counters_ = {}; }
   int threads() const { return pool_.threads(); }
 
@@ -116,6 +119,7 @@ class Renderer {
   std::vector<std::vector<uint32_t>> bins_;   // per tile: triangle indices in API order
   int tilesX_ = 0, tilesY_ = 0;
   PipelineCounters counters_;
+  bool timeStages_ = false;
 };
 
 }  // namespace raster

@@ -7,8 +7,10 @@
 //    draws run on this pipeline (its 8-wide AVX2 path and its Lanes<8> path) and on
 //    llvmpipe, and every result must have the same bits, NaN payloads included.
 //    Measured on this machine kind (AVX2/FMA x86-64, Mesa 22.3.6 llvmpipe): every function
-//    here matched on every input tried, including exhaustive sweeps over all 2^32 float
-//    arguments of the one-argument functions with a standalone GL probe.
+//    here matched on every argument tried, so the test demands all of them; beyond these
+//    draws, a standalone GL probe swept all 2^32 arguments of sin, cos and atan(x) and
+//    every 4th bit pattern of exp2, log2, acos and pow(x, 48 | 2.2 | 0.4545), and 31
+//    million random arguments of each function, with no difference.
 // 2. Without GL: the Float8 (AVX2), Lanes<8> and float instantiations agree bit for bit on
 //    millions of random arguments.
 //

@@ -8,7 +8,6 @@
 
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/deferred/lighting.h"
-#include "shaders_cpp/deferred/shadow.h"
 #include "shaders_cpp/deferred/ssao.h"
 #include "shaders_cpp/hdr/bright.h"
 #include "shaders_cpp/hdr/composite.h"
@@ -90,7 +89,6 @@ std::unique_ptr<BoundProgram> makeBoundProgram(const std::string& name) {
   static const std::map<std::string, std::function<std::unique_ptr<BoundProgram>()>> registry = {
       entry<shaders::shadow::ShadowPass>(),
       entry<shaders::shadow::MainPass>(),
-      entry<shaders::deferred::ShadowPass>(),
       entry<shaders::deferred::GBufferPass>(),
       entry<shaders::deferred::SsaoPass>(),
       entry<shaders::deferred::LightingPass>(),

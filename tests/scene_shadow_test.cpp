@@ -54,19 +54,11 @@ TEST_SUITE("scene_shadow") {
   TEST_CASE("t = 2.2 at an odd size, 333x217, matches llvmpipe") { checkAgainstLlvmpipe(2.2f, 333, 217); }
 
   TEST_CASE("our final image is closer to llvmpipe than softpipe is") {
-    // softpipe runs in a child process: Mesa picks one Gallium driver per process.
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("raster-softpipe-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir);
-    const std::string command = "GALLIUM_DRIVER=softpipe '" RASTER_CLI_PATH "' render shadow --backend gl --dump '" +
-                                dir.string() + "' --out '" + (dir / "out.png").string() + "' > /dev/null 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    const scenes::ImageData softpipe = compare::readPng((dir / "final.png").string());
-    std::filesystem::remove_all(dir);
-
     const auto gl = renderWithLlvmpipe("shadow", 1.0f, 640, 480);
     auto ours = scenes::makeRasterBackend(0);
     const auto mine = renderScene(*ours, "shadow", 1.0f, 640, 480);
-    const auto spread = compare::compareImages("final", softpipe, gl.back().image);
+    const auto softpipe = testing_support::renderWithSoftpipe("shadow", gl);
+    const auto spread = compare::compareImages("final", softpipe.back().image, gl.back().image);
     const auto ourError = compare::compareImages("final", mine.back().image, gl.back().image);
     MESSAGE("softpipe vs llvmpipe: " << compare::formatStatsLine(spread));
     MESSAGE("raster   vs llvmpipe: " << compare::formatStatsLine(ourError));
@@ -74,4 +66,5 @@ TEST_SUITE("scene_shadow") {
     CHECK(ourError.rmse <= spread.rmse);
     CHECK(ourError.shareOver1 <= spread.shareOver1);
   }
+
 }

@@ -1,10 +1,16 @@
 // Rendering a whole scene with a backend, for the scene, determinism and benchmark tests.
 #pragma once
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "compare/image_io.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
 
@@ -27,6 +33,27 @@ inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const s
 inline std::vector<scenes::Target> renderWithLlvmpipe(const std::string& scene, float t, int w, int h) {
   std::unique_ptr<scenes::Backend> gl = scenes::makeGlBackend();
   return renderScene(*gl, scene, t, w, h);
+}
+
+// The same frame rendered by softpipe, for scale. Mesa picks one Gallium driver per
+// process, so softpipe runs in a child (`raster render --backend gl --dump`) and its
+// lossless dumps are read back, each in the kind of the matching target of `like`.
+inline std::vector<scenes::Target> renderWithSoftpipe(const std::string& scene, const std::vector<scenes::Target>& like) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("raster-softpipe-" + scene + "-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string command = "GALLIUM_DRIVER=softpipe '" RASTER_CLI_PATH "' render " + scene + " --backend gl --dump '" +
+                              dir.string() + "' --out '" + (dir / "out.png").string() + "' > /dev/null 2>&1";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error("softpipe render of " + scene + " failed");
+  std::vector<scenes::Target> targets;
+  for (const scenes::Target& t : like) {
+    const fs::path file = dir / (t.name + (t.image.format == scenes::TextureFormat::RGBA8 ? ".png" : ".pfm"));
+    if (t.image.format == scenes::TextureFormat::RGBA8) targets.push_back({t.name, compare::readPng(file.string())});
+    else if (t.image.depthBits > 0) targets.push_back({t.name, compare::readPfmDepth(file.string(), t.image.depthBits)});
+    else targets.push_back({t.name, compare::readPfmFloat(file.string())});
+  }
+  fs::remove_all(dir);
+  return targets;
 }
 
 }  // namespace testing_support

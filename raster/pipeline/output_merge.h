@@ -71,10 +71,7 @@ inline unsigned depthTestRows(const uint32_t* codes, uint32_t* rowTop, uint32_t*
 template <class F>
 void packRgba8(const glsl::vec4<F>& color, uint32_t* texels) {
   alignas(32) float c[4][F::kCount];
-  color.x.store(c[0]);
-  color.y.store(c[1]);
-  color.z.store(c[2]);
-  color.w.store(c[3]);
+  glsl::storePlanes(color, c);
   for (int i = 0; i < F::kCount; ++i) {
     texels[i] = 0;
     for (int ch = 0; ch < 4; ++ch) texels[i] |= uint32_t(format::unorm8FromFloat(c[ch][i])) << (8 * ch);
@@ -87,10 +84,7 @@ void packRgba8(const glsl::vec4<F>& color, uint32_t* texels) {
 template <class F>
 void writeHalfTexels(const glsl::vec4<F>& color, uint16_t* texels, const size_t* texel, unsigned laneMask, bool blend) {
   alignas(32) float c[4][F::kCount];
-  color.x.store(c[0]);
-  color.y.store(c[1]);
-  color.z.store(c[2]);
-  color.w.store(c[3]);
+  glsl::storePlanes(color, c);
   for (int i = 0; i < F::kCount; ++i) {
     if (!(laneMask >> i & 1u)) continue;
     uint16_t* dst = texels + texel[i] * 4;

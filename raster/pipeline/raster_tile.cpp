@@ -141,10 +141,7 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
     output_merge::writeHalfTexels(color, target.half.data(), texel, laneMask, blendAdditive);
   } else {   // RGBA32F, for tests
     alignas(32) float rgba[4][F::kCount];
-    color.x.store(rgba[0]);
-    color.y.store(rgba[1]);
-    color.z.store(rgba[2]);
-    color.w.store(rgba[3]);
+    glsl::storePlanes(color, rgba);
     for (int i = 0; i < F::kCount; ++i) {
       if (!(laneMask >> i & 1u)) continue;
       float* dst = &target.f32[texel[i] * 4];

@@ -92,10 +92,7 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
 
   alignas(32) float pos[4][kLanes];
   alignas(32) float vary[kVaryings > 0 ? kVaryings : 1][kLanes];
-  position.x.store(pos[0]);
-  position.y.store(pos[1]);
-  position.z.store(pos[2]);
-  position.w.store(pos[3]);
+  glsl::storePlanes(position, pos);
   F flat[kVaryings > 0 ? kVaryings : 1];
   varyingsToArray<Program, F>(varyings, flat);
   for (int v = 0; v < kVaryings; ++v) flat[v].store(vary[v]);

@@ -119,6 +119,16 @@ template <class M, class F> vec4<F> select(M m, vec4<F> a, vec4<F> b) {
   return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z), select(m, a.w, b.w)};
 }
 
+// The four components of a lane vector as planes of plain floats (lane i of component c
+// at planes[c][i]), for code that leaves SIMD: per-lane writes, scalar fallbacks.
+template <class F>
+void storePlanes(const vec4<F>& v, float (*planes)[F::kCount]) {
+  v.x.store(planes[0]);
+  v.y.store(planes[1]);
+  v.z.store(planes[2]);
+  v.w.store(planes[3]);
+}
+
 // mat4 * vec4, column by column in GLSL order.
 template <class F>
 vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {

@@ -62,7 +62,8 @@ class DeferredScene final : public Scene {
     const std::vector<ImageRgba8> loaded = loadImagesRgba8(images);   // decoded in parallel
     const ImageRgbFloat env = loadHdrRgb(assetPath(options_, HDRI));
 
-    prog_shadow_ = b.createProgram("deferred/shadow");
+    // The seed's shadow_vs / shadow_fs are the shadow-map scene's shaders, word for word.
+    prog_shadow_ = b.createProgram("shadow/shadow");
     prog_gbuffer_ = b.createProgram("deferred/gbuffer");
     prog_ssao_ = b.createProgram("deferred/post+ssao");
     prog_light_ = b.createProgram("deferred/post+lighting");

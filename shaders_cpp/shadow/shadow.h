@@ -26,6 +26,7 @@ struct ShadowPass {
   template <class F>
   static void vertex(const Uniforms& u, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>&) {
     const vec3<F> a_pos = in.attribute[0].xyz();
+    // GLSL (u_light_vp * u_model) * v: Mesa's optimizer evaluates u_light_vp * (u_model * v).
     gl_Position = u.u_light_vp * (u.u_model * vec4<F>(a_pos, F(1.0f)));
   }
 

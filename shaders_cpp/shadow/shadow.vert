@@ -1,5 +1,6 @@
 #version 330 core
 // 08 - The Shadow Map, shadow pass (seed 001): render every caster's depth from the light.
+// The deferred scene (seed 000) uses it too: its shadow_vs / shadow_fs are the same.
 uniform mat4 u_light_vp;
 uniform mat4 u_model;
 layout(location = 0) in vec3 a_pos;

@@ -139,6 +139,8 @@ TEST_SUITE("cli") {
     CHECK(top.out.find("compare") != std::string::npos);
     CHECK(runCli(cwd, "render --help").status == 0);
     CHECK(runCli(cwd, "compare --help").status == 0);
+    CHECK(runCli(cwd, "bench --help").status == 0);
+    CHECK(runCli(cwd, "scenes").out == "shadow\ndeferred\nhdr\n");
     CHECK(fs::is_empty(cwd));
   }
 
@@ -158,6 +160,12 @@ TEST_SUITE("cli") {
     expectRefused("compare " + aScene() + " --reference foo");
     expectRefused("compare " + aScene() + " --test foo");
     expectRefused("compare " + aScene() + " --max-rmse nan");
+    for (const char* instances : {"0", "-5", "1000001", "many"})
+      expectRefused("render hdr --instances=" + std::string(instances));
+    expectRefused("bench " + aScene() + " --frames 0");
+    expectRefused("bench " + aScene() + " --gl-driver nouveau");
+    expectRefused("bench " + aScene() + " --size 0x0");
+    expectRefused("bench " + aScene() + " --json /nonexistent/dir/results.json");
   }
 
   TEST_CASE("an --out that cannot be written is refused before rendering") {

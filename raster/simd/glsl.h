@@ -136,14 +136,4 @@ vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {
   return {column(0), column(1), column(2), column(3)};
 }
 
-// mat4 * mat4 as the shader computes it per invocation (each column is mat * vec).
-inline glm::mat4 mul(const glm::mat4& a, const glm::mat4& b) {
-  glm::mat4 r;
-  for (int c = 0; c < 4; ++c) {
-    const vec4<float> col = a * vec4<float>(b[c]);
-    r[c] = glm::vec4(col.x, col.y, col.z, col.w);
-  }
-  return r;
-}
-
 }  // namespace raster::glsl

@@ -183,18 +183,4 @@ using FastLanes = Float8;
 using FastLanes = Lanes<8>;
 #endif
 
-// The lane type the pipeline shades with by default; Lanes<8> when every fast path is off.
-using ReferenceLanes = Lanes<8>;
-
-// Per-lane access for code that must leave SIMD (texture gathers, debugging).
-template <class F>
-inline float laneOf(const F& f, int i) { return f[i]; }
-template <class F>
-inline void setLane(F& f, int i, float value) {
-  alignas(32) float t[F::kCount];
-  f.store(t);
-  t[i] = value;
-  f = F::load(t);
-}
-
 }  // namespace raster::simd

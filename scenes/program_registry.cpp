@@ -20,6 +20,7 @@
 #include "shaders_cpp/test/instanced.h"
 #include "shaders_cpp/test/color_lookup.h"
 #include "shaders_cpp/test/math_probe.h"
+#include "shaders_cpp/test/mrt.h"
 #include "shaders_cpp/test/passthrough.h"
 #include "shaders_cpp/test/shadow_lookup.h"
 
@@ -103,6 +104,7 @@ std::unique_ptr<BoundProgram> makeBoundProgram(const std::string& name) {
       entry<shaders::test::Instanced>(),
       entry<shaders::test::ShadowLookup>(),
       entry<shaders::test::MathProbe>(),
+      entry<shaders::test::Mrt>(),
   };
   const auto it = registry.find(name);
   if (it == registry.end()) throw std::runtime_error("no C++ port of shader program " + name);

@@ -176,7 +176,9 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
 #if RASTER_AVX2
     if constexpr (std::is_same_v<F, simd::Float8>) {
       uint32_t* rowTop = fb.depth->depth.data() + size_t(gy) * size_t(fb.width) + size_t(gx);
-      laneMask = output_merge::depthTestRows(codes, rowTop, rowTop + fb.width, laneMask, fb.flipY,
+      // On a last odd row the second row's lanes are all masked off: no pointer past the buffer.
+      uint32_t* rowBottom = gy + 1 < fb.height ? rowTop + fb.width : rowTop;
+      laneMask = output_merge::depthTestRows(codes, rowTop, rowBottom, laneMask, fb.flipY,
                                              state.depthFunc == DepthFunc::Lequal, state.depthWrite);
     } else
 #endif

@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 ./setup.sh
+mkdir -p demo
 for scene in $(./build/raster scenes); do
   ./build/raster compare "$scene" --out "demo/$scene"
 done

@@ -82,11 +82,17 @@ struct LaneLayout {
   static constexpr int kQuads = kLanes / 4;
   static constexpr int kGroupsPerBlock = 16 / kLanes;
   int dx[kLanes], dy[kLanes];
+  F dxLanes, dyLanes;   // the same offsets as lane values
   explicit LaneLayout(bool flipY) {
+    alignas(32) float fx[kLanes], fy[kLanes];
     for (int i = 0; i < kLanes; ++i) {
       dx[i] = (i / 4) * 2 + (i & 1);
       dy[i] = flipY ? 1 - ((i >> 1) & 1) : (i >> 1) & 1;
+      fx[i] = float(dx[i]);
+      fy[i] = float(dy[i]);
     }
+    dxLanes = F::load(fx);
+    dyLanes = F::load(fy);
   }
   // Group g's origin inside the block: 8 lanes cover rows 0-1 then 2-3; 4 lanes one quad.
   static int originX(int g) { return kQuads == 2 ? 0 : (g & 1) * 2; }
@@ -156,14 +162,9 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
                 int gx, int gy, unsigned laneMask, PipelineCounters& counters) {
   constexpr int kLanes = F::kCount;
   const Framebuffer& fb = *job.framebuffer;
-  alignas(32) float pxLanes[kLanes], pyLanes[kLanes];
-  for (int i = 0; i < kLanes; ++i) {
-    pxLanes[i] = float(gx + layout.dx[i]);
-    pyLanes[i] = float(gy + layout.dy[i]);
-  }
-  const F px = F::load(pxLanes);
-  const F py = F::load(pyLanes);
-
+  // Pixel coordinates per lane (small integers: the float sums are exact).
+  const F px = F(float(gx)) + layout.dxLanes;
+  const F py = F(float(gy)) + layout.dyLanes;
   size_t texel[kLanes];
   for (int i = 0; i < kLanes; ++i) texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
 

@@ -33,19 +33,12 @@ using testing_support::renderScene;
 using testing_support::renderWithLlvmpipe;
 
 void checkAgainstLlvmpipe(float t, int w, int h) {
-  auto ours = scenes::makeRasterBackend(0);
-  const auto mine = renderScene(*ours, "deferred", t, w, h);
-  const auto gl = renderWithLlvmpipe("deferred", t, w, h);
-  REQUIRE(mine.size() == gl.size());
-  for (size_t i = 0; i < mine.size(); ++i) {
-    const std::string& name = mine[i].name;
-    const compare::TargetStats s = compare::compareImages(name, mine[i].image, gl[i].image);
-    MESSAGE(compare::formatStatsLine(s));
-    INFO(name);
-    if (name == "ssao") {
+  for (const compare::TargetStats& s : testing_support::compareWithLlvmpipe("deferred", t, w, h)) {
+    INFO(s.name);
+    if (s.name == "ssao") {
       CHECK(s.shareDiffering <= 0.0001);
       CHECK(s.psnr >= 60.0);
-    } else if (name == "final") {
+    } else if (s.name == "final") {
       CHECK(s.shareOver1 <= 0.0001);
       CHECK(s.psnr >= 80.0);
     } else {

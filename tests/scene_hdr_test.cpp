@@ -39,19 +39,13 @@ using testing_support::renderScene;
 using testing_support::renderWithLlvmpipe;
 
 void checkAgainstLlvmpipe(float t, int w, int h) {
-  auto ours = scenes::makeRasterBackend(0);
-  const auto mine = renderScene(*ours, "hdr", t, w, h);
-  const auto gl = renderWithLlvmpipe("hdr", t, w, h);
-  REQUIRE(mine.size() == gl.size());
-  REQUIRE(mine.size() == 12);   // hdr_scene, hdr_depth, 5 down mips, 4 up mips, final
-  for (size_t i = 0; i < mine.size(); ++i) {
-    REQUIRE(mine[i].name == gl[i].name);
-    const compare::TargetStats s = compare::compareImages(mine[i].name, mine[i].image, gl[i].image);
-    MESSAGE(compare::formatStatsLine(s));
-    INFO(mine[i].name);
+  const auto stats = testing_support::compareWithLlvmpipe("hdr", t, w, h);
+  REQUIRE(stats.size() == 12);   // hdr_scene, hdr_depth, 5 down mips, 4 up mips, final
+  for (const compare::TargetStats& s : stats) {
+    INFO(s.name);
     CHECK(s.shareDiffering == 0.0);   // bit-identical (see the thresholds above)
   }
-  CHECK(mine.back().name == "final");
+  CHECK(stats.back().name == "final");
 }
 
 // ---- the post shaders alone ---------------------------------------------------------------

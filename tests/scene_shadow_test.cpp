@@ -28,13 +28,8 @@ using testing_support::renderScene;
 using testing_support::renderWithLlvmpipe;
 
 void checkAgainstLlvmpipe(float t, int w, int h) {
-  auto ours = scenes::makeRasterBackend(0);
-  const auto oursTargets = renderScene(*ours, "shadow", t, w, h);
-  const auto glTargets = renderWithLlvmpipe("shadow", t, w, h);
-  REQUIRE(oursTargets.size() == glTargets.size());
-  for (size_t i = 0; i < oursTargets.size(); ++i) {
-    const compare::TargetStats s = compare::compareImages(oursTargets[i].name, oursTargets[i].image, glTargets[i].image);
-    MESSAGE(compare::formatStatsLine(s));
+  for (const compare::TargetStats& s : testing_support::compareWithLlvmpipe("shadow", t, w, h)) {
+    INFO(s.name);
     if (s.kind == "depth") {
       CHECK(s.depthTexelsDiffering == 0);
     } else {

@@ -1,6 +1,8 @@
 // Rendering a whole scene with a backend, for the scene, determinism and benchmark tests.
 #pragma once
 
+#include <doctest/doctest.h>
+
 #include <unistd.h>
 
 #include <cstdlib>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "compare/image_io.h"
+#include "compare/metrics.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
 
@@ -33,6 +36,22 @@ inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const s
 inline std::vector<scenes::Target> renderWithLlvmpipe(const std::string& scene, float t, int w, int h) {
   std::unique_ptr<scenes::Backend> gl = scenes::makeGlBackend();
   return renderScene(*gl, scene, t, w, h);
+}
+
+// Renders a frame with this pipeline and with llvmpipe and compares every target (in the
+// scene's order, final last), printing one stats line per target.
+inline std::vector<compare::TargetStats> compareWithLlvmpipe(const std::string& scene, float t, int w, int h) {
+  auto ours = scenes::makeRasterBackend(0);
+  const std::vector<scenes::Target> mine = renderScene(*ours, scene, t, w, h);
+  const std::vector<scenes::Target> gl = renderWithLlvmpipe(scene, t, w, h);
+  if (mine.size() != gl.size()) throw std::runtime_error(scene + ": the backends expose different targets");
+  std::vector<compare::TargetStats> stats;
+  for (size_t i = 0; i < mine.size(); ++i) {
+    if (mine[i].name != gl[i].name) throw std::runtime_error(scene + ": target " + mine[i].name + " vs " + gl[i].name);
+    stats.push_back(compare::compareImages(mine[i].name, mine[i].image, gl[i].image));
+    MESSAGE(compare::formatStatsLine(stats.back()));
+  }
+  return stats;
 }
 
 // The same frame rendered by softpipe, for scale. Mesa picks one Gallium driver per

@@ -14,7 +14,7 @@ namespace shaders::deferred {
 
 using namespace raster::glsl;
 
-struct LightingPass {
+struct LightingPass : PostProgram {
   static constexpr const char* kName = "deferred/post+lighting";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -38,14 +38,6 @@ struct LightingPass {
       raster::uniform("shadow_map", &Uniforms::shadow_map),
       raster::uniform("env_map", &Uniforms::env_map),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   static constexpr float SHADOW_DIM_F = 1024.0f;
 

@@ -10,7 +10,7 @@ namespace shaders::deferred {
 
 using namespace raster::glsl;
 
-struct SsaoPass {
+struct SsaoPass : PostProgram {
   static constexpr const char* kName = "deferred/post+ssao";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -24,14 +24,6 @@ struct SsaoPass {
       raster::uniform("ssao_g_normal", &Uniforms::ssao_g_normal),
       raster::uniform("ssao_g_worldpos", &Uniforms::ssao_g_worldpos),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   static constexpr int SSAO_K = 16;
   static constexpr float SSAO_RADIUS = 0.6f;

@@ -9,7 +9,7 @@ namespace shaders::hdr {
 
 using namespace raster::glsl;
 
-struct BrightPass {
+struct BrightPass : PostProgram {
   static constexpr const char* kName = "hdr/post+bright";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -22,14 +22,6 @@ struct BrightPass {
       raster::uniform("u_threshold", &Uniforms::u_threshold),
       raster::uniform("u_soft_knee", &Uniforms::u_soft_knee),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,

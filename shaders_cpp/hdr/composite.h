@@ -17,7 +17,7 @@ vec3<F> clamp(vec3<F> x, vec3<F> lo, vec3<F> hi) {
   return {clamp(x.x, lo.x, hi.x), clamp(x.y, lo.y, hi.y), clamp(x.z, lo.z, hi.z)};
 }
 
-struct CompositePass {
+struct CompositePass : PostProgram {
   static constexpr const char* kName = "hdr/post+composite";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -30,14 +30,6 @@ struct CompositePass {
       raster::uniform("src_bloom", &Uniforms::src_bloom),
       raster::uniform("u_bloom_intensity", &Uniforms::u_bloom_intensity),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   // ACES filmic fit (Narkowicz 2015): one rational polynomial that mimics the ACES
   // shoulder/toe, mapping the unbounded HDR range into [0, 1].

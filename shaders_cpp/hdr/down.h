@@ -12,7 +12,7 @@ namespace shaders::hdr {
 
 using namespace raster::glsl;
 
-struct DownPass {
+struct DownPass : PostProgram {
   static constexpr const char* kName = "hdr/post+down";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -23,14 +23,6 @@ struct DownPass {
       raster::uniform("src0", &Uniforms::src0),
       raster::uniform("u_src_rcp", &Uniforms::u_src_rcp),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,

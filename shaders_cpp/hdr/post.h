@@ -21,4 +21,16 @@ void post_vs(const raster::VertexInput<F>& in, vec4<F>& gl_Position, PostVarying
   out.v_uv = q_pos * F(0.5f) + vec2<F>(F(0.5f), F(0.5f));
 }
 
+// The part every fullscreen post program shares: post.vert's varyings and vertex shader.
+// A port derives from it and adds its fragment shader and uniforms.
+struct PostProgram {
+  template <class F>
+  using Varyings = PostVaryings<F>;
+
+  template <class Uniforms, class F>
+  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
+    post_vs(in, gl_Position, out);
+  }
+};
+
 }  // namespace shaders::hdr

@@ -11,7 +11,7 @@ namespace shaders::hdr {
 
 using namespace raster::glsl;
 
-struct UpPass {
+struct UpPass : PostProgram {
   static constexpr const char* kName = "hdr/post+up";
   static constexpr int kColorOutputs = 1;
   struct Uniforms {
@@ -22,14 +22,6 @@ struct UpPass {
       raster::uniform("src0", &Uniforms::src0),
       raster::uniform("u_src_rcp", &Uniforms::u_src_rcp),
   };
-
-  template <class F>
-  using Varyings = PostVaryings<F>;
-
-  template <class F>
-  static void vertex(const Uniforms&, const raster::VertexInput<F>& in, vec4<F>& gl_Position, Varyings<F>& out) {
-    post_vs(in, gl_Position, out);
-  }
 
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,

@@ -80,6 +80,26 @@ LinearTaps8 wrapLinearClampToEdge8(__m256 coord, int size) {
 
 }  // namespace
 
+// The row's two texels x0, x1 with one 64-bit load per lane: CLAMP_TO_EDGE gives x1 = x0 + 1
+// except at the right edge (x1 = x0 = W - 1), so each lane loads the pair starting at
+// min(x0, W - 2) and takes its left texel from the pair's right one at the edge. Needs W >= 2.
+void fetchRowPairs(const int* codes, int width, __m256i rowStart, __m256i x0, __m256i& left, __m256i& right) {
+  const __m256i last = _mm256_set1_epi32(width - 1);
+  const __m256i start = _mm256_add_epi32(rowStart, _mm256_min_epi32(x0, _mm256_set1_epi32(width - 2)));
+  const long long* pairs = reinterpret_cast<const long long*>(codes);
+  // 32-bit indices into a 64-bit-element view are byte offsets / 8: gather at scale 4.
+  const __m256i a = _mm256_i32gather_epi64(pairs, _mm256_castsi256_si128(start), 4);
+  const __m256i b = _mm256_i32gather_epi64(pairs, _mm256_extracti128_si256(start, 1), 4);
+  // a = [l0 r0 l1 r1 | l2 r2 l3 r3], b likewise for lanes 4-7: split and restore lane order.
+  const __m256i order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+  const __m256i lo = _mm256_permutevar8x32_epi32(
+      _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(2, 0, 2, 0))), order);
+  const __m256i hi = _mm256_permutevar8x32_epi32(
+      _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(3, 1, 3, 1))), order);
+  right = hi;
+  left = _mm256_blendv_epi8(lo, hi, _mm256_cmpeq_epi32(x0, last));
+}
+
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref8) {
   __m256 ref = _mm256_max_ps(ref8.v, _mm256_setzero_ps());
   ref = _mm256_min_ps(ref, _mm256_set1_ps(1.0f));
@@ -89,13 +109,21 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
   const __m256i row0 = _mm256_mullo_epi32(y.i0, width), row1 = _mm256_mullo_epi32(y.i1, width);
   const float scale = depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
   const int* codes = reinterpret_cast<const int*>(depth.depth.data());
-  auto passes = [&](__m256i row, __m256i col) {
-    const __m256i code = _mm256_i32gather_epi32(codes, _mm256_add_epi32(row, col), 4);
+  auto passes = [&](__m256i code) {
     const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(code), _mm256_set1_ps(scale));
     return _mm256_cmp_ps(ref, texel, _CMP_LE_OQ);
   };
-  const __m256 m00 = passes(row0, x.i0), m01 = passes(row0, x.i1);
-  const __m256 m10 = passes(row1, x.i0), m11 = passes(row1, x.i1);
+  __m256 m00, m01, m10, m11;
+  if (depth.width >= 2) {
+    __m256i c00, c01, c10, c11;
+    fetchRowPairs(codes, depth.width, row0, x.i0, c00, c01);
+    fetchRowPairs(codes, depth.width, row1, x.i0, c10, c11);
+    m00 = passes(c00), m01 = passes(c01), m10 = passes(c10), m11 = passes(c11);
+  } else {
+    auto fetch = [&](__m256i row, __m256i col) { return _mm256_i32gather_epi32(codes, _mm256_add_epi32(row, col), 4); };
+    m00 = passes(fetch(row0, x.i0)), m01 = passes(fetch(row0, x.i1));
+    m10 = passes(fetch(row1, x.i0)), m11 = passes(fetch(row1, x.i1));
+  }
   const __m256 oneMinusW = _mm256_sub_ps(_mm256_set1_ps(1.0f), x.weight);
   const __m256 r0 = _mm256_add_ps(_mm256_and_ps(x.weight, m01), _mm256_and_ps(oneMinusW, m00));
   const __m256 r1 = _mm256_add_ps(_mm256_and_ps(x.weight, m11), _mm256_and_ps(oneMinusW, m10));

@@ -149,6 +149,36 @@ void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
   rgba[3] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(t1), _mm256_castps_pd(t3))), order);
 }
 
+// A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
+// x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
+// at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
+void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
+  const __m256i last = splat(t.width - 1);
+  alignas(32) int start[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(start),
+                     _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), _mm256_min_epi32(x0, splat(t.width - 2))));
+  __m256 v[8];   // lane i: left r g b a, right r g b a
+  for (int i = 0; i < 8; ++i)
+    v[i] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.half.data() + size_t(start[i]) * 4)));
+  // 8x8 transpose: planes[k] holds element k of every lane.
+  __m256 u[8], w[8];
+  for (int i = 0; i < 8; i += 2) {
+    u[i] = _mm256_unpacklo_ps(v[i], v[i + 1]);
+    u[i + 1] = _mm256_unpackhi_ps(v[i], v[i + 1]);
+  }
+  for (int i = 0; i < 8; i += 4) {
+    w[i] = _mm256_shuffle_ps(u[i], u[i + 2], 0x44);
+    w[i + 1] = _mm256_shuffle_ps(u[i], u[i + 2], 0xEE);
+    w[i + 2] = _mm256_shuffle_ps(u[i + 1], u[i + 3], 0x44);
+    w[i + 3] = _mm256_shuffle_ps(u[i + 1], u[i + 3], 0xEE);
+  }
+  const __m256 atEdge = _mm256_castsi256_ps(_mm256_cmpeq_epi32(x0, last));
+  for (int c = 0; c < 4; ++c) {
+    right[c] = _mm256_permute2f128_ps(w[c], w[c + 4], 0x31);
+    left[c] = _mm256_blendv_ps(_mm256_permute2f128_ps(w[c], w[c + 4], 0x20), right[c], atEdge);
+  }
+}
+
 void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
   if (t.sampler.filter == Filter::Nearest) {
     __m256 rgba[4];
@@ -159,10 +189,15 @@ void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
   const FloatTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
   const FloatTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
   __m256 p00[4], p01[4], p10[4], p11[4];
-  fetchHalf(t, x.x0, y.x0, p00);
-  fetchHalf(t, x.x1, y.x0, p01);
-  fetchHalf(t, x.x0, y.x1, p10);
-  fetchHalf(t, x.x1, y.x1, p11);
+  if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) {
+    fetchHalfPairs(t, x.x0, y.x0, p00, p01);
+    fetchHalfPairs(t, x.x0, y.x1, p10, p11);
+  } else {
+    fetchHalf(t, x.x0, y.x0, p00);
+    fetchHalf(t, x.x1, y.x0, p01);
+    fetchHalf(t, x.x0, y.x1, p10);
+    fetchHalf(t, x.x1, y.x1, p11);
+  }
   for (int c = 0; c < 4; ++c) {
     const __m256 row0 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p01[c], p00[c]), p00[c]);
     const __m256 row1 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p11[c], p10[c]), p10[c]);

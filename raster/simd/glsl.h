@@ -129,9 +129,11 @@ void storePlanes(const vec4<F>& v, float (*planes)[F::kCount]) {
   v.w.store(planes[3]);
 }
 
-// mat4 * vec4, column by column in GLSL order.
+// mat4 * vec4, column by column in GLSL order. Always inlined: shaders often keep one
+// component ((m * v).z) or repeat a product, and only inlined code lets the compiler drop
+// the unused rows and share the repeats, as Mesa's optimizer does.
 template <class F>
-vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {
+[[gnu::always_inline]] inline vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {
   auto column = [&](int row) { return ((F(m[0][row]) * v.x + F(m[1][row]) * v.y) + F(m[2][row]) * v.z) + F(m[3][row]) * v.w; };
   return {column(0), column(1), column(2), column(3)};
 }

@@ -93,4 +93,28 @@ TEST_SUITE("format") {
     }
     CHECK(compared == 2000);
   }
+#if RASTER_AVX2
+  TEST_CASE("depth test of a lane group: whole-row and masked-edge forms equal the per-lane test") {
+    std::mt19937 rng(6);
+    for (int round = 0; round < 4000; ++round) {
+      const bool flipped = round & 1, lessEqual = round & 2, write = round & 4, wholeRows = round & 8;
+      // Row position of each lane (the inverse of depthTestRows' quad -> row permutation).
+      const int rowOfLane[2][8] = {{0, 1, 4, 5, 2, 3, 6, 7}, {4, 5, 0, 1, 6, 7, 2, 3}};
+      uint32_t codes[8], rows[8];
+      for (int i = 0; i < 8; ++i) {
+        codes[i] = rng() % 6;   // few values: ties between code and stored are common
+        rows[i] = rng() % 6;
+      }
+      uint32_t expected[8];
+      std::memcpy(expected, rows, sizeof rows);
+      size_t texel[8];
+      for (int i = 0; i < 8; ++i) texel[i] = size_t(rowOfLane[flipped][i]);
+      const unsigned laneMask = unsigned(rng()) & 0xFFu;
+      const unsigned expectedPass = raster::output_merge::depthTest<8>(codes, expected, texel, laneMask, lessEqual, write);
+      const unsigned pass = raster::output_merge::depthTestRows(codes, rows, rows + 4, laneMask, flipped, lessEqual, write, wholeRows);
+      CHECK(pass == expectedPass);
+      CHECK(std::memcmp(rows, expected, sizeof rows) == 0);
+    }
+  }
+#endif
 }

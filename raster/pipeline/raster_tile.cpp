@@ -179,8 +179,10 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
       uint32_t* rowTop = fb.depth->depth.data() + size_t(gy) * size_t(fb.width) + size_t(gx);
       // On a last odd row the second row's lanes are all masked off: no pointer past the buffer.
       uint32_t* rowBottom = gy + 1 < fb.height ? rowTop + fb.width : rowTop;
+      const bool wholeRows = gx + 4 <= fb.width && gy + 1 < fb.height;
       laneMask = output_merge::depthTestRows(codes, rowTop, rowBottom, laneMask, fb.flipY,
-                                             state.depthFunc == DepthFunc::Lequal, state.depthWrite);
+                                             state.depthFunc == DepthFunc::Lequal, state.depthWrite,
+                                             wholeRows);
     } else
 #endif
     {

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "raster/util/huge_pages.h"
+
 namespace raster {
 
 enum class TexelFormat { RGBA8, RGBA16F, RGBA32F, Depth16, Depth24 };
@@ -31,10 +33,10 @@ struct Texture {
   int height = 0;
   TexelFormat format = TexelFormat::RGBA8;
   SamplerState sampler;
-  std::vector<uint8_t> rgba8;       // RGBA8
-  std::vector<uint16_t> half;       // RGBA16F, 4 per texel
+  std::vector<uint8_t, HugePageAllocator<uint8_t>> rgba8;       // RGBA8
+  std::vector<uint16_t, HugePageAllocator<uint16_t>> half;       // RGBA16F, 4 per texel
   std::vector<float> f32;           // RGBA32F, 4 per texel
-  std::vector<uint32_t> depth;      // Depth16 / Depth24 codes
+  std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
 
   Texture() = default;
   Texture(int w, int h, TexelFormat f) : width(w), height(h), format(f) {

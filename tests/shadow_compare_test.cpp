@@ -12,11 +12,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "raster/format/conversions.h"
+#include "raster/texture/sampler.h"
 #include "tests/gl_compare_helpers.h"
 
 namespace {
@@ -182,4 +184,57 @@ TEST_SUITE("shadow_compare") {
     CHECK(zeros + ones + partial == kDraws * kTarget * kTarget);   // every pixel written
     CHECK(partial > kDraws * kLookupsPerDraw / 20);                // the filter's fractions are exercised
   }
+#if RASTER_AVX2
+  TEST_CASE("PCF grids: every tap equals its lone lookup, shared texels or not") {
+    using raster::simd::Float8;
+    std::mt19937 rng(8008);
+    long lanesCompared = 0;
+    for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
+      for (const auto& [width, height] : {std::pair{1024, 1024}, std::pair{37, 29}, std::pair{6, 7}}) {
+        raster::Texture map(width, height, format);
+        const uint32_t maxCode = format == raster::TexelFormat::Depth24 ? 0xFFFFFFu : 0xFFFFu;
+        // Codes around one depth, so the references fall on both sides of neighbouring texels.
+        for (uint32_t& code : map.depth) code = maxCode / 2 + rng() % (maxCode / 64);
+        raster::Sampler2DShadow sampler;
+        sampler.texture = &map;
+        std::uniform_real_distribution<float> unit(-0.05f, 1.05f), jitter(-2e-7f, 2e-7f);
+        for (int round = 0; round < 600; ++round) {
+          alignas(32) float s[8], t[8], ref[8];
+          for (int l = 0; l < 8; ++l) {
+            // Half the lanes on texel centres and edges (rounding), half anywhere (clamping).
+            const bool onGrid = (round + l) % 2 == 0;
+            s[l] = onGrid ? (float(rng() % unsigned(width)) + 0.5f * float(rng() % 2)) / float(width) + jitter(rng) : unit(rng);
+            t[l] = onGrid ? (float(rng() % unsigned(height)) + 0.5f * float(rng() % 2)) / float(height) + jitter(rng) : unit(rng);
+            ref[l] = (float(maxCode / 2) + float(rng() % (maxCode / 64))) / float(maxCode) + (round % 7 == 0 ? unit(rng) : 0.0f);
+          }
+          // The seeds' step (one texel), a step that is not one texel, and no step at all.
+          const float steps[3] = {1.0f / float(width), 1.0f / 1000.0f, 0.0f};
+          const float step = steps[round % 3];
+          const raster::glsl::vec2<Float8> uv(Float8::load(s), Float8::load(t));
+          auto check = [&](auto& taps, int radius) {
+            const int n = 2 * radius + 1;
+            for (int j = 0; j < n; ++j) {
+              for (int i = 0; i < n; ++i) {
+                alignas(32) float got[8];
+                taps[j][i].store(got);
+                for (int l = 0; l < 8; ++l) {
+                  const float lone = raster::sampling::compareLinearClamp(map, s[l] + float(i - radius) * step,
+                                                                          t[l] + float(j - radius) * step, ref[l]);
+                  CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
+                  ++lanesCompared;
+                }
+              }
+            }
+          };
+          Float8 taps3[3][3], taps5[5][5];
+          raster::textureCompareGrid<1>(sampler, uv, step, Float8::load(ref), taps3);
+          raster::textureCompareGrid<2>(sampler, uv, step, Float8::load(ref), taps5);
+          check(taps3, 1);
+          check(taps5, 2);
+        }
+      }
+    }
+    CHECK(lanesCompared == 2 * 3 * 600 * 8 * (9 + 25));
+  }
+#endif
 }

@@ -32,6 +32,12 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 #if RASTER_AVX2
 // The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
+
+// The (2 * radius + 1)^2 lookups at (s + i * step, t + j * step), i and j in -radius..radius,
+// each bit-identical to compareLinearClamp8 there; taps[(j + radius) * (2 * radius + 1) +
+// (i + radius)]. Overlapping taps share their texels (radius 1 or 2).
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
+                  simd::Float8* taps);
 #endif
 
 // One colour lookup (sampler2D): RGBA8 through llvmpipe's 8-bit fixed-point path, float
@@ -88,6 +94,25 @@ F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
     for (int i = 0; i < F::kCount; ++i) out[i] = sampling::compareLinearClamp(*sampler.texture, s[i], t[i], r[i]);
     return F::load(out);
   }
+}
+
+// The PCF loops of the seeds' shaders, their lookups made at once:
+//   taps[j + R][i + R] = texture(shadow, vec3(uv + vec2(i, j) * step, ref)),  i, j in -R..R.
+// Every tap equals that lone lookup bit for bit; the sampler only shares the texel loads
+// and compares that neighbouring taps have in common (a 3x3 grid of 2x2 footprints covers
+// 4x4 texels, not 36). The shader still sums the taps itself, in its own order.
+template <int R, class F>
+void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float step, F ref, F (&taps)[2 * R + 1][2 * R + 1]) {
+  static_assert(R == 1 || R == 2, "3x3 and 5x5 grids");
+#if RASTER_AVX2
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    sampling::compareGrid8(*sampler.texture, uv.x, uv.y, step, ref, R, &taps[0][0]);
+    return;
+  }
+#endif
+  for (int j = -R; j <= R; ++j)
+    for (int i = -R; i <= R; ++i)
+      taps[j + R][i + R] = textureCompare(sampler, uv + glsl::vec2<F>(F(float(i) * step), F(float(j) * step)), ref);
 }
 
 }  // namespace raster

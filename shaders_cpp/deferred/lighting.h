@@ -56,11 +56,15 @@ struct LightingPass : PostProgram {
   template <class F>
   static F pcf_shadow(const Uniforms& u, vec2<F> uv, F ref) {
     const float texel = 1.0f / SHADOW_DIM_F;
+    // The 25 texture() calls of the loop below, made at once so the sampler can share the
+    // texels that neighbouring taps read: taps[j + 2][i + 2] is
+    // texture(shadow_map, vec3(uv + vec2(i, j) * texel, ref)), bit for bit.
+    F taps[5][5];
+    raster::textureCompareGrid<2>(u.shadow_map, uv, texel, ref, taps);
     F sum = F(0.0f);
     for (int j = -2; j < 3; j++) {
       for (int i = -2; i < 3; i++) {
-        const glm::vec2 off = glm::vec2(float(i), float(j)) * texel;
-        sum = sum + raster::textureCompare(u.shadow_map, uv + off, ref);
+        sum = sum + taps[j + 2][i + 2];
       }
     }
     return sum * F(1.0f / 25.0f);

@@ -56,11 +56,15 @@ struct MainPass {
   template <class F>
   static F pcf_shadow(const Uniforms& u, vec2<F> uv, F ref) {
     const float texel = 1.0f / SHADOW_DIM_F;
+    // The 9 texture() calls of the loop below, made at once so the sampler can share the
+    // texels that neighbouring taps read: taps[j + 1][i + 1] is
+    // texture(shadow_map, vec3(uv + vec2(i, j) * texel, ref)), bit for bit.
+    F taps[3][3];
+    raster::textureCompareGrid<1>(u.shadow_map, uv, texel, ref, taps);
     F sum = F(0.0f);
     for (int j = -1; j < 2; j++) {
       for (int i = -1; i < 2; i++) {
-        const glm::vec2 off = glm::vec2(float(i), float(j)) * texel;
-        sum += raster::textureCompare(u.shadow_map, uv + off, ref);
+        sum += taps[j + 1][i + 1];
       }
     }
     return sum * F(1.0f / 9.0f);

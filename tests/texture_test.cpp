@@ -154,4 +154,50 @@ TEST_SUITE("texture") {
     CHECK(mismatches == 0);
   }
 #endif
+#if RASTER_AVX2
+  TEST_CASE("3x3 lookup grids: every tap equals its lone scalar lookup, shared texels or not") {
+    std::mt19937 rng(78);
+    long mismatches = 0, taps = 0;
+    for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
+      for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{4, 4}, std::pair{2, 1}}) {
+        raster::Texture tex(w, h, format);
+        for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
+        for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+        for (raster::Wrap wrap : {raster::Wrap::ClampToEdge, raster::Wrap::Repeat}) {
+          tex.sampler = {raster::Filter::Linear, wrap, wrap, false};
+          for (int round = 0; round < 300; ++round) {
+            alignas(32) float s8[8], t8[8];
+            for (int i = 0; i < 8; ++i) {
+              // Pixel centres of a target twice the size (as the bloom upsample reads), or anywhere.
+              const bool centre = (round + i) % 3 != 0;
+              s8[i] = centre ? (float(rng() % unsigned(2 * w)) + 0.5f) / float(2 * w) : uniform(rng, -0.2f, 1.2f);
+              t8[i] = centre ? (float(rng() % unsigned(2 * h)) + 0.5f) / float(2 * h) : uniform(rng, -0.2f, 1.2f);
+            }
+            // One texel (the upsample's step), a step that is not one texel, and none.
+            const glm::vec2 steps[3] = {{1.0f / float(w), 1.0f / float(h)}, {0.37f / float(w), 1.9f / float(h)}, {0.0f, 0.0f}};
+            const glm::vec2 step = steps[round % 3];
+            raster::Sampler2D sampler;
+            sampler.texture = &tex;
+            raster::glsl::vec4<raster::simd::Float8> grid[3][3];
+            raster::textureGrid3x3(sampler, raster::glsl::vec2<raster::simd::Float8>(raster::simd::Float8::load(s8),
+                                                                                     raster::simd::Float8::load(t8)),
+                                   step, grid);
+            for (int j = 0; j < 3; ++j)
+              for (int k = 0; k < 3; ++k)
+                for (int i = 0; i < 8; ++i) {
+                  float ref[4];
+                  raster::sampling::sampleColor(tex, s8[i] + float(k - 1) * step.x, t8[i] + float(j - 1) * step.y, ref);
+                  const float got[4] = {grid[j][k].x[i], grid[j][k].y[i], grid[j][k].z[i], grid[j][k].w[i]};
+                  for (int c = 0; c < 4; ++c) mismatches += bitsOf(got[c]) != bitsOf(ref[c]);
+                  ++taps;
+                }
+          }
+        }
+      }
+    }
+    MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches");
+    CHECK(taps == 2 * 4 * 2 * 300 * 9 * 8);
+    CHECK(mismatches == 0);
+  }
+#endif
 }

@@ -149,18 +149,9 @@ void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
   rgba[3] = _mm256_permutevar8x32_ps(_mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(t1), _mm256_castps_pd(t3))), order);
 }
 
-// A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
-// x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
-// at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
-void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
-  const __m256i last = splat(t.width - 1);
-  alignas(32) int start[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(start),
-                     _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), _mm256_min_epi32(x0, splat(t.width - 2))));
-  __m256 v[8];   // lane i: left r g b a, right r g b a
-  for (int i = 0; i < 8; ++i)
-    v[i] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.half.data() + size_t(start[i]) * 4)));
-  // 8x8 transpose: planes[k] holds element k of every lane.
+// Eight lanes' texel pairs to planes: v[i] holds lane i's left texel (r g b a) then its
+// right one; left[c] and right[c] get channel c of every lane (an 8x8 transpose).
+void pairsToPlanes(const __m256 v[8], __m256 left[4], __m256 right[4]) {
   __m256 u[8], w[8];
   for (int i = 0; i < 8; i += 2) {
     u[i] = _mm256_unpacklo_ps(v[i], v[i + 1]);
@@ -172,10 +163,40 @@ void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m
     w[i + 2] = _mm256_shuffle_ps(u[i + 1], u[i + 3], 0x44);
     w[i + 3] = _mm256_shuffle_ps(u[i + 1], u[i + 3], 0xEE);
   }
-  const __m256 atEdge = _mm256_castsi256_ps(_mm256_cmpeq_epi32(x0, last));
   for (int c = 0; c < 4; ++c) {
+    left[c] = _mm256_permute2f128_ps(w[c], w[c + 4], 0x20);
     right[c] = _mm256_permute2f128_ps(w[c], w[c + 4], 0x31);
-    left[c] = _mm256_blendv_ps(_mm256_permute2f128_ps(w[c], w[c + 4], 0x20), right[c], atEdge);
+  }
+}
+
+// The two adjacent texels starting at texel index start[i], for each lane i, as planes.
+void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 left[4], __m256 right[4]) {
+  __m256 v[8];
+  for (int i = 0; i < 8; ++i)
+    v[i] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.half.data() + (size_t(start[i]) + offset) * 4)));
+  pairsToPlanes(v, left, right);
+}
+
+// A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
+// x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
+// at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
+void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
+  const __m256i last = splat(t.width - 1);
+  alignas(32) int start[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(start),
+                     _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), _mm256_min_epi32(x0, splat(t.width - 2))));
+  loadHalfPairs(t, start, 0, left, right);
+  const __m256 atEdge = _mm256_castsi256_ps(_mm256_cmpeq_epi32(x0, last));
+  for (int c = 0; c < 4; ++c) left[c] = _mm256_blendv_ps(left[c], right[c], atEdge);
+}
+
+// Bilinear blend of a 2x2 footprint, channel by channel, as llvmpipe's SoA path: rows first.
+void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4], const __m256 p11[4], __m256 wx,
+                    __m256 wy, simd::Float8 out[4]) {
+  for (int c = 0; c < 4; ++c) {
+    const __m256 row0 = _mm256_fmadd_ps(wx, _mm256_sub_ps(p01[c], p00[c]), p00[c]);
+    const __m256 row1 = _mm256_fmadd_ps(wx, _mm256_sub_ps(p11[c], p10[c]), p10[c]);
+    out[c] = simd::Float8(_mm256_fmadd_ps(wy, _mm256_sub_ps(row1, row0), row0));
   }
 }
 
@@ -198,11 +219,38 @@ void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
     fetchHalf(t, x.x0, y.x1, p10);
     fetchHalf(t, x.x1, y.x1, p11);
   }
-  for (int c = 0; c < 4; ++c) {
-    const __m256 row0 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p01[c], p00[c]), p00[c]);
-    const __m256 row1 = _mm256_fmadd_ps(x.weight, _mm256_sub_ps(p11[c], p10[c]), p10[c]);
-    out[c] = simd::Float8(_mm256_fmadd_ps(y.weight, _mm256_sub_ps(row1, row0), row0));
+  blendFootprint(p00, p01, p10, p11, x.weight, y.weight, out);
+}
+
+// The 3x3 grid for RGBA16F with LINEAR and CLAMP_TO_EDGE, when every tap of every lane
+// lands one texel after its neighbour and none is clamped: the grid's 2x2 footprints then
+// cover 4x4 texels, loaded once. Returns false (nothing written) otherwise.
+bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, float stepT, simd::Float8 (*taps)[4]) {
+  FloatTaps8 x[3], y[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = wrapLinearFloat(_mm256_add_ps(s, splat(float(k - 1) * stepS)), t.width, Wrap::ClampToEdge);
+    y[k] = wrapLinearFloat(_mm256_add_ps(tc, splat(float(k - 1) * stepT)), t.height, Wrap::ClampToEdge);
   }
+  __m256i consecutive = splat(-1);
+  for (int k = 0; k < 3; ++k) {
+    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].x0, _mm256_add_epi32(x[0].x0, splat(k))));
+    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].x1, _mm256_add_epi32(x[0].x0, splat(k + 1))));
+    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].x0, _mm256_add_epi32(y[0].x0, splat(k))));
+    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].x1, _mm256_add_epi32(y[0].x0, splat(k + 1))));
+  }
+  if (_mm256_movemask_ps(_mm256_castsi256_ps(consecutive)) != 0xFF) return false;
+  alignas(32) int start[8];   // each lane's top-left texel of the 4x4 neighbourhood
+  _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(y[0].x0, splat(t.width)), x[0].x0));
+  __m256 texel[4][4][4];   // [row][column][channel]
+  for (int r = 0; r < 4; ++r) {
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[r][0], texel[r][1]);
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, texel[r][2], texel[r][3]);
+  }
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      blendFootprint(texel[j][i], texel[j][i + 1], texel[j + 1][i], texel[j + 1][i + 1], x[i].weight, y[j].weight,
+                     taps[j * 3 + i]);
+  return true;
 }
 
 }  // namespace
@@ -223,6 +271,18 @@ void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::
     }
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8::load(planes[c]);
   }
+}
+
+void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,
+                      simd::Float8 (*taps)[4]) {
+  const SamplerState& state = texture.sampler;
+  if (texture.format == TexelFormat::RGBA16F && state.filter == Filter::Linear && state.wrapS == Wrap::ClampToEdge &&
+      state.wrapT == Wrap::ClampToEdge && sampleHalfGridShared(texture, s.v, t.v, stepS, stepT, taps))
+    return;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      sampleColor8(texture, simd::Float8(_mm256_add_ps(s.v, splat(float(i - 1) * stepS))),
+                   simd::Float8(_mm256_add_ps(t.v, splat(float(j - 1) * stepT))), taps[j * 3 + i]);
 }
 
 }  // namespace raster::sampling

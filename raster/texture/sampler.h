@@ -47,6 +47,12 @@ void sampleColor(const Texture& texture, float s, float t, float out[4]);
 #if RASTER_AVX2
 // The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
+
+// The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
+// sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
+// CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
+void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,
+                      simd::Float8 (*taps)[4]);
 #endif
 
 }  // namespace sampling
@@ -94,6 +100,25 @@ F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
     for (int i = 0; i < F::kCount; ++i) out[i] = sampling::compareLinearClamp(*sampler.texture, s[i], t[i], r[i]);
     return F::load(out);
   }
+}
+
+// A 3x3 grid of colour lookups one step apart, as a tent filter makes them:
+//   taps[j + 1][i + 1] = texture(sampler, uv + vec2(i * step.x, j * step.y)),  i, j in -1..1,
+// each bit-identical to that lone lookup; the sampler only shares the texels that
+// neighbouring taps have in common (4x4 texels instead of 9 footprints of 2x2).
+template <class F>
+void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step, glsl::vec4<F> (&taps)[3][3]) {
+#if RASTER_AVX2
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    simd::Float8 planes[9][4];
+    sampling::sampleColorGrid8(*sampler.texture, uv.x, uv.y, step.x, step.y, planes);
+    for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
+    return;
+  }
+#endif
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i)
+      taps[j + 1][i + 1] = texture(sampler, uv + glsl::vec2<F>(F(float(i) * step.x), F(float(j) * step.y)));
 }
 
 // The PCF loops of the seeds' shaders, their lookups made at once:

@@ -27,15 +27,20 @@ struct UpPass : PostProgram {
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
     const glm::vec2 o = u.u_src_rcp;
-    const vec3<F> s00 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, -o.y)).xyz();
-    const vec3<F> s10 = raster::texture(u.src0, in.v_uv + glm::vec2(0.0f, -o.y)).xyz();
-    const vec3<F> s20 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, -o.y)).xyz();
-    const vec3<F> s01 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, 0.0f)).xyz();
-    const vec3<F> s11 = raster::texture(u.src0, in.v_uv).xyz();
-    const vec3<F> s21 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, 0.0f)).xyz();
-    const vec3<F> s02 = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, o.y)).xyz();
-    const vec3<F> s12 = raster::texture(u.src0, in.v_uv + glm::vec2(0.0f, o.y)).xyz();
-    const vec3<F> s22 = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, o.y)).xyz();
+    // The nine texture() calls, made at once so the sampler can share the texels that
+    // neighbouring taps read: grid[j + 1][i + 1] is texture(src0, v_uv + vec2(i * o.x, j * o.y)),
+    // bit for bit (i or j = 0 adds 0.0, which samples the same texels with the same weights).
+    vec4<F> grid[3][3];
+    raster::textureGrid3x3(u.src0, in.v_uv, o, grid);
+    const vec3<F> s00 = grid[0][0].xyz();   // texture(src0, v_uv + vec2(-o.x, -o.y))
+    const vec3<F> s10 = grid[0][1].xyz();   // texture(src0, v_uv + vec2(0.0, -o.y))
+    const vec3<F> s20 = grid[0][2].xyz();   // texture(src0, v_uv + vec2(o.x, -o.y))
+    const vec3<F> s01 = grid[1][0].xyz();   // texture(src0, v_uv + vec2(-o.x, 0.0))
+    const vec3<F> s11 = grid[1][1].xyz();   // texture(src0, v_uv)
+    const vec3<F> s21 = grid[1][2].xyz();   // texture(src0, v_uv + vec2(o.x, 0.0))
+    const vec3<F> s02 = grid[2][0].xyz();   // texture(src0, v_uv + vec2(-o.x, o.y))
+    const vec3<F> s12 = grid[2][1].xyz();   // texture(src0, v_uv + vec2(0.0, o.y))
+    const vec3<F> s22 = grid[2][2].xyz();   // texture(src0, v_uv + vec2(o.x, o.y))
     const vec3<F> tent = (((s00 + s20) + (s02 + s22)) * F(1.0f / 16.0f) +
                           ((s10 + s01) + (s21 + s12)) * F(2.0f / 16.0f) +
                           s11 * F(4.0f / 16.0f));

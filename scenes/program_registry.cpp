@@ -44,7 +44,7 @@ void assignSampler(Sampler& sampler, const UniformValue& value, const std::strin
 }
 
 void assign(glm::mat4& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
-void assign(glm::vec4& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
+[[maybe_unused]] void assign(glm::vec4& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
 void assign(glm::vec3& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
 void assign(glm::vec2& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
 void assign(float& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }

@@ -219,7 +219,7 @@ class RasterBackend final : public Backend {
     const size_t texels = size_t(t.width) * size_t(t.height);
     if (t.format == raster::TexelFormat::RGBA8) {
       const auto* src = static_cast<const uint8_t*>(pixels);
-      t.rgba8.assign(src, src + texels * 4);
+      if (src) t.rgba8.assign(src, src + texels * 4);
     } else if (t.format == raster::TexelFormat::RGBA16F) {
       const auto* src = static_cast<const float*>(pixels);
       for (size_t i = 0; i < texels; ++i)
@@ -228,7 +228,7 @@ class RasterBackend final : public Backend {
                                                    : raster::format::halfFromFloatTowardZero(1.0f);
     } else if (t.format == raster::TexelFormat::RGBA32F) {
       const auto* src = static_cast<const float*>(pixels);
-      t.f32.assign(src, src + texels * 4);
+      if (src) t.f32.assign(src, src + texels * 4);
     } else {
       throw std::runtime_error("depth textures are not uploaded from the CPU in these scenes");
     }

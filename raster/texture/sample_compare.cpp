@@ -140,7 +140,7 @@ void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float st
                   simd::Float8* taps) {
   constexpr int kMaxTaps = 5, kMaxTexels = kMaxTaps + 1;
   const int count = 2 * radius + 1, texels = count + 1;
-  LinearTaps8 x[kMaxTaps], y[kMaxTaps];
+  LinearTaps8 x[kMaxTaps] = {}, y[kMaxTaps] = {};
   for (int k = 0; k < count; ++k) {
     // uv + vec2(i, j) * step: the offset is exact, the sum rounds as the shader's does.
     const __m256 offset = _mm256_set1_ps(float(k - radius) * step);

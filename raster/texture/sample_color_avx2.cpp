@@ -4,6 +4,7 @@
 #if RASTER_AVX2
 #include <immintrin.h>
 
+#include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -93,21 +94,16 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 
 // ---- half-float textures (SoA path) ------------------------------------------------------
 
-struct FloatTaps8 {
-  __m256i x0, x1;
-  __m256 weight;
-};
-
-FloatTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
+LinearTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
   const __m256 sizeF = splat(float(size));
   const __m256i last = splat(size - 1);
-  FloatTaps8 taps;
+  LinearTaps8 taps;
   if (wrap == Wrap::Repeat && isPowerOfTwo(size)) {
     const __m256 c = _mm256_sub_ps(_mm256_mul_ps(coord, sizeF), splat(0.5f));
     const __m256 floorC = _mm256_floor_ps(c);
     const __m256i i = _mm256_cvttps_epi32(floorC);
-    taps.x0 = _mm256_and_si256(i, last);
-    taps.x1 = _mm256_and_si256(_mm256_add_epi32(i, splat(1)), last);
+    taps.i0 = _mm256_and_si256(i, last);
+    taps.i1 = _mm256_and_si256(_mm256_add_epi32(i, splat(1)), last);
     taps.weight = _mm256_sub_ps(c, floorC);
     return taps;
   }
@@ -116,18 +112,12 @@ FloatTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
     const __m256 floorC = _mm256_floor_ps(c);
     const __m256i negative = _mm256_castps_si256(_mm256_cmp_ps(c, _mm256_setzero_ps(), _CMP_LT_OQ));
     // A NaN coordinate gives texel 0 rather than an out-of-range index.
-    taps.x0 = select(negative, last, clampInt(_mm256_cvttps_epi32(floorC), 0, size - 1));
+    taps.i0 = select(negative, last, clampInt(_mm256_cvttps_epi32(floorC), 0, size - 1));
     taps.weight = _mm256_sub_ps(c, floorC);
-    taps.x1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(taps.x0, last), _mm256_add_epi32(taps.x0, splat(1)));
+    taps.i1 = _mm256_andnot_si256(_mm256_cmpeq_epi32(taps.i0, last), _mm256_add_epi32(taps.i0, splat(1)));
     return taps;
   }
-  __m256 c = _mm256_min_ps(_mm256_mul_ps(coord, sizeF), sizeF);   // NaN -> size
-  c = _mm256_max_ps(_mm256_sub_ps(c, splat(0.5f)), _mm256_setzero_ps());
-  const __m256 floorC = _mm256_floor_ps(c);
-  taps.x0 = _mm256_cvttps_epi32(floorC);
-  taps.weight = _mm256_sub_ps(c, floorC);
-  taps.x1 = _mm256_min_epi32(_mm256_add_epi32(taps.x0, splat(1)), last);
-  return taps;
+  return wrapLinearClampToEdge8(coord, size);
 }
 
 // Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
@@ -207,17 +197,17 @@ void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
     return;
   }
-  const FloatTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
-  const FloatTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
+  const LinearTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
+  const LinearTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
   __m256 p00[4], p01[4], p10[4], p11[4];
   if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) {
-    fetchHalfPairs(t, x.x0, y.x0, p00, p01);
-    fetchHalfPairs(t, x.x0, y.x1, p10, p11);
+    fetchHalfPairs(t, x.i0, y.i0, p00, p01);
+    fetchHalfPairs(t, x.i0, y.i1, p10, p11);
   } else {
-    fetchHalf(t, x.x0, y.x0, p00);
-    fetchHalf(t, x.x1, y.x0, p01);
-    fetchHalf(t, x.x0, y.x1, p10);
-    fetchHalf(t, x.x1, y.x1, p11);
+    fetchHalf(t, x.i0, y.i0, p00);
+    fetchHalf(t, x.i1, y.i0, p01);
+    fetchHalf(t, x.i0, y.i1, p10);
+    fetchHalf(t, x.i1, y.i1, p11);
   }
   blendFootprint(p00, p01, p10, p11, x.weight, y.weight, out);
 }
@@ -226,21 +216,14 @@ void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 // lands one texel after its neighbour and none is clamped: the grid's 2x2 footprints then
 // cover 4x4 texels, loaded once. Returns false (nothing written) otherwise.
 bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, float stepT, simd::Float8 (*taps)[4]) {
-  FloatTaps8 x[3], y[3];
+  LinearTaps8 x[3], y[3];
   for (int k = 0; k < 3; ++k) {
-    x[k] = wrapLinearFloat(_mm256_add_ps(s, splat(float(k - 1) * stepS)), t.width, Wrap::ClampToEdge);
-    y[k] = wrapLinearFloat(_mm256_add_ps(tc, splat(float(k - 1) * stepT)), t.height, Wrap::ClampToEdge);
+    x[k] = wrapLinearClampToEdge8(_mm256_add_ps(s, splat(float(k - 1) * stepS)), t.width);
+    y[k] = wrapLinearClampToEdge8(_mm256_add_ps(tc, splat(float(k - 1) * stepT)), t.height);
   }
-  __m256i consecutive = splat(-1);
-  for (int k = 0; k < 3; ++k) {
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].x0, _mm256_add_epi32(x[0].x0, splat(k))));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].x1, _mm256_add_epi32(x[0].x0, splat(k + 1))));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].x0, _mm256_add_epi32(y[0].x0, splat(k))));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].x1, _mm256_add_epi32(y[0].x0, splat(k + 1))));
-  }
-  if (_mm256_movemask_ps(_mm256_castsi256_ps(consecutive)) != 0xFF) return false;
+  if (!tapsAreConsecutive(x, y, 3)) return false;
   alignas(32) int start[8];   // each lane's top-left texel of the 4x4 neighbourhood
-  _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(y[0].x0, splat(t.width)), x[0].x0));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(y[0].i0, splat(t.width)), x[0].i0));
   __m256 texel[4][4][4];   // [row][column][channel]
   for (int r = 0; r < 4; ++r) {
     loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[r][0], texel[r][1]);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "raster/format/conversions.h"
+#include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -55,31 +56,6 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
 }
 
 #if RASTER_AVX2
-namespace {
-
-struct LinearTaps8 {
-  __m256i i0, i1;
-  __m256 weight;
-};
-
-// wrapLinearClampToEdge, lane for lane: minps/maxps return the second operand on NaN and
-// on ties, exactly as the scalar ternaries do.
-LinearTaps8 wrapLinearClampToEdge8(__m256 coord, int size) {
-  const __m256 sizeF = _mm256_set1_ps(float(size));
-  __m256 c = _mm256_mul_ps(coord, sizeF);
-  c = _mm256_min_ps(c, sizeF);
-  c = _mm256_sub_ps(c, _mm256_set1_ps(0.5f));
-  c = _mm256_max_ps(c, _mm256_setzero_ps());
-  const __m256 floorC = _mm256_floor_ps(c);
-  LinearTaps8 taps;
-  taps.i0 = _mm256_cvttps_epi32(floorC);
-  taps.weight = _mm256_sub_ps(c, floorC);
-  taps.i1 = _mm256_min_epi32(_mm256_add_epi32(taps.i0, _mm256_set1_epi32(1)), _mm256_set1_epi32(size - 1));
-  return taps;
-}
-
-}  // namespace
-
 // The row's two texels x0, x1 with one 64-bit load per lane: CLAMP_TO_EDGE gives x1 = x0 + 1
 // except at the right edge (x1 = x0 = W - 1), so each lane loads the pair starting at
 // min(x0, W - 2) and takes its left texel from the pair's right one at the edge. Needs W >= 2.
@@ -147,16 +123,7 @@ void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float st
     x[k] = wrapLinearClampToEdge8(_mm256_add_ps(s.v, offset), depth.width);
     y[k] = wrapLinearClampToEdge8(_mm256_add_ps(t.v, offset), depth.height);
   }
-  // Consecutive, unclamped taps: tap k spans texels first + k and first + k + 1.
-  __m256i consecutive = _mm256_set1_epi32(-1);
-  for (int k = 0; k < count; ++k) {
-    const __m256i k0 = _mm256_set1_epi32(k), k1 = _mm256_set1_epi32(k + 1);
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].i0, _mm256_add_epi32(x[0].i0, k0)));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(x[k].i1, _mm256_add_epi32(x[0].i0, k1)));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].i0, _mm256_add_epi32(y[0].i0, k0)));
-    consecutive = _mm256_and_si256(consecutive, _mm256_cmpeq_epi32(y[k].i1, _mm256_add_epi32(y[0].i0, k1)));
-  }
-  if (_mm256_movemask_ps(_mm256_castsi256_ps(consecutive)) != 0xFF) {
+  if (!tapsAreConsecutive(x, y, count)) {
     for (int j = 0; j < count; ++j)
       for (int i = 0; i < count; ++i)
         taps[j * count + i] = compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s.v, _mm256_set1_ps(float(i - radius) * step))),

@@ -121,11 +121,15 @@ LinearTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
 }
 
 // Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
-void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
+// Only the lanes set in `live` (all 32 bits of a lane) are loaded; the others read as zero.
+void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4], __m256i live = splat(-1)) {
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
-  const __m256i lo = _mm256_i32gather_epi64(texels, _mm256_castsi256_si128(index), 8);
-  const __m256i hi = _mm256_i32gather_epi64(texels, _mm256_extracti128_si256(index, 1), 8);
+  // The gathers take one mask bit per 64-bit texel: widen the lanes' masks to 64 bits.
+  const __m256i liveLo = _mm256_cvtepi32_epi64(_mm256_castsi256_si128(live));
+  const __m256i liveHi = _mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1));
+  const __m256i lo = _mm256_mask_i32gather_epi64(_mm256_setzero_si256(), texels, _mm256_castsi256_si128(index), liveLo, 8);
+  const __m256i hi = _mm256_mask_i32gather_epi64(_mm256_setzero_si256(), texels, _mm256_extracti128_si256(index, 1), liveHi, 8);
   // Each 128-bit half holds two texels: convert to floats (r g b a r g b a), then transpose
   // in registers; the unpacks leave lanes in the order 0 2 4 6 1 3 5 7, undone by a permute.
   const __m256 v0 = _mm256_cvtph_ps(_mm256_castsi256_si128(lo)), v1 = _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1));
@@ -253,6 +257,19 @@ void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::
       for (int c = 0; c < 4; ++c) planes[c][i] = rgba[c];
     }
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8::load(planes[c]);
+  }
+}
+
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]) {
+  if (!any(live)) {
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(0.0f);
+  } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest) {
+    __m256 rgba[4];
+    fetchHalf(texture, wrapNearest(s.v, texture.width, texture.sampler.wrapS, false),
+              wrapNearest(t.v, texture.height, texture.sampler.wrapT, false), rgba, _mm256_castps_si256(live.v));
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
+  } else {   // every lane: the dead lanes' values are unspecified, so computing them is allowed
+    sampleColor8(texture, s, t, out);
   }
 }
 

@@ -48,6 +48,10 @@ void sampleColor(const Texture& texture, float s, float t, float out[4]);
 // The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
 
+// The same lookups where only the lanes in `live` are needed: the others' results are
+// unspecified (zero where their loads are skipped).
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]);
+
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
 // sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
 // CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
@@ -81,6 +85,23 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     }
     return {F::load(out[0]), F::load(out[1]), F::load(out[2]), F::load(out[3])};
   }
+}
+
+// GLSL: texture(sampler2D, uv) in a port that knows some lanes will never use the result:
+// only the lanes in `needed` get their texel, the others an unspecified value. A shader
+// compiler that worked lane by lane would skip those reads; SSAO uses this to skip the
+// memory traffic of lookups whose lanes have already failed a test.
+template <class F, class M>
+glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv) {
+#if RASTER_AVX2
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    simd::Float8 rgba[4];
+    sampling::sampleColor8(*sampler.texture, uv.x, uv.y, needed, rgba);
+    return {rgba[0], rgba[1], rgba[2], rgba[3]};
+  }
+#endif
+  (void)needed;
+  return texture(sampler, uv);   // scalar and portable lanes: every lane, as GLSL reads them
 }
 
 // GLSL: texture(sampler2DShadow, vec3(uv, ref)), as the seed's textureCompare.

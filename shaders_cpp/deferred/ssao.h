@@ -72,14 +72,16 @@ struct SsaoPass : PostProgram {
         const F wv = max(clip.w, F(0.0001f));
         const vec2<F> suv = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
         const vec3<F> stored_p = raster::texture(u.ssao_g_worldpos, suv).xyz();
-        const vec3<F> stored_n = raster::texture(u.ssao_g_normal, suv).xyz();
         const F stored_vz = (u.u_view * vec4<F>(stored_p, F(1.0f))).z;
         const F sample_vz = (u.u_view * vec4<F>(sp, F(1.0f))).z;
         const F range_check = smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / max(abs(cur_vz - stored_vz), F(0.0001f)));
         // view looks down -Z: a stored surface closer to the camera (greater z) occludes
-        const auto occludes = (clip.w > F(0.0f)) & (suv.x >= F(0.0f)) & (suv.x <= F(1.0f)) & (suv.y >= F(0.0f)) &
-                              (suv.y <= F(1.0f)) & (dot(stored_n, stored_n) > F(0.01f)) &
-                              (stored_vz >= sample_vz + F(SSAO_BIAS));
+        const auto in_front = (clip.w > F(0.0f)) & (suv.x >= F(0.0f)) & (suv.x <= F(1.0f)) & (suv.y >= F(0.0f)) &
+                              (suv.y <= F(1.0f)) & (stored_vz >= sample_vz + F(SSAO_BIAS));
+        // stored_n only decides lanes that pass every other test, so only those read it
+        // (textureWhere); GLSL reads it everywhere, and the sum is the same.
+        const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv).xyz();
+        const auto occludes = in_front & (dot(stored_n, stored_n) > F(0.01f));
         occ = select(occludes, occ + range_check, occ);
       }
       ao = select(has_surface, clamp(F(1.0f) - F(SSAO_STRENGTH) * occ / F(float(SSAO_K)), F(0.0f), F(1.0f)), ao);

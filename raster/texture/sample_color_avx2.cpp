@@ -94,7 +94,7 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 
 // ---- half-float textures (SoA path) ------------------------------------------------------
 
-LinearTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
+[[gnu::always_inline]] inline LinearTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
   const __m256 sizeF = splat(float(size));
   const __m256i last = splat(size - 1);
   LinearTaps8 taps;
@@ -122,7 +122,7 @@ LinearTaps8 wrapLinearFloat(__m256 coord, int size, Wrap wrap) {
 
 // Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
 // Only the lanes set in `live` (all 32 bits of a lane) are loaded; the others read as zero.
-void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4], __m256i live = splat(-1)) {
+[[gnu::always_inline]] inline void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4], __m256i live = splat(-1)) {
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
   // The gathers take one mask bit per 64-bit texel: widen the lanes' masks to 64 bits.
@@ -145,7 +145,7 @@ void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4], __m256i l
 
 // Eight lanes' texel pairs to planes: v[i] holds lane i's left texel (r g b a) then its
 // right one; left[c] and right[c] get channel c of every lane (an 8x8 transpose).
-void pairsToPlanes(const __m256 v[8], __m256 left[4], __m256 right[4]) {
+[[gnu::always_inline]] inline void pairsToPlanes(const __m256 v[8], __m256 left[4], __m256 right[4]) {
   __m256 u[8], w[8];
   for (int i = 0; i < 8; i += 2) {
     u[i] = _mm256_unpacklo_ps(v[i], v[i + 1]);
@@ -164,7 +164,7 @@ void pairsToPlanes(const __m256 v[8], __m256 left[4], __m256 right[4]) {
 }
 
 // The two adjacent texels starting at texel index start[i], for each lane i, as planes.
-void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 left[4], __m256 right[4]) {
+[[gnu::always_inline]] inline void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 left[4], __m256 right[4]) {
   __m256 v[8];
   for (int i = 0; i < 8; ++i)
     v[i] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.half.data() + (size_t(start[i]) + offset) * 4)));
@@ -174,7 +174,7 @@ void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 lef
 // A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
 // x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
 // at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
-void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
+[[gnu::always_inline]] inline void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
   const __m256i last = splat(t.width - 1);
   alignas(32) int start[8];
   _mm256_store_si256(reinterpret_cast<__m256i*>(start),
@@ -185,7 +185,7 @@ void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m
 }
 
 // Bilinear blend of a 2x2 footprint, channel by channel, as llvmpipe's SoA path: rows first.
-void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4], const __m256 p11[4], __m256 wx,
+[[gnu::always_inline]] inline void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4], const __m256 p11[4], __m256 wx,
                     __m256 wy, simd::Float8 out[4]) {
   for (int c = 0; c < 4; ++c) {
     const __m256 row0 = _mm256_fmadd_ps(wx, _mm256_sub_ps(p01[c], p00[c]), p00[c]);

@@ -122,14 +122,16 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 
 // Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
 // Only the lanes set in `live` (all 32 bits of a lane) are loaded; the others read as zero.
-[[gnu::always_inline]] inline void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4], __m256i live = splat(-1)) {
+[[gnu::always_inline]] inline void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4],
+                                             __m256i live = splat(-1)) {
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
   // The gathers take one mask bit per 64-bit texel: widen the lanes' masks to 64 bits.
   const __m256i liveLo = _mm256_cvtepi32_epi64(_mm256_castsi256_si128(live));
   const __m256i liveHi = _mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1));
-  const __m256i lo = _mm256_mask_i32gather_epi64(_mm256_setzero_si256(), texels, _mm256_castsi256_si128(index), liveLo, 8);
-  const __m256i hi = _mm256_mask_i32gather_epi64(_mm256_setzero_si256(), texels, _mm256_extracti128_si256(index, 1), liveHi, 8);
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i lo = _mm256_mask_i32gather_epi64(zero, texels, _mm256_castsi256_si128(index), liveLo, 8);
+  const __m256i hi = _mm256_mask_i32gather_epi64(zero, texels, _mm256_extracti128_si256(index, 1), liveHi, 8);
   // Each 128-bit half holds two texels: convert to floats (r g b a r g b a), then transpose
   // in registers; the unpacks leave lanes in the order 0 2 4 6 1 3 5 7, undone by a permute.
   const __m256 v0 = _mm256_cvtph_ps(_mm256_castsi256_si128(lo)), v1 = _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1));
@@ -164,7 +166,8 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 }
 
 // The two adjacent texels starting at texel index start[i], for each lane i, as planes.
-[[gnu::always_inline]] inline void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 left[4], __m256 right[4]) {
+[[gnu::always_inline]] inline void loadHalfPairs(const Texture& t, const int* start, size_t offset, __m256 left[4],
+                                                 __m256 right[4]) {
   __m256 v[8];
   for (int i = 0; i < 8; ++i)
     v[i] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(t.half.data() + (size_t(start[i]) + offset) * 4)));
@@ -174,7 +177,8 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 // A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
 // x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
 // at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
-[[gnu::always_inline]] inline void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4], __m256 right[4]) {
+[[gnu::always_inline]] inline void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4],
+                                                  __m256 right[4]) {
   const __m256i last = splat(t.width - 1);
   alignas(32) int start[8];
   _mm256_store_si256(reinterpret_cast<__m256i*>(start),
@@ -185,8 +189,8 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
 }
 
 // Bilinear blend of a 2x2 footprint, channel by channel, as llvmpipe's SoA path: rows first.
-[[gnu::always_inline]] inline void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4], const __m256 p11[4], __m256 wx,
-                    __m256 wy, simd::Float8 out[4]) {
+[[gnu::always_inline]] inline void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4],
+                                                  const __m256 p11[4], __m256 wx, __m256 wy, simd::Float8 out[4]) {
   for (int c = 0; c < 4; ++c) {
     const __m256 row0 = _mm256_fmadd_ps(wx, _mm256_sub_ps(p01[c], p00[c]), p00[c]);
     const __m256 row1 = _mm256_fmadd_ps(wx, _mm256_sub_ps(p11[c], p10[c]), p10[c]);
@@ -194,13 +198,16 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
   }
 }
 
+// NEAREST: one texel per lane, loaded only for the lanes in `live`.
+void sampleHalfNearest(const Texture& t, __m256 s, __m256 tc, __m256i live, simd::Float8 out[4]) {
+  __m256 rgba[4];
+  fetchHalf(t, wrapNearest(s, t.width, t.sampler.wrapS, false), wrapNearest(tc, t.height, t.sampler.wrapT, false), rgba,
+            live);
+  for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
+}
+
 void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
-  if (t.sampler.filter == Filter::Nearest) {
-    __m256 rgba[4];
-    fetchHalf(t, wrapNearest(s, t.width, t.sampler.wrapS, false), wrapNearest(tc, t.height, t.sampler.wrapT, false), rgba);
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
-    return;
-  }
+  if (t.sampler.filter == Filter::Nearest) return sampleHalfNearest(t, s, tc, splat(-1), out);
   const LinearTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
   const LinearTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
   __m256 p00[4], p01[4], p10[4], p11[4];
@@ -264,10 +271,7 @@ void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::
   if (!any(live)) {
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8(0.0f);
   } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest) {
-    __m256 rgba[4];
-    fetchHalf(texture, wrapNearest(s.v, texture.width, texture.sampler.wrapS, false),
-              wrapNearest(t.v, texture.height, texture.sampler.wrapT, false), rgba, _mm256_castps_si256(live.v));
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
+    sampleHalfNearest(texture, s.v, t.v, _mm256_castps_si256(live.v), out);
   } else {   // every lane: the dead lanes' values are unspecified, so computing them is allowed
     sampleColor8(texture, s, t, out);
   }

@@ -11,8 +11,8 @@
 //    draws, a standalone GL probe swept all 2^32 arguments of sin, cos and atan(x) and
 //    every 4th bit pattern of exp2, log2, acos and pow(x, 48 | 2.2 | 0.4545), and 31
 //    million random arguments of each function, with no difference.
-// 2. Without GL: the Float8 (AVX2), Lanes<8> and float instantiations agree bit for bit on
-//    millions of random arguments.
+// 2. Without GL: the Float8 and Float8x2 (AVX2), Lanes<8> and float instantiations agree
+//    bit for bit on millions of random arguments.
 //
 // Denormal arguments: llvmpipe's shaders run with DAZ/FTZ, so a denormal argument is a zero
 // there, while this pipeline delivers it unchanged and the functions flush it themselves;
@@ -395,18 +395,20 @@ TEST_SUITE("gl_math") {
     CHECK(atan(1.0f, -1.0f) > 2.35f);
   }
 
-  TEST_CASE("Float8, Lanes<8> and float give the same bits on millions of arguments") {
+  TEST_CASE("Float8, Float8x2, Lanes<8> and float give the same bits on millions of arguments") {
     using raster::simd::Lanes;
     namespace glsl = raster::glsl;
     using L8 = Lanes<8>;
 #if RASTER_AVX2
     using raster::simd::Float8;
+    using raster::simd::Float8x2;
 #endif
     struct Fn {
       const char* name;
       L8 (*lanes)(L8, L8);
 #if RASTER_AVX2
       Float8 (*fast)(Float8, Float8);
+      Float8x2 (*paired)(Float8x2, Float8x2);
 #endif
       float (*scalar)(float, float);
     };
@@ -414,6 +416,7 @@ TEST_SUITE("gl_math") {
 #define RASTER_GL_MATH_FN(name, expr)                                                            \
   Fn {                                                                                           \
     name, [](L8 x, L8 y) -> L8 { (void)y; return expr; }, [](Float8 x, Float8 y) -> Float8 { (void)y; return expr; }, \
+        [](Float8x2 x, Float8x2 y) -> Float8x2 { (void)y; return expr; },                      \
         [](float x, float y) -> float { (void)y; return expr; }                                  \
   }
 #else
@@ -446,14 +449,19 @@ TEST_SUITE("gl_math") {
         }
         fn.lanes(L8::load(xs), L8::load(ys)).store(lanesOut);
 #if RASTER_AVX2
-        alignas(32) float fastOut[8];
+        alignas(32) float fastOut[8], swappedOut[8], pairedOut[16];
         fn.fast(Float8::load(xs), Float8::load(ys)).store(fastOut);
+        fn.fast(Float8::load(ys), Float8::load(xs)).store(swappedOut);
+        // Float8x2: (x, y) in the low half, (y, x) in the high half.
+        fn.paired({Float8::load(xs), Float8::load(ys)}, {Float8::load(ys), Float8::load(xs)}).store(pairedOut);
 #endif
         for (int l = 0; l < 8; ++l) {
 #if RASTER_AVX2
           if (bits(fastOut[l]) != bits(lanesOut[l]) && differing++ == 0)
             first = "x = " + std::to_string(xs[l]) + ", y = " + std::to_string(ys[l]) + ": Float8 " +
                     std::to_string(fastOut[l]) + ", Lanes<8> " + std::to_string(lanesOut[l]);
+          if ((bits(pairedOut[l]) != bits(fastOut[l]) || bits(pairedOut[l + 8]) != bits(swappedOut[l])) && differing++ == 0)
+            first = "x = " + std::to_string(xs[l]) + ", y = " + std::to_string(ys[l]) + ": Float8x2 differs from Float8";
 #endif
           scalarDiffering += bits(fn.scalar(xs[l], ys[l])) != bits(lanesOut[l]);
         }

@@ -1,6 +1,7 @@
-// Shader ports: the SIMD instantiation (Float8) and the plain C++ one (Lanes<8>) of every
-// port agree bit for bit, vertex and fragment, on random inputs. Each lane type computes
-// every operation as the same single IEEE float32 operation, so no ULP allowance is needed.
+// Shader ports: the SIMD instantiations (Float8, and Float8x2 for two groups at once) and
+// the plain C++ one (Lanes<8>) of every port agree bit for bit, vertex and fragment, on
+// random inputs. Each lane type computes every operation as the same single IEEE float32
+// operation, so no ULP allowance is needed.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -68,33 +69,58 @@ void checkVertexAgrees(const typename Program::Uniforms& u, std::mt19937& rng) {
   }
 }
 
-// Runs Program::fragment on both lane types with the same random varyings.
+// Runs Program::fragment with the same random varyings on the plain lanes, on the SIMD
+// lanes, and (AVX2) on two SIMD groups paired as one Float8x2 call, as the pipeline shades
+// texture-reading programs.
 template <class Program>
 void checkFragmentAgrees(const typename Program::Uniforms& u, std::mt19937& rng, float lo, float hi) {
   constexpr int n = raster::varyingFloatCount<Program>();
   std::uniform_real_distribution<float> value(lo, hi);
+  float lanes[2][n > 0 ? n : 1][8];   // two groups' varyings
+  for (auto& group : lanes)
+    for (int i = 0; i < n; ++i)
+      for (float& x : group[i]) x = value(rng);
+  float plain[2][raster::kMaxColorOutputs][4][8];
+  for (int g = 0; g < 2; ++g) {
+    Plain pv[n > 0 ? n : 1];
+    for (int i = 0; i < n; ++i) pv[i] = lanesFrom<Plain>(lanes[g][i]);
+    raster::FragmentInput<Plain> plainIn;
+    plainIn.gl_FragCoord = {Plain(0.5f), Plain(0.5f), Plain(0.5f), Plain(1.0f)};
+    raster::FragmentOutput<Plain> plainOut;
+    Program::fragment(u, plainIn, raster::varyingsFromArray<Program, Plain>(pv), plainOut);
+    for (int k = 0; k < Program::kColorOutputs; ++k) storeVec4(plainOut.color[k], plain[g][k]);
+  }
+
   Fast fv[n > 0 ? n : 1];
-  Plain pv[n > 0 ? n : 1];
-  for (int i = 0; i < n; ++i) {
-    float lanes[8];
-    for (float& x : lanes) x = value(rng);
-    fv[i] = lanesFrom<Fast>(lanes);
-    pv[i] = lanesFrom<Plain>(lanes);
-  }
+  for (int i = 0; i < n; ++i) fv[i] = lanesFrom<Fast>(lanes[0][i]);
   raster::FragmentInput<Fast> fastIn;
-  raster::FragmentInput<Plain> plainIn;
   fastIn.gl_FragCoord = {Fast(0.5f), Fast(0.5f), Fast(0.5f), Fast(1.0f)};
-  plainIn.gl_FragCoord = {Plain(0.5f), Plain(0.5f), Plain(0.5f), Plain(1.0f)};
   raster::FragmentOutput<Fast> fastOut;
-  raster::FragmentOutput<Plain> plainOut;
   Program::fragment(u, fastIn, raster::varyingsFromArray<Program, Fast>(fv), fastOut);
-  Program::fragment(u, plainIn, raster::varyingsFromArray<Program, Plain>(pv), plainOut);
   for (int k = 0; k < Program::kColorOutputs; ++k) {
-    float a[4][8], b[4][8];
+    float a[4][8];
     storeVec4(fastOut.color[k], a);
-    storeVec4(plainOut.color[k], b);
-    CHECK(sameBits(&a[0][0], &b[0][0], 32));
+    CHECK(sameBits(&a[0][0], &plain[0][k][0][0], 32));
   }
+
+#if RASTER_AVX2
+  using Paired = raster::simd::Float8x2;
+  using raster::simd::Float8;
+  Paired qv[n > 0 ? n : 1];
+  for (int i = 0; i < n; ++i) qv[i] = {Float8::load(lanes[0][i]), Float8::load(lanes[1][i])};
+  raster::FragmentInput<Paired> pairedIn;
+  pairedIn.gl_FragCoord = {Paired(0.5f), Paired(0.5f), Paired(0.5f), Paired(1.0f)};
+  raster::FragmentOutput<Paired> pairedOut;
+  Program::fragment(u, pairedIn, raster::varyingsFromArray<Program, Paired>(qv), pairedOut);
+  for (int k = 0; k < Program::kColorOutputs; ++k) {
+    const raster::glsl::vec4<Paired>& c = pairedOut.color[k];
+    float a[4][8], b[4][8];
+    storeVec4(raster::glsl::vec4<Float8>(c.x.lo, c.y.lo, c.z.lo, c.w.lo), a);
+    storeVec4(raster::glsl::vec4<Float8>(c.x.hi, c.y.hi, c.z.hi, c.w.hi), b);
+    CHECK(sameBits(&a[0][0], &plain[0][k][0][0], 32));
+    CHECK(sameBits(&b[0][0], &plain[1][k][0][0], 32));
+  }
+#endif
 }
 
 glm::mat4 randomMatrix(std::mt19937& rng) {

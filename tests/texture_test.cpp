@@ -111,7 +111,7 @@ TEST_SUITE("texture") {
   }
 
 #if RASTER_AVX2
-  TEST_CASE("the 8-lane sampler, for all lanes or some, equals the scalar reference on every wrap, filter and format") {
+  TEST_CASE("the 8-lane and paired samplers, for all lanes or some, equal the scalar reference on every wrap, filter and format") {
     std::mt19937 rng(77);
     const float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e30f, -1e30f, 3e9f, std::nanf(""),
                               std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
@@ -126,28 +126,40 @@ TEST_SUITE("texture") {
             for (raster::Wrap wt : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge}) {
               tex.sampler = {filter, ws, wt, false};
               for (int round = 0; round < 200; ++round) {
-                alignas(32) float s8[8], t8[8];
-                for (int i = 0; i < 8; ++i) {
-                  s8[i] = rng() % 8 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, -3.0f, 3.0f);
-                  t8[i] = rng() % 8 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, -3.0f, 3.0f);
+                // Lanes 0-7 go to the 8-lane lookups; all 16 to the paired ones (Float8x2).
+                alignas(32) float s16[16], t16[16];
+                for (int i = 0; i < 16; ++i) {
+                  s16[i] = rng() % 8 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, -3.0f, 3.0f);
+                  t16[i] = rng() % 8 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, -3.0f, 3.0f);
                 }
-                raster::simd::Float8 out[4], outLive[4];
-                raster::sampling::sampleColor8(tex, raster::simd::Float8::load(s8), raster::simd::Float8::load(t8), out);
+                using raster::simd::Float8;
+                using raster::simd::Mask8;
+                Float8 out[4], outLive[4];
+                raster::sampling::sampleColor8(tex, Float8::load(s16), Float8::load(t16), out);
                 // The lookup for some lanes only (textureWhere): those lanes must still be exact.
-                const unsigned liveBits = rng() & 0xFFu;
-                raster::sampling::sampleColor8(tex, raster::simd::Float8::load(s8), raster::simd::Float8::load(t8),
-                                               raster::simd::Mask8::fromBits(liveBits), outLive);
-                for (int i = 0; i < 8; ++i) {
+                const unsigned liveBits = rng() & 0xFFFFu;
+                raster::sampling::sampleColor8(tex, Float8::load(s16), Float8::load(t16), Mask8::fromBits(liveBits & 0xFFu),
+                                               outLive);
+                const Float8 sPair[2] = {Float8::load(s16), Float8::load(s16 + 8)};
+                const Float8 tPair[2] = {Float8::load(t16), Float8::load(t16 + 8)};
+                const Mask8 livePair[2] = {Mask8::fromBits(liveBits & 0xFFu), Mask8::fromBits(liveBits >> 8)};
+                Float8 pair[2][4], pairLive[2][4];
+                raster::sampling::sampleColor8x2(tex, sPair, tPair, pair);
+                raster::sampling::sampleColor8x2(tex, sPair, tPair, livePair, pairLive);
+                for (int i = 0; i < 16; ++i) {
                   float ref[4];
-                  raster::sampling::sampleColor(tex, s8[i], t8[i], ref);
+                  raster::sampling::sampleColor(tex, s16[i], t16[i], ref);
+                  const bool live = (liveBits >> i) & 1u;
                   for (int c = 0; c < 4; ++c) {
-                    for (const float got : {out[c][i], (liveBits >> i) & 1u ? outLive[c][i] : ref[c]}) {
+                    const float paired = pair[i / 8][c][i % 8], pairedLive = live ? pairLive[i / 8][c][i % 8] : ref[c];
+                    const float single = i < 8 ? out[c][i] : ref[c], singleLive = i < 8 && live ? outLive[c][i] : ref[c];
+                    for (const float got : {single, singleLive, paired, pairedLive}) {
                       // NaN against NaN agrees: which NaN's sign survives an fma of NaNs may differ.
                       if (bitsOf(got) == bitsOf(ref[c]) || (std::isnan(got) && std::isnan(ref[c]))) continue;
                       if (++mismatches <= 3)
                         MESSAGE("mismatch: format " << int(format) << " " << w << "x" << h << " filter " << int(filter)
-                                << " wrap " << int(ws) << int(wt) << " at (" << s8[i] << ", " << t8[i] << ") channel " << c
-                                << ": 8-lane " << got << " scalar " << ref[c]);
+                                << " wrap " << int(ws) << int(wt) << " at (" << s16[i] << ", " << t16[i] << ") channel " << c
+                                << ": SIMD " << got << " scalar " << ref[c]);
                     }
                   }
                   ++lookups;

@@ -102,4 +102,13 @@ constexpr UniformEntry<Uniforms, T> uniform(std::string_view name, T Uniforms::*
   return {name, member};
 }
 
+// Whether a program has a sampler uniform, i.e. its fragment shader reads textures.
+template <class Entry> struct IsSamplerEntry : std::false_type {};
+template <class Uniforms> struct IsSamplerEntry<UniformEntry<Uniforms, Sampler2D>> : std::true_type {};
+template <class Uniforms> struct IsSamplerEntry<UniformEntry<Uniforms, Sampler2DShadow>> : std::true_type {};
+template <class Program>
+constexpr bool samplesTextures() {
+  return std::apply([](auto... entry) { return (... || IsSamplerEntry<decltype(entry)>::value); }, Program::kUniformTable);
+}
+
 }  // namespace raster

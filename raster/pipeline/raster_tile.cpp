@@ -156,17 +156,28 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
   }
 }
 
-// Shades one lane group whose covered lanes are `laneMask`, at group origin (gx, gy).
+// A lane group that passed its depth test: everything its shader call needs.
 template <class F>
-void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
-                int gx, int gy, unsigned laneMask, PipelineCounters& counters) {
+struct ReadyGroup {
+  const RecordedDraw* draw = nullptr;
+  unsigned laneMask = 0;          // lanes that passed: the ones whose outputs are written
+  int outputs = 0;                // colour outputs both the shader and the framebuffer have
+  size_t texel[F::kCount];        // each lane's pixel index in the attachments
+  FragmentInput<F> in;
+  F varyings[kMaxVaryingFloats];
+};
+
+// Depth test and fragment inputs of one lane group whose covered lanes are `laneMask`, at
+// group origin (gx, gy). False when nothing is left to shade.
+template <class F>
+bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
+                  int gx, int gy, unsigned laneMask, PipelineCounters& counters, ReadyGroup<F>& group) {
   constexpr int kLanes = F::kCount;
   const Framebuffer& fb = *job.framebuffer;
   // Pixel coordinates per lane (small integers: the float sums are exact).
   const F px = F(float(gx)) + layout.dxLanes;
   const F py = F(float(gy)) + layout.dyLanes;
-  size_t texel[kLanes];
-  for (int i = 0; i < kLanes; ++i) texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+  for (int i = 0; i < kLanes; ++i) group.texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
 
   // Depth: plane + offset, clamped to [0, 1] (NaN -> 0), quantized, tested, written.
   const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
@@ -186,38 +197,131 @@ void shadeGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw
     } else
 #endif
     {
-      laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), texel, laneMask,
+      laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), group.texel, laneMask,
                                                   state.depthFunc == DepthFunc::Lequal, state.depthWrite);
     }
   }
-  if (!laneMask) return;
-  const int outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
-  if (outputs == 0) return;   // depth-only: the colour the shader would write is discarded
+  if (!laneMask) return false;
+  group.outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
+  if (group.outputs == 0) return false;   // depth-only: the colour the shader would write is discarded
   counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+  group.draw = &draw;
+  group.laneMask = laneMask;
 
   // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
   const F w = evaluatePlane(tri.w, px, py);
   const F oow = F(1.0f) / w;
-  F varyings[kMaxVaryingFloats];
   const int varyingCount = draw.shader->varyingFloats();
-  for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
+  for (int v = 0; v < varyingCount; ++v) group.varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
 
-  FragmentInput<F> in;
   // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
   const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
-  in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
-  in.gl_FrontFacing = tri.frontFacing;
-  FragmentOutput<F> out;
+  group.in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
+  group.in.gl_FrontFacing = tri.frontFacing;
+  return true;
+}
+
+// Shades one ready group and writes its colour outputs.
+template <class F>
+void shadeGroup(const TileJob& job, const ReadyGroup<F>& group, PipelineCounters& counters) {
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
-  draw.shader->shadeFragments(in, varyings, out);
+  FragmentOutput<F> out;
+  group.draw->shader->shadeFragments(group.in, group.varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;
   counters.laneGroupsShaded += 1;
-  counters.lanesShaded += kLanes;
+  counters.lanesShaded += F::kCount;
 
-  for (int k = 0; k < outputs; ++k) writeColorOutput(*fb.colors[k], out.color[k], texel, laneMask, state.blendAdditive);
+  const Framebuffer& fb = *job.framebuffer;
+  for (int k = 0; k < group.outputs; ++k)
+    writeColorOutput(*fb.colors[k], out.color[k], group.texel, group.laneMask, group.draw->state.blendAdditive);
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
+
+#if RASTER_AVX2
+// Two groups of the same draw and facing can share one shader call: their pixels differ
+// (a later triangle's group is only prepared after the earlier one's depth write), and
+// their colours are written in order, so the framebuffer ends the same as shading each.
+bool canPair(const ReadyGroup<simd::Float8>& a, const ReadyGroup<simd::Float8>& b) {
+  return a.draw == b.draw && a.in.gl_FrontFacing == b.in.gl_FrontFacing;
+}
+
+// Shades two ready groups in one Float8x2 call, then writes a's outputs and b's.
+void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const ReadyGroup<simd::Float8>& b,
+                    PipelineCounters& counters) {
+  using simd::Float8x2;
+  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
+  FragmentInput<Float8x2> in;
+  const glsl::vec4<simd::Float8>& ca = a.in.gl_FragCoord;
+  const glsl::vec4<simd::Float8>& cb = b.in.gl_FragCoord;
+  in.gl_FragCoord = {{ca.x, cb.x}, {ca.y, cb.y}, {ca.z, cb.z}, {ca.w, cb.w}};
+  in.gl_FrontFacing = a.in.gl_FrontFacing;
+  Float8x2 varyings[kMaxVaryingFloats];
+  const int varyingCount = a.draw->shader->varyingFloats();
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = {a.varyings[v], b.varyings[v]};
+  FragmentOutput<Float8x2> out;
+  a.draw->shader->shadeFragments(in, varyings, out);
+  const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
+  counters.shadeCycles += mergeStart - shadeStart;
+  counters.laneGroupsShaded += 2;
+  counters.lanesShaded += Float8x2::kCount;
+
+  const Framebuffer& fb = *job.framebuffer;
+  const bool additive = a.draw->state.blendAdditive;
+  for (int k = 0; k < a.outputs; ++k) {
+    const glsl::vec4<Float8x2>& c = out.color[k];
+    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.lo, c.y.lo, c.z.lo, c.w.lo), a.texel, a.laneMask, additive);
+    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.hi, c.y.hi, c.z.hi, c.w.hi), b.texel, b.laneMask, additive);
+  }
+  if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
+}
+#endif
+
+// Shades a tile's ready groups in order. Programs that read textures are shaded two groups
+// per call (Float8x2): a group waits in its slot until the next ready group joins it, or
+// until one that cannot join (another draw or facing) or the end of the tile sends it alone.
+// Each group passed its depth test before it became ready, and colours are written in the
+// order the groups became ready, so the framebuffer ends as if each were shaded alone.
+template <class F>
+class GroupShader {
+ public:
+  GroupShader(const TileJob& job, PipelineCounters& counters) : job_(job), counters_(counters) {}
+  // Where the next group is prepared: never the waiting group's slot.
+  ReadyGroup<F>& next() { return slots_[nextIndex()]; }
+  // next() holds a ready group: shade it now, with the waiting one, or let it wait.
+  void push() {
+    const int index = nextIndex();
+    ReadyGroup<F>& ready = slots_[index];
+#if RASTER_AVX2
+    if constexpr (std::is_same_v<F, simd::Float8>) {
+      if (ready.draw->shader->samplesTextures()) {
+        if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
+          shadeGroupPair(job_, slots_[waiting_], ready, counters_);
+          waiting_ = -1;
+          return;
+        }
+        flush();
+        waiting_ = index;
+        return;
+      }
+    }
+#endif
+    flush();
+    shadeGroup(job_, ready, counters_);
+  }
+  // Shades the waiting group alone.
+  void flush() {
+    if (waiting_ >= 0) shadeGroup(job_, slots_[waiting_], counters_);
+    waiting_ = -1;
+  }
+
+ private:
+  int nextIndex() const { return waiting_ == 0 ? 1 : 0; }
+  const TileJob& job_;
+  PipelineCounters& counters_;
+  ReadyGroup<F> slots_[2];
+  int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
+};
 
 }  // namespace
 
@@ -231,6 +335,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   const uint64_t tileStart = job.timeStages ? cycleCount() : 0;
   const uint64_t shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
 
+  GroupShader<F> shader(job, counters);
   for (uint32_t index : bin) {
     const SetupTriangle& tri = job.triangles[index];
     const RecordedDraw& draw = job.draws[tri.drawIndex];
@@ -244,11 +349,12 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
           const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
           const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
                                                    : layout.laneMask(coverage, g);
-          if (laneMask) shadeGroup(job, tri, draw, layout, gx, gy, laneMask, counters);
+          if (laneMask && prepareGroup(job, tri, draw, layout, gx, gy, laneMask, counters, shader.next())) shader.push();
         }
       }
     }
   }
+  shader.flush();
   if (job.timeStages)
     counters.rasterCycles += (cycleCount() - tileStart) - (counters.shadeCycles - shadeBefore) - (counters.mergeCycles - mergeBefore);
 }

@@ -12,6 +12,9 @@
 // Per group: z from its plane plus polygon offset, clamped to [0, 1] and quantized; depth
 // test and write; then varyings (perspective-correct), the fragment shader, and the
 // conversion and write of every colour output for the lanes that passed.
+// Programs that read textures are shaded two groups per call (simd::Float8x2, with AVX2):
+// their lookups wait on memory, and a second group's lookups overlap that wait. Pairing
+// never changes a bit: lanes are independent, and writes keep their order.
 #pragma once
 
 #include <span>

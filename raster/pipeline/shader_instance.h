@@ -13,12 +13,19 @@ namespace raster {
 // The lane type the reference path shades with: one 2x2 quad in plain loops.
 using ScalarLanes = simd::Lanes<4>;
 using simd::FastLanes;
+#if RASTER_AVX2
+// Two FastLanes groups shaded in one call (raster_tile.cpp pairs them).
+using PairedLanes = simd::Float8x2;
+#endif
 
 class ShaderInstance {
  public:
   virtual ~ShaderInstance() = default;
   virtual int varyingFloats() const = 0;
   virtual int colorOutputs() const = 0;
+  // Whether its fragment shader reads textures: the pipeline then shades lane groups two
+  // at a time (raster_tile.cpp), so one group's texel loads overlap the other's.
+  virtual bool samplesTextures() const = 0;
   // Shades vertices [0, stream.vertexCount) of one instance into records
   // [recordBase, recordBase + vertexCount) of `out`.
   virtual void shadeVertices(const VertexStream& stream, int instance, int recordBase, const ViewportTransform& viewport,
@@ -28,6 +35,10 @@ class ShaderInstance {
                               FragmentOutput<FastLanes>& out) const = 0;
   virtual void shadeFragments(const FragmentInput<ScalarLanes>& in, const ScalarLanes* varyings,
                               FragmentOutput<ScalarLanes>& out) const = 0;
+#if RASTER_AVX2
+  virtual void shadeFragments(const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
+                              FragmentOutput<PairedLanes>& out) const = 0;
+#endif
 };
 
 template <class Program>
@@ -37,6 +48,7 @@ class ProgramInstance final : public ShaderInstance {
 
   int varyingFloats() const override { return varyingFloatCount<Program>(); }
   int colorOutputs() const override { return Program::kColorOutputs; }
+  bool samplesTextures() const override { return raster::samplesTextures<Program>(); }
 
   void shadeVertices(const VertexStream& stream, int instance, int recordBase, const ViewportTransform& viewport,
                      ShadedVertices& out) const override {
@@ -55,6 +67,12 @@ class ProgramInstance final : public ShaderInstance {
                       FragmentOutput<ScalarLanes>& out) const override {
     shade(in, varyings, out);
   }
+#if RASTER_AVX2
+  void shadeFragments(const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
+                      FragmentOutput<PairedLanes>& out) const override {
+    shade(in, varyings, out);
+  }
+#endif
 
  private:
   template <class F>

@@ -34,10 +34,10 @@
 // log2, acos, pow(x, 48.0), pow(x, 2.2) and pow(x, 0.4545), and 31 million arguments each
 // of pow(x, y), atan(y, x) and the other forms.
 //
-// Lane types: float, simd::Lanes<N> (plain loops: the readable reference) and simd::Float8
-// (AVX2). One generic text per function, over a few bit-level helpers (detail::), so the
-// three give identical bits; tests/gl_math_test.cpp checks it, and checks all of them
-// against llvmpipe through real GL.
+// Lane types: float, simd::Lanes<N> (plain loops: the readable reference), simd::Float8
+// (AVX2) and simd::Float8x2 (two Float8 groups). One generic text per function, over a few
+// bit-level helpers (detail::), so all of them give identical bits; tests/gl_math_test.cpp
+// checks it, and checks them against llvmpipe through real GL.
 #pragma once
 
 #include <cmath>
@@ -137,6 +137,33 @@ inline simd::Float8 floorF(simd::Float8 a) { return simd::floor(a); }
 inline simd::Float8 sqrtF(simd::Float8 a) { return simd::sqrt(a); }
 inline simd::Float8 minps(simd::Float8 a, simd::Float8 b) { return simd::min(a, b); }
 inline simd::Float8 maxps(simd::Float8 a, simd::Float8 b) { return simd::max(a, b); }
+
+// Float8x2: the same, half by half.
+struct U8x2 {
+  U8 lo, hi;
+  U8x2() = default;
+  U8x2(uint32_t s) : lo(s), hi(s) {}  // NOLINT: broadcast
+  U8x2(U8 low, U8 high) : lo(low), hi(high) {}
+  friend U8x2 operator&(U8x2 a, U8x2 b) { return {a.lo & b.lo, a.hi & b.hi}; }
+  friend U8x2 operator|(U8x2 a, U8x2 b) { return {a.lo | b.lo, a.hi | b.hi}; }
+  friend U8x2 operator^(U8x2 a, U8x2 b) { return {a.lo ^ b.lo, a.hi ^ b.hi}; }
+  friend U8x2 operator+(U8x2 a, U8x2 b) { return {a.lo + b.lo, a.hi + b.hi}; }
+  friend U8x2 operator-(U8x2 a, U8x2 b) { return {a.lo - b.lo, a.hi - b.hi}; }
+  friend U8x2 operator~(U8x2 a) { return {~a.lo, ~a.hi}; }
+  friend U8x2 operator<<(U8x2 a, int n) { return {a.lo << n, a.hi << n}; }
+  friend U8x2 operator>>(U8x2 a, int n) { return {a.lo >> n, a.hi >> n}; }
+};
+inline U8x2 asBits(simd::Float8x2 f) { return {asBits(f.lo), asBits(f.hi)}; }
+inline simd::Float8x2 asFloat(U8x2 u) { return {asFloat(u.lo), asFloat(u.hi)}; }
+inline U8x2 cvtt(simd::Float8x2 f) { return {cvtt(f.lo), cvtt(f.hi)}; }
+inline simd::Float8x2 cvt(U8x2 u) { return {cvt(u.lo), cvt(u.hi)}; }
+inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {eq(a.lo, b.lo), eq(a.hi, b.hi)}; }
+inline simd::Float8x2 sel(simd::Mask8x2 m, simd::Float8x2 a, simd::Float8x2 b) { return simd::select(m, a, b); }
+inline simd::Float8x2 fmaF(simd::Float8x2 a, simd::Float8x2 b, simd::Float8x2 c) { return simd::fma(a, b, c); }
+inline simd::Float8x2 floorF(simd::Float8x2 a) { return simd::floor(a); }
+inline simd::Float8x2 sqrtF(simd::Float8x2 a) { return simd::sqrt(a); }
+inline simd::Float8x2 minps(simd::Float8x2 a, simd::Float8x2 b) { return simd::min(a, b); }
+inline simd::Float8x2 maxps(simd::Float8x2 a, simd::Float8x2 b) { return simd::max(a, b); }
 #endif
 
 template <class F> struct IntLanesOf;
@@ -144,6 +171,7 @@ template <> struct IntLanesOf<float> { using type = uint32_t; };
 template <int N> struct IntLanesOf<simd::Lanes<N>> { using type = ULanes<N>; };
 #if RASTER_AVX2
 template <> struct IntLanesOf<simd::Float8> { using type = U8; };
+template <> struct IntLanesOf<simd::Float8x2> { using type = U8x2; };
 #endif
 template <class F> using UOf = typename IntLanesOf<F>::type;
 
@@ -209,8 +237,10 @@ constexpr float kAtan11 = -0.0121323213173444f;
 //   P(f) = lp_build_polynomial(f, degree 5): f2 = f*f, even/odd Horner in f2 with
 //          fmuladd, then fmuladd(odd, f, even)
 //   result = expipart * P(fpart)                        (plain multiply)
+// Always inlined (here and log2Impl): pow is exp2(log2), and for Float8x2 an outlined call
+// would pass both 64-byte halves through the stack.
 template <class F>
-F exp2Impl(F x) {
+[[gnu::always_inline]] inline F exp2Impl(F x) {
   using U = UOf<F>;
   x = daz(x);
   x = minps(F(128.0f), x);
@@ -238,7 +268,7 @@ F exp2Impl(F x) {
 //   then, unordered compares: x >= +inf -> +inf; x == 0 -> -inf; x < 0 -> NaN
 //   (so NaN -> NaN; with DAZ a denormal compares equal to 0 -> -inf).
 template <class F>
-F log2Impl(F x) {
+[[gnu::always_inline]] inline F log2Impl(F x) {
   using U = UOf<F>;
   x = daz(x);
   const U i = asBits(x);

@@ -178,6 +178,61 @@ inline Float8 quadDdy(Float8 a) {
   return Float8(_mm256_sub_ps(bottom, top));
 }
 
+// ---------------------------------------------------------------------------------------
+// Float8x2: two lane groups shaded as one, op for op (lo is one 4x2 group, hi another).
+// Same semantics as Lanes<16>, lane for lane. The halves share no data, so the core overlaps
+// one half's texture reads and long dependency chains (sin, pow) with the other's: one
+// group alone leaves it waiting on every gather.
+struct Mask8x2 {
+  Mask8 lo, hi;
+  friend Mask8x2 operator&(Mask8x2 a, Mask8x2 b) { return {a.lo & b.lo, a.hi & b.hi}; }
+  friend Mask8x2 operator|(Mask8x2 a, Mask8x2 b) { return {a.lo | b.lo, a.hi | b.hi}; }
+  friend Mask8x2 operator!(Mask8x2 a) { return {!a.lo, !a.hi}; }
+  unsigned bits() const { return lo.bits() | hi.bits() << 8; }
+  static Mask8x2 fromBits(unsigned b) { return {Mask8::fromBits(b & 0xFFu), Mask8::fromBits(b >> 8)}; }
+};
+
+struct Float8x2 {
+  static constexpr int kCount = 16;
+  using MaskType = Mask8x2;
+  Float8 lo, hi;
+
+  Float8x2() = default;
+  Float8x2(float s) : lo(s), hi(s) {}  // NOLINT: broadcast, as GLSL scalars
+  Float8x2(Float8 low, Float8 high) : lo(low), hi(high) {}
+  static Float8x2 load(const float* p) { return {Float8::load(p), Float8::load(p + 8)}; }
+  void store(float* p) const { lo.store(p); hi.store(p + 8); }
+  float operator[](int i) const { return i < 8 ? lo[i] : hi[i - 8]; }
+
+  friend Float8x2 operator+(Float8x2 a, Float8x2 b) { return {a.lo + b.lo, a.hi + b.hi}; }
+  friend Float8x2 operator-(Float8x2 a, Float8x2 b) { return {a.lo - b.lo, a.hi - b.hi}; }
+  friend Float8x2 operator*(Float8x2 a, Float8x2 b) { return {a.lo * b.lo, a.hi * b.hi}; }
+  friend Float8x2 operator/(Float8x2 a, Float8x2 b) { return {a.lo / b.lo, a.hi / b.hi}; }
+  friend Float8x2 operator-(Float8x2 a) { return {-a.lo, -a.hi}; }
+  Float8x2& operator+=(Float8x2 b) { return *this = *this + b; }
+  Float8x2& operator-=(Float8x2 b) { return *this = *this - b; }
+  Float8x2& operator*=(Float8x2 b) { return *this = *this * b; }
+  Float8x2& operator/=(Float8x2 b) { return *this = *this / b; }
+
+  friend Mask8x2 operator<(Float8x2 a, Float8x2 b) { return {a.lo < b.lo, a.hi < b.hi}; }
+  friend Mask8x2 operator<=(Float8x2 a, Float8x2 b) { return {a.lo <= b.lo, a.hi <= b.hi}; }
+  friend Mask8x2 operator>(Float8x2 a, Float8x2 b) { return {a.lo > b.lo, a.hi > b.hi}; }
+  friend Mask8x2 operator>=(Float8x2 a, Float8x2 b) { return {a.lo >= b.lo, a.hi >= b.hi}; }
+  friend Mask8x2 operator==(Float8x2 a, Float8x2 b) { return {a.lo == b.lo, a.hi == b.hi}; }
+};
+
+inline Float8x2 select(Mask8x2 m, Float8x2 a, Float8x2 b) { return {select(m.lo, a.lo, b.lo), select(m.hi, a.hi, b.hi)}; }
+inline Float8x2 fma(Float8x2 a, Float8x2 b, Float8x2 c) { return {fma(a.lo, b.lo, c.lo), fma(a.hi, b.hi, c.hi)}; }
+inline Float8x2 min(Float8x2 a, Float8x2 b) { return {min(a.lo, b.lo), min(a.hi, b.hi)}; }
+inline Float8x2 max(Float8x2 a, Float8x2 b) { return {max(a.lo, b.lo), max(a.hi, b.hi)}; }
+inline Float8x2 floor(Float8x2 a) { return {floor(a.lo), floor(a.hi)}; }
+inline Float8x2 sqrt(Float8x2 a) { return {sqrt(a.lo), sqrt(a.hi)}; }
+inline Float8x2 abs(Float8x2 a) { return {abs(a.lo), abs(a.hi)}; }
+inline bool any(Mask8x2 m) { return any(m.lo | m.hi); }
+inline bool all(Mask8x2 m) { return all(m.lo) && all(m.hi); }
+inline Float8x2 quadDdx(Float8x2 a) { return {quadDdx(a.lo), quadDdx(a.hi)}; }
+inline Float8x2 quadDdy(Float8x2 a) { return {quadDdy(a.lo), quadDdy(a.hi)}; }
+
 using FastLanes = Float8;
 #else
 using FastLanes = Lanes<8>;

@@ -72,23 +72,39 @@ __m256i lerp8(__m256i weight, __m256i a, __m256i b) {
 
 __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
 
-void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
+// N independent 8-lane lookups (N = 2 for Float8x2 shading). Each phase runs over all of
+// them before the next, so the texel loads of every lookup are in flight together: one
+// lookup's cache misses overlap the other's instead of following them.
+template <int N>
+[[gnu::always_inline]] inline void sampleRgba8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
   const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
   const __m256i width = splat(t.width);
   auto fetch = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4); };
   const __m256 kUnorm8 = splat(float(1.0 / 255.0));
   if (t.sampler.filter == Filter::Nearest) {
-    const __m256i p = fetch(wrapNearest(s, t.width, t.sampler.wrapS, true), wrapNearest(tc, t.height, t.sampler.wrapT, true));
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel(p, c)), kUnorm8));
+    __m256i p[N];
+    for (int h = 0; h < N; ++h)
+      p[h] = fetch(wrapNearest(s[h], t.width, t.sampler.wrapS, true), wrapNearest(tc[h], t.height, t.sampler.wrapT, true));
+    for (int h = 0; h < N; ++h)
+      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel(p[h], c)), kUnorm8));
     return;
   }
-  const FixedTaps8 x = wrapLinearFixed(s, t.width, t.sampler.wrapS);
-  const FixedTaps8 y = wrapLinearFixed(tc, t.height, t.sampler.wrapT);
-  const __m256i p00 = fetch(x.x0, y.x0), p01 = fetch(x.x1, y.x0), p10 = fetch(x.x0, y.x1), p11 = fetch(x.x1, y.x1);
-  for (int c = 0; c < 4; ++c) {
-    const __m256i row0 = lerp8(x.weight, channel(p00, c), channel(p01, c));
-    const __m256i row1 = lerp8(x.weight, channel(p10, c), channel(p11, c));
-    out[c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(y.weight, row0, row1)), kUnorm8));
+  FixedTaps8 x[N], y[N];
+  __m256i p00[N], p01[N], p10[N], p11[N];
+  for (int h = 0; h < N; ++h) {
+    x[h] = wrapLinearFixed(s[h], t.width, t.sampler.wrapS);
+    y[h] = wrapLinearFixed(tc[h], t.height, t.sampler.wrapT);
+    p00[h] = fetch(x[h].x0, y[h].x0);
+    p01[h] = fetch(x[h].x1, y[h].x0);
+    p10[h] = fetch(x[h].x0, y[h].x1);
+    p11[h] = fetch(x[h].x1, y[h].x1);
+  }
+  for (int h = 0; h < N; ++h) {
+    for (int c = 0; c < 4; ++c) {
+      const __m256i row0 = lerp8(x[h].weight, channel(p00[h], c), channel(p01[h], c));
+      const __m256i row1 = lerp8(x[h].weight, channel(p10[h], c), channel(p11[h], c));
+      out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(y[h].weight, row0, row1)), kUnorm8));
+    }
   }
 }
 
@@ -198,29 +214,70 @@ void sampleRgba8(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
   }
 }
 
-// NEAREST: one texel per lane, loaded only for the lanes in `live`.
-void sampleHalfNearest(const Texture& t, __m256 s, __m256 tc, __m256i live, simd::Float8 out[4]) {
-  __m256 rgba[4];
-  fetchHalf(t, wrapNearest(s, t.width, t.sampler.wrapS, false), wrapNearest(tc, t.height, t.sampler.wrapT, false), rgba,
-            live);
-  for (int c = 0; c < 4; ++c) out[c] = simd::Float8(rgba[c]);
+// NEAREST: one texel per lane, loaded only for the lanes in `live`; N lookups as sampleRgba8.
+template <int N>
+[[gnu::always_inline]] inline void sampleHalfNearest(const Texture& t, const __m256* s, const __m256* tc,
+                                                     const __m256i* live, simd::Float8 (*out)[4]) {
+  __m256 rgba[N][4];
+  for (int h = 0; h < N; ++h)
+    fetchHalf(t, wrapNearest(s[h], t.width, t.sampler.wrapS, false), wrapNearest(tc[h], t.height, t.sampler.wrapT, false),
+              rgba[h], live[h]);
+  for (int h = 0; h < N; ++h)
+    for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(rgba[h][c]);
 }
 
-void sampleHalf(const Texture& t, __m256 s, __m256 tc, simd::Float8 out[4]) {
-  if (t.sampler.filter == Filter::Nearest) return sampleHalfNearest(t, s, tc, splat(-1), out);
-  const LinearTaps8 x = wrapLinearFloat(s, t.width, t.sampler.wrapS);
-  const LinearTaps8 y = wrapLinearFloat(tc, t.height, t.sampler.wrapT);
-  __m256 p00[4], p01[4], p10[4], p11[4];
-  if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) {
-    fetchHalfPairs(t, x.i0, y.i0, p00, p01);
-    fetchHalfPairs(t, x.i0, y.i1, p10, p11);
-  } else {
-    fetchHalf(t, x.i0, y.i0, p00);
-    fetchHalf(t, x.i1, y.i0, p01);
-    fetchHalf(t, x.i0, y.i1, p10);
-    fetchHalf(t, x.i1, y.i1, p11);
+template <int N>
+[[gnu::always_inline]] inline void sampleHalf(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
+  if (t.sampler.filter == Filter::Nearest) {
+    __m256i all[N];
+    for (int h = 0; h < N; ++h) all[h] = splat(-1);
+    return sampleHalfNearest<N>(t, s, tc, all, out);
   }
-  blendFootprint(p00, p01, p10, p11, x.weight, y.weight, out);
+  LinearTaps8 x[N], y[N];
+  __m256 p00[N][4], p01[N][4], p10[N][4], p11[N][4];
+  for (int h = 0; h < N; ++h) {
+    x[h] = wrapLinearFloat(s[h], t.width, t.sampler.wrapS);
+    y[h] = wrapLinearFloat(tc[h], t.height, t.sampler.wrapT);
+    if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) {
+      fetchHalfPairs(t, x[h].i0, y[h].i0, p00[h], p01[h]);
+      fetchHalfPairs(t, x[h].i0, y[h].i1, p10[h], p11[h]);
+    } else {
+      fetchHalf(t, x[h].i0, y[h].i0, p00[h]);
+      fetchHalf(t, x[h].i1, y[h].i0, p01[h]);
+      fetchHalf(t, x[h].i0, y[h].i1, p10[h]);
+      fetchHalf(t, x[h].i1, y[h].i1, p11[h]);
+    }
+  }
+  for (int h = 0; h < N; ++h) blendFootprint(p00[h], p01[h], p10[h], p11[h], x[h].weight, y[h].weight, out[h]);
+}
+
+// N lookups of any format; the dead lanes of `live` may skip their loads (half NEAREST).
+template <int N>
+void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Float8* t, const simd::Mask8* live,
+                  simd::Float8 (*out)[4]) {
+  __m256 sv[N], tv[N];
+  for (int h = 0; h < N; ++h) sv[h] = s[h].v, tv[h] = t[h].v;
+  if (texture.format == TexelFormat::RGBA8) {
+    sampleRgba8<N>(texture, sv, tv, out);
+  } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest && live) {
+    __m256i liveBits[N];
+    for (int h = 0; h < N; ++h) liveBits[h] = _mm256_castps_si256(live[h].v);
+    sampleHalfNearest<N>(texture, sv, tv, liveBits, out);
+  } else if (texture.format == TexelFormat::RGBA16F) {
+    sampleHalf<N>(texture, sv, tv, out);
+  } else {   // RGBA32F targets are sampled only by tests: the scalar reference per lane
+    for (int h = 0; h < N; ++h) {
+      alignas(32) float ss[8], ts[8], planes[4][8];
+      s[h].store(ss);
+      t[h].store(ts);
+      for (int i = 0; i < 8; ++i) {
+        float rgba[4];
+        sampleColor(texture, ss[i], ts[i], rgba);
+        for (int c = 0; c < 4; ++c) planes[c][i] = rgba[c];
+      }
+      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8::load(planes[c]);
+    }
+  }
 }
 
 // The 3x3 grid for RGBA16F with LINEAR and CLAMP_TO_EDGE, when every tap of every lane
@@ -250,31 +307,29 @@ bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, fl
 }  // namespace
 
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]) {
-  if (texture.format == TexelFormat::RGBA8) {
-    sampleRgba8(texture, s.v, t.v, out);
-  } else if (texture.format == TexelFormat::RGBA16F) {
-    sampleHalf(texture, s.v, t.v, out);
-  } else {   // RGBA32F targets are sampled only by tests: the scalar reference per lane
-    alignas(32) float ss[8], ts[8], planes[4][8];
-    s.store(ss);
-    t.store(ts);
-    for (int i = 0; i < 8; ++i) {
-      float rgba[4];
-      sampleColor(texture, ss[i], ts[i], rgba);
-      for (int c = 0; c < 4; ++c) planes[c][i] = rgba[c];
-    }
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8::load(planes[c]);
-  }
+  sampleColorN<1>(texture, &s, &t, nullptr, reinterpret_cast<simd::Float8(*)[4]>(out));
 }
 
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]) {
   if (!any(live)) {
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8(0.0f);
-  } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest) {
-    sampleHalfNearest(texture, s.v, t.v, _mm256_castps_si256(live.v), out);
-  } else {   // every lane: the dead lanes' values are unspecified, so computing them is allowed
-    sampleColor8(texture, s, t, out);
+    return;
   }
+  sampleColorN<1>(texture, &s, &t, &live, reinterpret_cast<simd::Float8(*)[4]>(out));
+}
+
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], simd::Float8 out[2][4]) {
+  sampleColorN<2>(texture, s, t, nullptr, out);
+}
+
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
+                    simd::Float8 out[2][4]) {
+  if (!any(live[0] | live[1])) {
+    for (int h = 0; h < 2; ++h)
+      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(0.0f);
+    return;
+  }
+  sampleColorN<2>(texture, s, t, live, out);
 }
 
 void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,

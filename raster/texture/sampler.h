@@ -52,11 +52,27 @@ void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::
 // unspecified (zero where their loads are skipped).
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]);
 
+// Two independent 8-lane lookups at once (Float8x2 shading), each bit-identical to
+// sampleColor8: every texel load of both is issued before either blends, so their cache
+// misses overlap. The second form takes `live` masks as the masked sampleColor8.
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], simd::Float8 out[2][4]);
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
+                    simd::Float8 out[2][4]);
+
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
 // sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
 // CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
 void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,
                       simd::Float8 (*taps)[4]);
+#endif
+
+#if RASTER_AVX2
+// Float8x2 lookups are two 8-lane lookups, one per half.
+inline glsl::vec2<simd::Float8> lowHalf(glsl::vec2<simd::Float8x2> v) { return {v.x.lo, v.y.lo}; }
+inline glsl::vec2<simd::Float8> highHalf(glsl::vec2<simd::Float8x2> v) { return {v.x.hi, v.y.hi}; }
+inline glsl::vec4<simd::Float8x2> joinHalves(glsl::vec4<simd::Float8> lo, glsl::vec4<simd::Float8> hi) {
+  return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, {lo.w, hi.w}};
+}
 #endif
 
 }  // namespace sampling
@@ -73,6 +89,11 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     simd::Float8 rgba[4];
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
+  } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi};
+    simd::Float8 rgba[2][4];
+    sampling::sampleColor8x2(*sampler.texture, s, t, rgba);
+    return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], out[4][F::kCount];
@@ -98,6 +119,12 @@ glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv)
     simd::Float8 rgba[4];
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, needed, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
+  } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi};
+    const simd::Mask8 live[2] = {needed.lo, needed.hi};
+    simd::Float8 rgba[2][4];
+    sampling::sampleColor8x2(*sampler.texture, s, t, live, rgba);
+    return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
   }
 #endif
   (void)needed;
@@ -112,6 +139,9 @@ F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
 #if RASTER_AVX2
   } else if constexpr (std::is_same_v<F, simd::Float8>) {
     return sampling::compareLinearClamp8(*sampler.texture, uv.x, uv.y, ref);
+  } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+    return {sampling::compareLinearClamp8(*sampler.texture, uv.x.lo, uv.y.lo, ref.lo),
+            sampling::compareLinearClamp8(*sampler.texture, uv.x.hi, uv.y.hi, ref.hi)};
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], r[F::kCount], out[F::kCount];
@@ -135,6 +165,12 @@ void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step, 
     sampling::sampleColorGrid8(*sampler.texture, uv.x, uv.y, step.x, step.y, planes);
     for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
     return;
+  } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+    glsl::vec4<simd::Float8> lo[3][3], hi[3][3];
+    textureGrid3x3(sampler, sampling::lowHalf(uv), step, lo);
+    textureGrid3x3(sampler, sampling::highHalf(uv), step, hi);
+    for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = sampling::joinHalves(lo[k / 3][k % 3], hi[k / 3][k % 3]);
+    return;
   }
 #endif
   for (int j = -1; j <= 1; ++j)
@@ -153,6 +189,13 @@ void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float 
 #if RASTER_AVX2
   if constexpr (std::is_same_v<F, simd::Float8>) {
     sampling::compareGrid8(*sampler.texture, uv.x, uv.y, step, ref, R, &taps[0][0]);
+    return;
+  } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+    constexpr int kTaps = (2 * R + 1) * (2 * R + 1);
+    simd::Float8 lo[kTaps], hi[kTaps];
+    sampling::compareGrid8(*sampler.texture, uv.x.lo, uv.y.lo, step, ref.lo, R, lo);
+    sampling::compareGrid8(*sampler.texture, uv.x.hi, uv.y.hi, step, ref.hi, R, hi);
+    for (int k = 0; k < kTaps; ++k) taps[k / (2 * R + 1)][k % (2 * R + 1)] = {lo[k], hi[k]};
     return;
   }
 #endif

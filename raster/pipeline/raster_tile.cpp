@@ -19,7 +19,8 @@
 namespace raster {
 namespace {
 
-constexpr int kBlock = 4;   // 4x4 pixel blocks, as llvmpipe hands them to the shader
+constexpr int kBlock = 4;    // 4x4 pixel blocks, as llvmpipe hands them to the shader
+constexpr int kRegion = 16;  // 16x16 regions of blocks (llvmpipe's middle level)
 
 // Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
 // Coverage of one edge over a 4x4 block whose corners straddle it: bit (row * 4 + col) set
@@ -47,6 +48,21 @@ uint32_t edgeCoverage(const EdgeFunction& e, int64_t c00) {
   return mask;
 }
 
+// How a square of pixels lies against a triangle: wholly outside one edge, wholly inside
+// all three, or across an edge. Edge functions are linear, so the extremes over the square's
+// pixel centres are at its corner pixels (size - 1 apart).
+enum class Overlap { Outside, Inside, Partial };
+Overlap squareOverlap(const SetupTriangle& tri, int x, int y, int size) {
+  Overlap result = Overlap::Inside;
+  const int far = size - 1;
+  for (const EdgeFunction& e : tri.edge) {
+    const int64_t c00 = e.at(x, y), c10 = e.at(x + far, y), c01 = e.at(x, y + far), c11 = e.at(x + far, y + far);
+    if (std::max({c00, c10, c01, c11}) <= 0) return Overlap::Outside;
+    if (std::min({c00, c10, c01, c11}) <= 0) result = Overlap::Partial;
+  }
+  return result;
+}
+
 // Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
 uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
   uint32_t mask = 0xFFFFu;
@@ -65,6 +81,7 @@ uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
 
 // Pixels of the block inside the framebuffer.
 uint32_t blockBounds(int blockX, int blockY, int width, int height) {
+  if (blockX + kBlock <= width && blockY + kBlock <= height) return 0xFFFFu;
   uint32_t mask = 0;
   for (int row = 0; row < kBlock; ++row)
     for (int col = 0; col < kBlock; ++col)
@@ -177,7 +194,13 @@ bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   // Pixel coordinates per lane (small integers: the float sums are exact).
   const F px = F(float(gx)) + layout.dxLanes;
   const F py = F(float(gy)) + layout.dyLanes;
-  for (int i = 0; i < kLanes; ++i) group.texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+  // Each lane's pixel index, computed once some lane needs it (not for depth-only draws).
+  bool texelsKnown = false;
+  auto knowTexels = [&] {
+    if (texelsKnown) return;
+    for (int i = 0; i < kLanes; ++i) group.texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+    texelsKnown = true;
+  };
 
   // Depth: plane + offset, clamped to [0, 1] (NaN -> 0), quantized, tested, written.
   const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
@@ -197,6 +220,7 @@ bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDr
     } else
 #endif
     {
+      knowTexels();
       laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), group.texel, laneMask,
                                                   state.depthFunc == DepthFunc::Lequal, state.depthWrite);
     }
@@ -204,6 +228,7 @@ bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   if (!laneMask) return false;
   group.outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
   if (group.outputs == 0) return false;   // depth-only: the colour the shader would write is discarded
+  knowTexels();
   counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
   group.draw = &draw;
   group.laneMask = laneMask;
@@ -341,15 +366,28 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
     const RecordedDraw& draw = job.draws[tri.drawIndex];
     const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
     const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
-    for (int blockY = y0 & ~(kBlock - 1); blockY <= y1; blockY += kBlock) {
-      for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
-        const uint32_t coverage = blockCoverage(tri, blockX, blockY) & blockBounds(blockX, blockY, fb.width, fb.height);
-        if (!coverage) continue;
-        for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
-          const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
-          const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
-                                                   : layout.laneMask(coverage, g);
-          if (laneMask && prepareGroup(job, tri, draw, layout, gx, gy, laneMask, counters, shader.next())) shader.push();
+    // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
+    // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
+    // row of the triangle's extent at a time, so texture reads run along long rows.
+    const int firstRegionX = x0 & ~(kRegion - 1);
+    for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
+      Overlap overlap[kTileSize / kRegion + 1];
+      for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
+        overlap[(regionX - firstRegionX) / kRegion] = squareOverlap(tri, regionX, regionY, kRegion);
+      const int bandY1 = std::min(y1, regionY + kRegion - 1);
+      for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
+        for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
+          const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
+          if (region == Overlap::Outside) continue;
+          const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(tri, blockX, blockY);
+          const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
+          if (!coverage) continue;
+          for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
+            const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
+            const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
+                                                     : layout.laneMask(coverage, g);
+            if (laneMask && prepareGroup(job, tri, draw, layout, gx, gy, laneMask, counters, shader.next())) shader.push();
+          }
         }
       }
     }

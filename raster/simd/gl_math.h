@@ -98,18 +98,6 @@ template <int N>
 simd::Lanes<N> cvt(ULanes<N> u) { simd::Lanes<N> f; for (int i = 0; i < N; ++i) f.lane[i] = cvt(u.lane[i]); return f; }
 template <int N>
 simd::Mask<N> eq(ULanes<N> a, ULanes<N> b) { simd::Mask<N> m; for (int i = 0; i < N; ++i) m.lane[i] = a.lane[i] == b.lane[i]; return m; }
-template <int N>
-simd::Lanes<N> sel(simd::Mask<N> m, simd::Lanes<N> a, simd::Lanes<N> b) { return simd::select(m, a, b); }
-template <int N>
-simd::Lanes<N> fmaF(simd::Lanes<N> a, simd::Lanes<N> b, simd::Lanes<N> c) { return simd::fma(a, b, c); }
-template <int N>
-simd::Lanes<N> floorF(simd::Lanes<N> a) { return simd::floor(a); }
-template <int N>
-simd::Lanes<N> sqrtF(simd::Lanes<N> a) { return simd::sqrt(a); }
-template <int N>
-simd::Lanes<N> minps(simd::Lanes<N> a, simd::Lanes<N> b) { return simd::min(a, b); }
-template <int N>
-simd::Lanes<N> maxps(simd::Lanes<N> a, simd::Lanes<N> b) { return simd::max(a, b); }
 
 #if RASTER_AVX2
 struct U8 {
@@ -131,12 +119,6 @@ inline simd::Float8 asFloat(U8 u) { return simd::Float8(_mm256_castsi256_ps(u.v)
 inline U8 cvtt(simd::Float8 f) { return U8(_mm256_cvttps_epi32(f.v)); }
 inline simd::Float8 cvt(U8 u) { return simd::Float8(_mm256_cvtepi32_ps(u.v)); }
 inline simd::Mask8 eq(U8 a, U8 b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
-inline simd::Float8 sel(simd::Mask8 m, simd::Float8 a, simd::Float8 b) { return simd::select(m, a, b); }
-inline simd::Float8 fmaF(simd::Float8 a, simd::Float8 b, simd::Float8 c) { return simd::fma(a, b, c); }
-inline simd::Float8 floorF(simd::Float8 a) { return simd::floor(a); }
-inline simd::Float8 sqrtF(simd::Float8 a) { return simd::sqrt(a); }
-inline simd::Float8 minps(simd::Float8 a, simd::Float8 b) { return simd::min(a, b); }
-inline simd::Float8 maxps(simd::Float8 a, simd::Float8 b) { return simd::max(a, b); }
 
 // Float8x2: the same, half by half.
 struct U8x2 {
@@ -158,13 +140,17 @@ inline simd::Float8x2 asFloat(U8x2 u) { return {asFloat(u.lo), asFloat(u.hi)}; }
 inline U8x2 cvtt(simd::Float8x2 f) { return {cvtt(f.lo), cvtt(f.hi)}; }
 inline simd::Float8x2 cvt(U8x2 u) { return {cvt(u.lo), cvt(u.hi)}; }
 inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {eq(a.lo, b.lo), eq(a.hi, b.hi)}; }
-inline simd::Float8x2 sel(simd::Mask8x2 m, simd::Float8x2 a, simd::Float8x2 b) { return simd::select(m, a, b); }
-inline simd::Float8x2 fmaF(simd::Float8x2 a, simd::Float8x2 b, simd::Float8x2 c) { return simd::fma(a, b, c); }
-inline simd::Float8x2 floorF(simd::Float8x2 a) { return simd::floor(a); }
-inline simd::Float8x2 sqrtF(simd::Float8x2 a) { return simd::sqrt(a); }
-inline simd::Float8x2 minps(simd::Float8x2 a, simd::Float8x2 b) { return simd::min(a, b); }
-inline simd::Float8x2 maxps(simd::Float8x2 a, simd::Float8x2 b) { return simd::max(a, b); }
 #endif
+
+// Every vector lane type (Lanes<N>, Float8, Float8x2): its own operations from simd/lanes.h.
+template <class F>
+concept VectorLanes = requires { typename F::MaskType; };
+template <VectorLanes F> F sel(typename F::MaskType m, F a, F b) { return simd::select(m, a, b); }
+template <VectorLanes F> F fmaF(F a, F b, F c) { return simd::fma(a, b, c); }
+template <VectorLanes F> F floorF(F a) { return simd::floor(a); }
+template <VectorLanes F> F sqrtF(F a) { return simd::sqrt(a); }
+template <VectorLanes F> F minps(F a, F b) { return simd::min(a, b); }
+template <VectorLanes F> F maxps(F a, F b) { return simd::max(a, b); }
 
 template <class F> struct IntLanesOf;
 template <> struct IntLanesOf<float> { using type = uint32_t; };

@@ -264,9 +264,10 @@ void shadeGroup(const TileJob& job, const ReadyGroup<F>& group, PipelineCounters
 }
 
 #if RASTER_AVX2
-// Two groups of the same draw and facing can share one shader call: their pixels differ
-// (a later triangle's group is only prepared after the earlier one's depth write), and
-// their colours are written in order, so the framebuffer ends the same as shading each.
+// Two groups of the same draw and facing can share one shader call. They may cover the same
+// pixels (overlapping triangles), but the later group was depth-tested after the earlier
+// one's depth write, and a's colours are written before b's, so the framebuffer ends the
+// same as shading each alone.
 bool canPair(const ReadyGroup<simd::Float8>& a, const ReadyGroup<simd::Float8>& b) {
   return a.draw == b.draw && a.in.gl_FrontFacing == b.in.gl_FrontFacing;
 }

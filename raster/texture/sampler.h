@@ -73,6 +73,10 @@ inline glsl::vec2<simd::Float8> highHalf(glsl::vec2<simd::Float8x2> v) { return 
 inline glsl::vec4<simd::Float8x2> joinHalves(glsl::vec4<simd::Float8> lo, glsl::vec4<simd::Float8> hi) {
   return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, {lo.w, hi.w}};
 }
+// The two halves' channel planes of a sampleColor8x2 lookup, as one colour.
+inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) {
+  return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
+}
 #endif
 
 }  // namespace sampling
@@ -93,7 +97,7 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, rgba);
-    return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
+    return sampling::joinHalves(rgba);
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], out[4][F::kCount];
@@ -124,7 +128,7 @@ glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv)
     const simd::Mask8 live[2] = {needed.lo, needed.hi};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, live, rgba);
-    return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
+    return sampling::joinHalves(rgba);
   }
 #endif
   (void)needed;

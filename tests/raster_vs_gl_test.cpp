@@ -12,7 +12,8 @@
 // Cases: (a) random triangles (slivers, sub-pixel, vertices on pixel centres and edges,
 // perspective w), (b) a jittered mesh with shared edges (every pixel exactly once),
 // (c) triangles the clipper must cut (near plane, w < 0, x/y planes), (d) a fullscreen
-// triangle, (e) odd target sizes. Fixed seeds; every case MESSAGEs its statistics.
+// triangle, (e) odd target sizes, (f) depth-only targets (shadow maps): depth codes alone,
+// which must be identical. Fixed seeds; every case MESSAGEs its statistics.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -297,6 +298,29 @@ void checkEveryPixelOnce(const CaseResult& r, const TargetDesc& target) {
   CHECK(int(r.counts.size()) == target.width * target.height);
 }
 
+// Depth-only targets, as shadow maps are drawn: no colour attachment, so the rasterizer
+// runs no shader and fills the regions wholly inside a triangle row by row. Large random
+// triangles, then the fullscreen triangle, under LESS or LEQUAL, with or without polygon
+// offset; the depth codes must be identical.
+void compareDepthOnly(BackendPair& backends, const TargetDesc& target, const MeshData& mesh, scenes::DepthFunc func,
+                      bool offset) {
+  DrawCall draw;
+  draw.mesh = mesh;
+  draw.state.depthFunc = func;
+  draw.state.polygonOffset = offset;
+  draw.state.offsetFactor = offset ? 1.5f : 0.0f;
+  draw.state.offsetUnits = offset ? 4.0f : 0.0f;
+  const BothRendered both = renderBoth(backends, target, {draw}, clearAll());
+  const DepthComparison z = compareDepth(*both.raster.depth, *both.gl.depth);
+  const std::string where = targetName(target) + (func == scenes::DepthFunc::Lequal ? " LEQUAL" : " LESS") +
+                            (offset ? " with polygon offset" : "");
+  CAPTURE(where);
+  const std::string firstDepthDiff = z.firstDiff;
+  CAPTURE(firstDepthDiff);
+  MESSAGE("(f) depth only [" << where << "]: depth diffs " << z.diffs << " (max " << z.maxDiff << " LSB)");
+  CHECK(z.diffs == 0);
+}
+
 }  // namespace
 
 TEST_SUITE("raster_vs_gl") {
@@ -378,6 +402,36 @@ TEST_SUITE("raster_vs_gl") {
         const CaseResult mesh = compareCase(backends, "(e) jittered shared-edge mesh", target,
                                             jitteredGridMesh(rng, size[0], size[1], 4.0f));
         checkEveryPixelOnce(mesh, target);
+      }
+    }
+  }
+
+  TEST_CASE("(f) depth-only targets: identical depth codes, inside regions included") {
+    BackendPair backends;
+    std::mt19937 rng(6006);
+    const TargetDesc targets[] = {
+        {160, 144, std::nullopt, TextureFormat::Depth24},
+        {99, 67, std::nullopt, TextureFormat::Depth16},
+    };
+    for (const TargetDesc& target : targets) {
+      for (scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
+        for (bool offset : {false, true}) {
+          // Mostly large triangles, so many 16x16 regions lie wholly inside one.
+          std::vector<Vertex> vertices;
+          for (int i = 0; i < 40; ++i) {
+            const glm::vec2 c(uniform(rng, 0.0f, float(target.width)), uniform(rng, 0.0f, float(target.height)));
+            const float size = uniform(rng, 20.0f, 150.0f);
+            for (int v = 0; v < 3; ++v) {
+              const glm::vec2 p = clampToTarget(c + glm::vec2(uniform(rng, -size, size), uniform(rng, -size, size)),
+                                                target.width, target.height);
+              vertices.push_back({clipFromWindow(p, uniform(rng, -0.95f, 0.95f), uniform(rng, 0.5f, 3.0f), target.width,
+                                                 target.height),
+                                  randomOpaqueColor(rng)});
+            }
+          }
+          compareDepthOnly(backends, target, makeMesh(vertices), func, offset);
+          compareDepthOnly(backends, target, fullscreenTriangle(rng, true), func, offset);
+        }
       }
     }
   }

@@ -143,6 +143,35 @@ F evaluatePlane(const Plane& p, F px, F py) {
   return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
 }
 
+#if RASTER_AVX2
+// A depth-only draw over a 16x16 region wholly inside its triangle: no lane is shaded, so
+// the depth test runs along memory rows, 8 pixels a step, instead of in 2x2 quads. Each
+// pixel gets the arithmetic prepareGroup gives it (z plane, polygon offset, clamp,
+// quantization), and a triangle touches each pixel once, so the same bits land.
+void depthOnlyRegion(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width, int x, int y) {
+  using simd::Float8;
+  const Float8 columns(_mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7));
+  const __m256i allOnes = _mm256_set1_epi32(-1);
+  for (int row = 0; row < kRegion; ++row) {
+    const Float8 py(float(y + row));
+    uint32_t* dst = depth.depth.data() + size_t(y + row) * size_t(width) + size_t(x);
+    for (int column = 0; column < kRegion; column += 8) {
+      const Float8 px = Float8(float(x + column)) + columns;
+      const Float8 z = evaluatePlane(tri.z, px, py) + Float8(tri.depthOffset);
+      alignas(32) uint32_t codes[8];
+      output_merge::depthCodes(simd::min(simd::max(z, Float8(0.0f)), Float8(1.0f)), depth.format, codes);
+      const __m256i code = _mm256_load_si256(reinterpret_cast<const __m256i*>(codes));
+      __m256i* stored = reinterpret_cast<__m256i*>(dst + column);
+      const __m256i old = _mm256_loadu_si256(stored);
+      // Codes are below 2^24, so signed compares are exact. LESS: old > code; LEQUAL: !(code > old).
+      const __m256i pass = state.depthFunc == DepthFunc::Lequal ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, old), allOnes)
+                                                                 : _mm256_cmpgt_epi32(old, code);
+      _mm256_storeu_si256(stored, _mm256_blendv_epi8(old, code, pass));
+    }
+  }
+}
+#endif
+
 // Writes the covered lanes of one colour output to an attachment: conversion, then
 // blending. unorm8 ONE/ONE blending is a saturating 8-bit add (lp_bld_blend.c); float
 // targets blend in float32 (exact destination + source) and convert once, toward zero.
@@ -367,6 +396,9 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
     const RecordedDraw& draw = job.draws[tri.drawIndex];
     const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
     const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
+    // Depth test and write, and no colour the shader writes is kept.
+    const bool depthOnly = draw.state.depthTest && draw.state.depthWrite && fb.depth &&
+                           std::min(draw.shader->colorOutputs(), int(fb.colors.size())) == 0;
     // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
     // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
     // row of the triangle's extent at a time, so texture reads run along long rows.
@@ -375,6 +407,17 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
       Overlap overlap[kTileSize / kRegion + 1];
       for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
         overlap[(regionX - firstRegionX) / kRegion] = squareOverlap(tri, regionX, regionY, kRegion);
+#if RASTER_AVX2
+      // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
+      if (std::is_same_v<F, simd::Float8> && depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
+        for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion) {
+          Overlap& region = overlap[(regionX - firstRegionX) / kRegion];
+          if (region != Overlap::Inside || regionX < x0 || regionX + kRegion - 1 > x1) continue;
+          depthOnlyRegion(tri, draw.state, *fb.depth, fb.width, regionX, regionY);
+          region = Overlap::Outside;
+        }
+      }
+#endif
       const int bandY1 = std::min(y1, regionY + kRegion - 1);
       for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
         for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {

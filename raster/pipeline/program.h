@@ -31,6 +31,7 @@
 #include <string_view>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "raster/simd/glsl.h"
 #include "raster/texture/sampler.h"
@@ -82,7 +83,13 @@ typename Program::template Varyings<F> varyingsFromArray(const F* values) {
   V v{};
   if constexpr (!std::is_empty_v<V>) {
     static_assert(sizeof(V) == sizeof(F) * varyingFloatCount<Program>(), "Varyings must hold only F values");
-    std::memcpy(static_cast<void*>(&v), values, sizeof(V));
+    // Value by value, unrolled, not memcpy: the compiler turns a block copy of the whole
+    // struct into rep movs, which stalls the shader's first loads; single lane values fold
+    // into those loads.
+    F* fields = reinterpret_cast<F*>(static_cast<void*>(&v));
+    [&]<size_t... I>(std::index_sequence<I...>) {
+      ((fields[I] = values[I]), ...);
+    }(std::make_index_sequence<size_t(varyingFloatCount<Program>())>{});
   }
   return v;
 }

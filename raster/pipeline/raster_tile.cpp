@@ -22,59 +22,81 @@ namespace {
 constexpr int kBlock = 4;    // 4x4 pixel blocks, as llvmpipe hands them to the shader
 constexpr int kRegion = 16;  // 16x16 regions of blocks (llvmpipe's middle level)
 
-// Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
-// Coverage of one edge over a 4x4 block whose corners straddle it: bit (row * 4 + col) set
-// where c00 - dcdx * col + dcdy * row > 0.
-uint32_t edgeCoverage(const EdgeFunction& e, int64_t c00) {
+// One edge function as the block walk uses it, set up once per triangle and tile. The
+// function is linear, so over a square of pixels it is largest and smallest at fixed
+// corners: a square is tested by its first pixel's value plus those two offsets, with no
+// corner evaluated. For 4x4 blocks that straddle the edge, `pixel` holds the offset from the
+// block's first pixel to each of its 16 (bit row * 4 + col), when those fit 32 bits.
+struct WalkEdge {
+  EdgeFunction f;
+  int64_t blockMax, blockMin;     // over a 4x4 block's pixel centres
+  int64_t regionMax, regionMin;   // over a 16x16 region's
+  bool smallSteps;                // |dcdx| + |dcdy| < 2^28: pixel offsets below 2^30
 #if RASTER_AVX2
-  // Straddling means |c00| <= 3 (|dcdx| + |dcdy|): with small steps everything fits 32 bits.
-  if (std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28)) {
-    const __m256i col = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
-    const __m256i dcdx = _mm256_set1_epi32(int32_t(e.dcdx)), dcdy = _mm256_set1_epi32(int32_t(e.dcdy));
-    const __m256i threshold = _mm256_set1_epi32(int32_t(-c00));
-    const __m256i xTerm = _mm256_mullo_epi32(dcdx, col);
-    auto rows = [&](int firstRow) {
-      const __m256i row = _mm256_add_epi32(_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_set1_epi32(firstRow));
-      const __m256i delta = _mm256_sub_epi32(_mm256_mullo_epi32(dcdy, row), xTerm);
-      return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(delta, threshold))));
-    };
-    return rows(0) | rows(2) << 8;
-  }
+  __m256i pixel[2];               // -dcdx * col + dcdy * row: rows 0-1, rows 2-3
 #endif
-  uint32_t mask = 0;
-  for (int row = 0; row < kBlock; ++row)
-    for (int col = 0; col < kBlock; ++col)
-      if (c00 - e.dcdx * col + e.dcdy * row > 0) mask |= 1u << (row * kBlock + col);
-  return mask;
-}
+  explicit WalkEdge(const EdgeFunction& e) : f(e) {
+    auto extremes = [&](int far, int64_t& high, int64_t& low) {
+      const int64_t alongX = -e.dcdx * far, alongY = e.dcdy * far;
+      high = std::max<int64_t>(alongX, 0) + std::max<int64_t>(alongY, 0);
+      low = std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0);
+    };
+    extremes(kBlock - 1, blockMax, blockMin);
+    extremes(kRegion - 1, regionMax, regionMin);
+    smallSteps = std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28);
+#if RASTER_AVX2
+    if (smallSteps) {
+      const __m256i col = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+      const __m256i xTerm = _mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdx)), col);
+      for (int half = 0; half < 2; ++half) {
+        const __m256i row = _mm256_add_epi32(_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_set1_epi32(2 * half));
+        pixel[half] = _mm256_sub_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdy)), row), xTerm);
+      }
+    }
+#endif
+  }
+
+  // Bits (row * 4 + col) of a straddled block whose first pixel has value c00, set where
+  // c00 - dcdx * col + dcdy * row > 0.
+  uint32_t straddledCoverage(int64_t c00) const {
+#if RASTER_AVX2
+    if (smallSteps) {   // straddling: |c00| < 3 * 2^28, so -c00 fits 32 bits too
+      const __m256i threshold = _mm256_set1_epi32(int32_t(-c00));
+      auto rows = [&](int half) {
+        return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(pixel[half], threshold))));
+      };
+      return rows(0) | rows(1) << 8;
+    }
+#endif
+    uint32_t mask = 0;
+    for (int row = 0; row < kBlock; ++row)
+      for (int col = 0; col < kBlock; ++col)
+        if (c00 - f.dcdx * col + f.dcdy * row > 0) mask |= 1u << (row * kBlock + col);
+    return mask;
+  }
+};
 
 // How a square of pixels lies against a triangle: wholly outside one edge, wholly inside
-// all three, or across an edge. Edge functions are linear, so the extremes over the square's
-// pixel centres are at its corner pixels (size - 1 apart).
+// all three, or across an edge.
 enum class Overlap { Outside, Inside, Partial };
-Overlap squareOverlap(const SetupTriangle& tri, int x, int y, int size) {
+Overlap regionOverlap(const WalkEdge (&edges)[3], int x, int y) {
   Overlap result = Overlap::Inside;
-  const int far = size - 1;
-  for (const EdgeFunction& e : tri.edge) {
-    const int64_t c00 = e.at(x, y), c10 = e.at(x + far, y), c01 = e.at(x, y + far), c11 = e.at(x + far, y + far);
-    if (std::max({c00, c10, c01, c11}) <= 0) return Overlap::Outside;
-    if (std::min({c00, c10, c01, c11}) <= 0) result = Overlap::Partial;
+  for (const WalkEdge& e : edges) {
+    const int64_t c00 = e.f.at(x, y);
+    if (c00 + e.regionMax <= 0) return Overlap::Outside;
+    if (c00 + e.regionMin <= 0) result = Overlap::Partial;
   }
   return result;
 }
 
 // Coverage of one 4x4 block: bit (row * 4 + col) set when that pixel centre is inside.
-uint32_t blockCoverage(const SetupTriangle& tri, int blockX, int blockY) {
+uint32_t blockCoverage(const WalkEdge (&edges)[3], int blockX, int blockY) {
   uint32_t mask = 0xFFFFu;
-  for (const EdgeFunction& e : tri.edge) {
-    // The edge function is linear: its extremes over the block are at the corners.
-    const int64_t c00 = e.at(blockX, blockY);
-    const int64_t c30 = e.at(blockX + 3, blockY);
-    const int64_t c03 = e.at(blockX, blockY + 3);
-    const int64_t c33 = e.at(blockX + 3, blockY + 3);
-    if (std::max({c00, c30, c03, c33}) <= 0) return 0;     // all outside this edge
-    if (std::min({c00, c30, c03, c33}) > 0) continue;      // all inside this edge
-    mask &= edgeCoverage(e, c00);
+  for (const WalkEdge& e : edges) {
+    const int64_t c00 = e.f.at(blockX, blockY);
+    if (c00 + e.blockMax <= 0) return 0;      // all outside this edge
+    if (c00 + e.blockMin > 0) continue;       // all inside this edge
+    mask &= e.straddledCoverage(c00);
   }
   return mask;
 }
@@ -396,6 +418,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
     const RecordedDraw& draw = job.draws[tri.drawIndex];
     const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
     const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
+    const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
     // Depth test and write, and no colour the shader writes is kept.
     const bool depthOnly = draw.state.depthTest && draw.state.depthWrite && fb.depth &&
                            std::min(draw.shader->colorOutputs(), int(fb.colors.size())) == 0;
@@ -406,7 +429,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
     for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
       Overlap overlap[kTileSize / kRegion + 1];
       for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
-        overlap[(regionX - firstRegionX) / kRegion] = squareOverlap(tri, regionX, regionY, kRegion);
+        overlap[(regionX - firstRegionX) / kRegion] = regionOverlap(edges, regionX, regionY);
 #if RASTER_AVX2
       // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
       if (std::is_same_v<F, simd::Float8> && depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
@@ -423,7 +446,7 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
         for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
           const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
           if (region == Overlap::Outside) continue;
-          const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(tri, blockX, blockY);
+          const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(edges, blockX, blockY);
           const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
           if (!coverage) continue;
           for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {

@@ -62,10 +62,13 @@ void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewpor
 void Renderer::clearRect(int x0, int y0, int x1, int y1) const {
   const ClearValues& values = pendingClear_;
   const size_t width = size_t(framebuffer_.width);
+  // The rectangle's first row texel by texel, then the other rows copied from it whole.
   auto fillRows = [&](auto* data, const auto* texel, size_t perTexel) {
-    for (int y = y0; y < y1; ++y)
-      for (size_t i = (size_t(y) * width + size_t(x0)) * perTexel; i < (size_t(y) * width + size_t(x1)) * perTexel; i += perTexel)
-        std::copy(texel, texel + perTexel, data + i);
+    if (x1 <= x0 || y1 <= y0) return;
+    auto* first = data + (size_t(y0) * width + size_t(x0)) * perTexel;
+    const size_t rowLength = size_t(x1 - x0) * perTexel;
+    for (size_t i = 0; i < rowLength; i += perTexel) std::copy(texel, texel + perTexel, first + i);
+    for (int y = y0 + 1; y < y1; ++y) std::copy(first, first + rowLength, data + (size_t(y) * width + size_t(x0)) * perTexel);
   };
   if (values.color) {
     for (Texture* target : framebuffer_.colors) {

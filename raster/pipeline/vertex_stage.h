@@ -11,6 +11,7 @@
 // result does not depend on which lane or group computed it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -61,25 +62,28 @@ constexpr int kVaryingOffset = 8;
 // bit 0: x > w, 1: x + w < 0, 2: y > w, 3: y + w < 0, 4: z + w < 0, 5: z > w.
 uint8_t clipMask(const float clip[4]);
 
-// Window position as the draw JIT computes it for every vertex (generate_viewport):
-// oow = 1/w; x_win = fma(x * oow, scale, translate); w_win = oow.
-void windowPosition(const float clip[4], const ViewportTransform& vp, float window[4]);
-
-// Fills attribute values (missing components from (0, 0, 0, 1)) for one vertex.
-void fetchAttributes(const VertexStream& stream, int vertex, int instance, float values[kMaxVertexAttributes][4]);
-
 // Shades `count` vertices of one instance starting at `first` into out (records already sized).
 template <class Program, class F>
 void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexStream& stream, int first, int count,
                       int instance, int recordBase, const ViewportTransform& vp, ShadedVertices& out) {
   constexpr int kLanes = F::kCount;
   constexpr int kVaryings = varyingFloatCount<Program>();
-  alignas(32) float in[kMaxVertexAttributes][4][kLanes] = {};
-  for (int lane = 0; lane < kLanes; ++lane) {
-    float values[kMaxVertexAttributes][4];
-    fetchAttributes(stream, first + (lane < count ? lane : 0), instance, values);
-    for (int a = 0; a < kMaxVertexAttributes; ++a)
-      for (int c = 0; c < 4; ++c) in[a][c][lane] = values[a][c];
+  // Attribute planes, fetched straight into lanes: locations and components the streams
+  // do not feed read (0, 0, 0, 1); per-instance values are the same in every lane. Lanes
+  // past `count` repeat the group's first vertex.
+  alignas(32) float in[kMaxVertexAttributes][4][kLanes];
+  for (int a = 0; a < kMaxVertexAttributes; ++a)
+    for (int c = 0; c < 4; ++c) std::fill_n(in[a][c], kLanes, c == 3 ? 1.0f : 0.0f);
+  for (const AttributeLayout& attr : stream.attributes) {
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const float* src = stream.vertices + size_t(first + (lane < count ? lane : 0)) * size_t(stream.strideFloats);
+      for (int c = 0; c < attr.components; ++c) in[attr.location][c][lane] = src[attr.offsetFloats + c];
+    }
+  }
+  if (stream.instances) {
+    const float* src = stream.instances + size_t(instance) * size_t(stream.instanceStrideFloats);
+    for (const AttributeLayout& attr : stream.instanceAttributes)
+      for (int c = 0; c < attr.components; ++c) std::fill_n(in[attr.location][c], kLanes, src[attr.offsetFloats + c]);
   }
   VertexInput<F> input;
   for (int a = 0; a < kMaxVertexAttributes; ++a)
@@ -90,9 +94,16 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
   typename Program::template Varyings<F> varyings;
   Program::vertex(uniforms, input, position, varyings);
 
-  alignas(32) float pos[4][kLanes];
+  // Window position as the draw JIT computes it for every vertex (generate_viewport):
+  // oow = 1/w; x_win = fma(x * oow, scale, translate); w_win = oow.
+  const F oow = F(1.0f) / position.w;
+  const glsl::vec4<F> window(simd::fma(position.x * oow, F(vp.scale[0]), F(vp.translate[0])),
+                             simd::fma(position.y * oow, F(vp.scale[1]), F(vp.translate[1])),
+                             simd::fma(position.z * oow, F(vp.scale[2]), F(vp.translate[2])), oow);
+  alignas(32) float pos[4][kLanes], win[4][kLanes];
   alignas(32) float vary[kVaryings > 0 ? kVaryings : 1][kLanes];
   glsl::storePlanes(position, pos);
+  glsl::storePlanes(window, win);
   F flat[kVaryings > 0 ? kVaryings : 1];
   varyingsToArray<Program, F>(varyings, flat);
   for (int v = 0; v < kVaryings; ++v) flat[v].store(vary[v]);
@@ -101,7 +112,7 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
     const int r = recordBase + lane;
     float* rec = out.record(r);
     for (int c = 0; c < 4; ++c) rec[kClipOffset + c] = pos[c][lane];
-    windowPosition(rec + kClipOffset, vp, rec + kWindowOffset);
+    for (int c = 0; c < 4; ++c) rec[kWindowOffset + c] = win[c][lane];
     for (int v = 0; v < kVaryings; ++v) rec[kVaryingOffset + v] = vary[v][lane];
     out.clipMask[size_t(r)] = clipMask(rec + kClipOffset);
   }

@@ -290,6 +290,17 @@ F powImpl(F x, F y) {
   return sel(zero, F(0.0f), res);
 }
 
+// powImpl with an exponent fixed at compile time, a normal float: daz(y) is y and y is no
+// NaN, so only x's part is left.
+template <float Y, class F>
+F powConstImpl(F x) {
+  static_assert(Y == Y && __builtin_isnormal(Y), "a literal exponent is a normal float");
+  x = daz(x);
+  const auto zero = ueq(x, F(0.0f));
+  const F res = exp2Impl(log2Impl(x) * F(Y));
+  return sel(zero, F(0.0f), res);
+}
+
 // lp_build_sin_or_cos (Cephes, via sse_mathfun), for |x| reduced by multiples of pi/4:
 //   ax = |x|;  j = cvtt(ax * 4/pi);  j = (j + 1) & ~1;  yj = float(j)
 //   r = fmuladd(yj, DP3, fmuladd(yj, DP2, fmuladd(yj, DP1, ax)))     (DPi = -pi/4 split)
@@ -452,7 +463,7 @@ F pow(F x) {
     const F squared = detail::daz(x * x);
     return detail::daz(squared * squared);
   } else {
-    return detail::powImpl(x, F(Y));
+    return detail::powConstImpl<Y>(x);
   }
 }
 

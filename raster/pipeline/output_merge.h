@@ -78,7 +78,7 @@ inline unsigned depthTestRows(const uint32_t* codes, uint32_t* rowTop, uint32_t*
 }
 #endif
 
-// RGBA8 texels (r in the low byte, as stored in memory) per lane.
+// RGBA8 texels per lane, r in the low byte: r g b a in memory on little-endian x86.
 template <class F>
 void packRgba8(const glsl::vec4<F>& color, uint32_t* texels) {
   alignas(32) float c[4][F::kCount];

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <type_traits>
 #if RASTER_AVX2
 #include <immintrin.h>
@@ -206,10 +207,11 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
     for (int i = 0; i < F::kCount; ++i) {
       if (!(laneMask >> i & 1u)) continue;
       uint8_t* dst = &target.rgba8[texel[i] * 4];
-      for (int c = 0; c < 4; ++c) {
-        const uint8_t src = uint8_t(packed[i] >> (8 * c));
-        dst[c] = blendAdditive ? uint8_t(std::min(255, int(dst[c]) + int(src))) : src;
+      if (!blendAdditive) {
+        std::memcpy(dst, &packed[i], 4);   // bytes r g b a, as packed
+        continue;
       }
+      for (int c = 0; c < 4; ++c) dst[c] = uint8_t(std::min(255, int(dst[c]) + int(uint8_t(packed[i] >> (8 * c)))));
     }
   } else if (target.format == TexelFormat::RGBA16F) {
     output_merge::writeHalfTexels(color, target.half.data(), texel, laneMask, blendAdditive);

@@ -185,7 +185,7 @@ TEST_SUITE("shadow_compare") {
     CHECK(partial > kDraws * kLookupsPerDraw / 20);                // the filter's fractions are exercised
   }
 #if RASTER_AVX2
-  TEST_CASE("PCF grids: every tap equals its lone lookup, shared texels or not") {
+  TEST_CASE("PCF grids, lone and paired: every tap equals its lone lookup, shared texels or not") {
     using raster::simd::Float8;
     std::mt19937 rng(8008);
     long lanesCompared = 0;
@@ -210,31 +210,47 @@ TEST_SUITE("shadow_compare") {
           // The seeds' step (one texel), a step that is not one texel, and no step at all.
           const float steps[3] = {1.0f / float(width), 1.0f / 1000.0f, 0.0f};
           const float step = steps[round % 3];
-          const raster::glsl::vec2<Float8> uv(Float8::load(s), Float8::load(t));
-          auto check = [&](auto& taps, int radius) {
+          // A second lane group for the paired (Float8x2) grids: the same lanes reversed.
+          alignas(32) float sr[8], tr[8], refr[8];
+          for (int l = 0; l < 8; ++l) sr[l] = s[7 - l], tr[l] = t[7 - l], refr[l] = ref[7 - l];
+          // Every tap of a group (lanes at ls, lt, lref) equals its lone scalar lookup.
+          auto check = [&](auto tapLanes, int radius, const float* ls, const float* lt, const float* lref) {
             const int n = 2 * radius + 1;
             for (int j = 0; j < n; ++j) {
               for (int i = 0; i < n; ++i) {
                 alignas(32) float got[8];
-                taps[j][i].store(got);
+                tapLanes(j, i).store(got);
                 for (int l = 0; l < 8; ++l) {
-                  const float lone = raster::sampling::compareLinearClamp(map, s[l] + float(i - radius) * step,
-                                                                          t[l] + float(j - radius) * step, ref[l]);
+                  const float lone = raster::sampling::compareLinearClamp(map, ls[l] + float(i - radius) * step,
+                                                                          lt[l] + float(j - radius) * step, lref[l]);
                   CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
                   ++lanesCompared;
                 }
               }
             }
           };
+          const raster::glsl::vec2<Float8> uv(Float8::load(s), Float8::load(t));
           Float8 taps3[3][3], taps5[5][5];
           raster::textureCompareGrid<1>(sampler, uv, step, Float8::load(ref), taps3);
           raster::textureCompareGrid<2>(sampler, uv, step, Float8::load(ref), taps5);
-          check(taps3, 1);
-          check(taps5, 2);
+          check([&](int j, int i) { return taps3[j][i]; }, 1, s, t, ref);
+          check([&](int j, int i) { return taps5[j][i]; }, 2, s, t, ref);
+
+          using raster::simd::Float8x2;
+          const raster::glsl::vec2<Float8x2> uvPair(Float8x2{Float8::load(s), Float8::load(sr)},
+                                                    Float8x2{Float8::load(t), Float8::load(tr)});
+          const Float8x2 refPair{Float8::load(ref), Float8::load(refr)};
+          Float8x2 pair3[3][3], pair5[5][5];
+          raster::textureCompareGrid<1>(sampler, uvPair, step, refPair, pair3);
+          raster::textureCompareGrid<2>(sampler, uvPair, step, refPair, pair5);
+          check([&](int j, int i) { return pair3[j][i].lo; }, 1, s, t, ref);
+          check([&](int j, int i) { return pair3[j][i].hi; }, 1, sr, tr, refr);
+          check([&](int j, int i) { return pair5[j][i].lo; }, 2, s, t, ref);
+          check([&](int j, int i) { return pair5[j][i].hi; }, 2, sr, tr, refr);
         }
       }
     }
-    CHECK(lanesCompared == 2 * 3 * 600 * 8 * (9 + 25));
+    CHECK(lanesCompared == 2 * 3 * 600 * 8 * 3 * (9 + 25));   // lone, paired low, paired high
   }
 #endif
 }

@@ -106,69 +106,99 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
   return simd::Float8(_mm256_fmadd_ps(y.weight, _mm256_sub_ps(r1, r0), r0));
 }
 
-// The grid of PCF taps at once. Each tap's coordinate and weights are computed as a lone
-// lookup computes them; when every tap of every lane lands on the next texel of its
-// neighbour and none is clamped at an edge, the taps share one (2R + 2)^2 texel
-// neighbourhood: loaded once, compared once per texel, and each tap blends its own 2x2 of
-// those compare results with its own weights, as compareLinearClamp8 would. Otherwise (an
-// edge, or rounding that moves a tap) every tap is a lone lookup.
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref8, int radius,
-                  simd::Float8* taps) {
+namespace {
+
+// The grid of PCF taps at once, for N lane groups. Each tap's coordinate and weights are
+// computed as a lone lookup computes them; when every tap of every lane of a group lands on
+// the next texel of its neighbour and none is clamped at an edge, its taps share one
+// (2R + 2)^2 texel neighbourhood: loaded once, compared once per texel, and each tap
+// blends its own 2x2 of those compare results with its own weights, as compareLinearClamp8
+// would. Otherwise (an edge, or rounding that moves a tap) every tap of that group is a
+// lone lookup. With N = 2 both groups' rows are loaded before either blends, so their
+// cache misses overlap.
+template <int N>
+void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float8* t, float step, const simd::Float8* ref8,
+                  int radius, simd::Float8* const* taps) {
   constexpr int kMaxTaps = 5, kMaxTexels = kMaxTaps + 1;
   const int count = 2 * radius + 1, texels = count + 1;
-  LinearTaps8 x[kMaxTaps] = {}, y[kMaxTaps] = {};
-  for (int k = 0; k < count; ++k) {
-    // uv + vec2(i, j) * step: the offset is exact, the sum rounds as the shader's does.
-    const __m256 offset = _mm256_set1_ps(float(k - radius) * step);
-    x[k] = wrapLinearClampToEdge8(_mm256_add_ps(s.v, offset), depth.width);
-    y[k] = wrapLinearClampToEdge8(_mm256_add_ps(t.v, offset), depth.height);
-  }
-  if (!tapsAreConsecutive(x, y, count)) {
+  LinearTaps8 x[N][kMaxTaps] = {}, y[N][kMaxTaps] = {};
+  bool shared[N];
+  for (int h = 0; h < N; ++h) {
+    for (int k = 0; k < count; ++k) {
+      // uv + vec2(i, j) * step: the offset is exact, the sum rounds as the shader's does.
+      const __m256 offset = _mm256_set1_ps(float(k - radius) * step);
+      x[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(s[h].v, offset), depth.width);
+      y[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(t[h].v, offset), depth.height);
+    }
+    shared[h] = tapsAreConsecutive(x[h], y[h], count);
+    if (shared[h]) continue;
     for (int j = 0; j < count; ++j)
       for (int i = 0; i < count; ++i)
-        taps[j * count + i] = compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s.v, _mm256_set1_ps(float(i - radius) * step))),
-                                                  simd::Float8(_mm256_add_ps(t.v, _mm256_set1_ps(float(j - radius) * step))), ref8);
-    return;
+        taps[h][j * count + i] =
+            compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s[h].v, _mm256_set1_ps(float(i - radius) * step))),
+                                simd::Float8(_mm256_add_ps(t[h].v, _mm256_set1_ps(float(j - radius) * step))), ref8[h]);
   }
 
-  __m256 ref = _mm256_max_ps(ref8.v, _mm256_setzero_ps());
-  ref = _mm256_min_ps(ref, _mm256_set1_ps(1.0f));
   const float scale = depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
   const uint32_t* codes = depth.depth.data();
-  alignas(32) int start[8];   // each lane's top-left texel of the neighbourhood
-  _mm256_store_si256(reinterpret_cast<__m256i*>(start),
-                     _mm256_add_epi32(_mm256_mullo_epi32(y[0].i0, _mm256_set1_epi32(depth.width)), x[0].i0));
-  // passes[r][c]: ref <= texel (r, c) of the neighbourhood, per lane.
-  __m256 passes[kMaxTexels][kMaxTexels];
+  __m256 ref[N];
+  alignas(32) int start[N][8];   // each lane's top-left texel of the neighbourhood
+  for (int h = 0; h < N; ++h) {
+    ref[h] = _mm256_min_ps(_mm256_max_ps(ref8[h].v, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(start[h]),
+                       _mm256_add_epi32(_mm256_mullo_epi32(y[h][0].i0, _mm256_set1_epi32(depth.width)), x[h][0].i0));
+  }
+  // passes[h][r][c]: ref <= texel (r, c) of group h's neighbourhood, per lane.
+  __m256 passes[N][kMaxTexels][kMaxTexels];
   for (int r = 0; r < texels; ++r) {
     const size_t rowOffset = size_t(r) * size_t(depth.width);
-    // Columns 0-3 of the row, then (for 6 texels) columns 2-5: two 16-byte loads per lane
-    // that stay inside the row, since the last tap was not clamped.
-    for (int first = 0; first < texels; first += 2) {
-      if (first + 4 > texels) break;
-      __m256i v[4];   // v[k]: lane k's four codes low, lane k + 4's high
-      for (int k = 0; k < 4; ++k)
-        v[k] = _mm256_setr_m128i(
-            _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[k]) + rowOffset + size_t(first))),
-            _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[k + 4]) + rowOffset + size_t(first))));
-      const __m256i t0 = _mm256_unpacklo_epi32(v[0], v[1]), t1 = _mm256_unpackhi_epi32(v[0], v[1]);
-      const __m256i t2 = _mm256_unpacklo_epi32(v[2], v[3]), t3 = _mm256_unpackhi_epi32(v[2], v[3]);
-      const __m256i column[4] = {_mm256_unpacklo_epi64(t0, t2), _mm256_unpackhi_epi64(t0, t2),
-                                 _mm256_unpacklo_epi64(t1, t3), _mm256_unpackhi_epi64(t1, t3)};
-      for (int c = 0; c < 4; ++c) {
-        const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(column[c]), _mm256_set1_ps(scale));
-        passes[r][first + c] = _mm256_cmp_ps(ref, texel, _CMP_LE_OQ);
+    for (int h = 0; h < N; ++h) {
+      if (!shared[h]) continue;
+      // Columns 0-3 of the row, then (for 6 texels) columns 2-5: two 16-byte loads per lane
+      // that stay inside the row, since the last tap was not clamped.
+      for (int first = 0; first < texels; first += 2) {
+        if (first + 4 > texels) break;
+        __m256i v[4];   // v[k]: lane k's four codes low, lane k + 4's high
+        for (int k = 0; k < 4; ++k)
+          v[k] = _mm256_setr_m128i(
+              _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[h][k]) + rowOffset + size_t(first))),
+              _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[h][k + 4]) + rowOffset + size_t(first))));
+        const __m256i t0 = _mm256_unpacklo_epi32(v[0], v[1]), t1 = _mm256_unpackhi_epi32(v[0], v[1]);
+        const __m256i t2 = _mm256_unpacklo_epi32(v[2], v[3]), t3 = _mm256_unpackhi_epi32(v[2], v[3]);
+        const __m256i column[4] = {_mm256_unpacklo_epi64(t0, t2), _mm256_unpackhi_epi64(t0, t2),
+                                   _mm256_unpacklo_epi64(t1, t3), _mm256_unpackhi_epi64(t1, t3)};
+        for (int c = 0; c < 4; ++c) {
+          const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(column[c]), _mm256_set1_ps(scale));
+          passes[h][r][first + c] = _mm256_cmp_ps(ref[h], texel, _CMP_LE_OQ);
+        }
       }
     }
   }
-  for (int j = 0; j < count; ++j) {
-    for (int i = 0; i < count; ++i) {
-      const __m256 w = x[i].weight, oneMinusW = _mm256_sub_ps(_mm256_set1_ps(1.0f), w);
-      const __m256 r0 = _mm256_add_ps(_mm256_and_ps(w, passes[j][i + 1]), _mm256_and_ps(oneMinusW, passes[j][i]));
-      const __m256 r1 = _mm256_add_ps(_mm256_and_ps(w, passes[j + 1][i + 1]), _mm256_and_ps(oneMinusW, passes[j + 1][i]));
-      taps[j * count + i] = simd::Float8(_mm256_fmadd_ps(y[j].weight, _mm256_sub_ps(r1, r0), r0));
+  for (int h = 0; h < N; ++h) {
+    if (!shared[h]) continue;
+    for (int j = 0; j < count; ++j) {
+      for (int i = 0; i < count; ++i) {
+        const __m256 w = x[h][i].weight, oneMinusW = _mm256_sub_ps(_mm256_set1_ps(1.0f), w);
+        const __m256 r0 = _mm256_add_ps(_mm256_and_ps(w, passes[h][j][i + 1]), _mm256_and_ps(oneMinusW, passes[h][j][i]));
+        const __m256 r1 =
+            _mm256_add_ps(_mm256_and_ps(w, passes[h][j + 1][i + 1]), _mm256_and_ps(oneMinusW, passes[h][j + 1][i]));
+        taps[h][j * count + i] = simd::Float8(_mm256_fmadd_ps(y[h][j].weight, _mm256_sub_ps(r1, r0), r0));
+      }
     }
   }
+}
+
+}  // namespace
+
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
+                  simd::Float8* taps) {
+  compareGridN<1>(depth, &s, &t, step, &ref, radius, &taps);
+}
+
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
+                    const simd::Float8 ref[2], int radius, simd::Float8* lo, simd::Float8* hi) {
+  simd::Float8* const taps[2] = {lo, hi};
+  compareGridN<2>(depth, s, t, step, ref, radius, taps);
 }
 #endif
 

@@ -38,6 +38,10 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
 // (i + radius)]. Overlapping taps share their texels (radius 1 or 2).
 void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
                   simd::Float8* taps);
+// Two such grids (Float8x2 shading), each bit-identical to compareGrid8: both groups'
+// texel rows are loaded before either blends, so their cache misses overlap.
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
+                    const simd::Float8 ref[2], int radius, simd::Float8* lo, simd::Float8* hi);
 #endif
 
 // One colour lookup (sampler2D): RGBA8 through llvmpipe's 8-bit fixed-point path, float
@@ -197,8 +201,8 @@ void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float 
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
     constexpr int kTaps = (2 * R + 1) * (2 * R + 1);
     simd::Float8 lo[kTaps], hi[kTaps];
-    sampling::compareGrid8(*sampler.texture, uv.x.lo, uv.y.lo, step, ref.lo, R, lo);
-    sampling::compareGrid8(*sampler.texture, uv.x.hi, uv.y.hi, step, ref.hi, R, hi);
+    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi}, refs[2] = {ref.lo, ref.hi};
+    sampling::compareGrid8x2(*sampler.texture, s, t, step, refs, R, lo, hi);
     for (int k = 0; k < kTaps; ++k) taps[k / (2 * R + 1)][k % (2 * R + 1)] = {lo[k], hi[k]};
     return;
   }

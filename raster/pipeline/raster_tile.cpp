@@ -122,14 +122,16 @@ struct LaneLayout {
   static constexpr int kQuads = kLanes / 4;
   static constexpr int kGroupsPerBlock = 16 / kLanes;
   int dx[kLanes], dy[kLanes];
-  F dxLanes, dyLanes;   // the same offsets as lane values
-  explicit LaneLayout(bool flipY) {
+  F dxLanes, dyLanes;        // the same offsets as lane values
+  size_t texel[kLanes];      // the same offsets in texels of a `width`-wide attachment
+  LaneLayout(bool flipY, int width) {
     alignas(32) float fx[kLanes], fy[kLanes];
     for (int i = 0; i < kLanes; ++i) {
       dx[i] = (i / 4) * 2 + (i & 1);
       dy[i] = flipY ? 1 - ((i >> 1) & 1) : (i >> 1) & 1;
       fx[i] = float(dx[i]);
       fy[i] = float(dy[i]);
+      texel[i] = size_t(dy[i]) * size_t(width) + size_t(dx[i]);
     }
     dxLanes = F::load(fx);
     dyLanes = F::load(fy);
@@ -154,7 +156,7 @@ struct RowPairLanes {
   uint8_t lanes[2][256];
   RowPairLanes() {
     for (int flip = 0; flip < 2; ++flip) {
-      const LaneLayout<simd::Lanes<8>> layout(flip == 1);
+      const LaneLayout<simd::Lanes<8>> layout(flip == 1, 0);
       for (unsigned bits = 0; bits < 256; ++bits) lanes[flip][bits] = uint8_t(layout.laneMask(bits, 0));
     }
   }
@@ -251,7 +253,8 @@ bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   bool texelsKnown = false;
   auto knowTexels = [&] {
     if (texelsKnown) return;
-    for (int i = 0; i < kLanes; ++i) group.texel[i] = size_t(gy + layout.dy[i]) * size_t(fb.width) + size_t(gx + layout.dx[i]);
+    const size_t origin = size_t(gy) * size_t(fb.width) + size_t(gx);
+    for (int i = 0; i < kLanes; ++i) group.texel[i] = origin + layout.texel[i];
     texelsKnown = true;
   };
 
@@ -373,7 +376,7 @@ class GroupShader {
     ReadyGroup<F>& ready = slots_[index];
 #if RASTER_AVX2
     if constexpr (std::is_same_v<F, simd::Float8>) {
-      if (ready.draw->shader->samplesTextures()) {
+      if (ready.draw->samplesTextures) {
         if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
           shadeGroupPair(job_, slots_[waiting_], ready, counters_);
           waiting_ = -1;
@@ -407,7 +410,7 @@ class GroupShader {
 template <class F>
 void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters) {
   const Framebuffer& fb = *job.framebuffer;
-  const LaneLayout<F> layout(fb.flipY);
+  const LaneLayout<F> layout(fb.flipY, fb.width);
   const int tileX0 = tileX * kTileSize, tileY0 = tileY * kTileSize;
   const int tileX1 = std::min(tileX0 + kTileSize, fb.width) - 1;
   const int tileY1 = std::min(tileY0 + kTileSize, fb.height) - 1;

@@ -154,7 +154,8 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
       }
     }
   }
-  draws_.push_back(RecordedDraw{std::move(shader), state});
+  const bool samplesTextures = shader->samplesTextures();
+  draws_.push_back(RecordedDraw{std::move(shader), state, samplesTextures});
   const uint64_t binStart = cycleCount();
   counters_.setupCycles += binStart - setupStart;
   bin(firstTriangle);

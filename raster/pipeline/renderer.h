@@ -64,6 +64,7 @@ struct RasterState {
 struct RecordedDraw {
   std::unique_ptr<ShaderInstance> shader;
   RasterState state;
+  bool samplesTextures = false;   // shader->samplesTextures(), asked once per draw
 };
 
 // What happened in the pipeline since the counters were last reset.

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "apps/pass_timer.h"
 #include "raster/util/cycles.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
@@ -24,27 +25,45 @@
 namespace cli {
 namespace {
 
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+}
+
 struct Timed {
   std::string backend;
   std::vector<double> ms;
-  double median() const {
-    std::vector<double> v = ms;
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-  }
+  double median() const { return cli::median(ms); }
 };
 
+// A backend, its scene set up through a pass timer (timing off unless --passes asks), and
+// its frame times.
 struct Contender {
   std::unique_ptr<scenes::Backend> backend;
+  std::unique_ptr<PassTimer> passTimer;
   std::unique_ptr<scenes::Scene> scene;
   Timed timed;
 };
 
 double renderOnce(Contender& c, float time) {
   const auto start = std::chrono::steady_clock::now();
-  c.scene->renderFrame(*c.backend, time);
-  c.backend->finish();
+  c.scene->renderFrame(*c.passTimer, time);
+  c.passTimer->finish();
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Both contenders' passes side by side: medians, and the ratio GL / this pipeline.
+void printPasses(const Contender (&contenders)[2], int frames) {
+  const std::vector<PassTimer::Pass>& ours = contenders[0].passTimer->passes();
+  const std::vector<PassTimer::Pass>& theirs = contenders[1].passTimer->passes();
+  const std::string& gl = contenders[1].timed.backend;
+  std::printf("per pass (%d frames alternating, each pass finished before the next; medians):\n", frames);
+  std::printf("  pass  %-24s %10s %11s %10s\n", "program", "raster ms", (gl + " ms").c_str(), "ratio");
+  for (size_t k = 0; k < std::min(ours.size(), theirs.size()); ++k) {
+    const double a = median(ours[k].ms), b = median(theirs[k].ms);
+    std::printf("  %4zu  %-24s %10.3f %11.3f %10.2f\n", k + 1, ours[k].program.empty() ? "(clear only)" : ours[k].program.c_str(),
+                a, b, a > 0 ? b / a : 0.0);
+  }
 }
 
 // Where this pipeline's time goes, per frame: stages in milliseconds of CPU time (the tile
@@ -87,6 +106,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   command->add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
   command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  command->add_flag("--passes", args.passes,
+                    "Then time each pass of both backends, finishing after each (up to 9 more frames each)");
   return command;
 }
 
@@ -109,9 +130,10 @@ int runBench(const BenchArgs& args) {
   contenders[1].backend = scenes::makeGlBackend();
   for (Contender& c : contenders) {
     c.timed.backend = c.backend->name();
+    c.passTimer = std::make_unique<PassTimer>(*c.backend);
     c.scene = scenes::makeScene(frame.scene, options);
-    c.backend->resizeDefaultFramebuffer(frame.width, frame.height);
-    c.scene->setup(*c.backend);
+    c.passTimer->resizeDefaultFramebuffer(frame.width, frame.height);
+    c.scene->setup(*c.passTimer);
   }
 
   std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d: %d warm-up + %d timed frames each\n", frame.scene.c_str(),
@@ -135,6 +157,16 @@ int runBench(const BenchArgs& args) {
   const double cyclesPerMs = double(raster::cycleCount() - tscStart) / elapsedMs;
   printBreakdown(contenders[0].backend->statistics(), breakdownFrames, cyclesPerMs, frame.width * frame.height);
 
+  const int passFrames = args.passes ? std::min(args.frames, 9) : 0;
+  if (passFrames > 0) {
+    contenders[0].backend->resetStatistics(/*timeStages=*/false);
+    for (Contender& c : contenders) c.passTimer->setTiming(true);
+    for (int i = 0; i < passFrames; ++i)
+      for (Contender& c : contenders) renderOnce(c, frame.time);
+    for (Contender& c : contenders) c.passTimer->setTiming(false);
+    printPasses(contenders, passFrames);
+  }
+
   const double ratio = contenders[1].timed.median() / contenders[0].timed.median();
   for (const Contender& c : contenders)
     std::printf("scene=%s backend=%s threads=%d size=%dx%d median_ms=%.3f\n", frame.scene.c_str(),
@@ -151,7 +183,18 @@ int runBench(const BenchArgs& args) {
       for (size_t i = 0; i < t.ms.size(); ++i) json << (i ? "," : "") << t.ms[i];
       json << "]}";
     }
-    json << "],\"ratio\":" << ratio << "}\n";
+    json << "],\"ratio\":" << ratio;
+    if (passFrames > 0) {
+      json << ",\"passes\":[";
+      const std::vector<PassTimer::Pass>& ours = contenders[0].passTimer->passes();
+      const std::vector<PassTimer::Pass>& theirs = contenders[1].passTimer->passes();
+      for (size_t k = 0; k < std::min(ours.size(), theirs.size()); ++k)
+        json << (k ? "," : "") << "{\"program\":\"" << ours[k].program << "\",\"" << contenders[0].timed.backend
+             << "_ms\":" << median(ours[k].ms) << ",\"" << contenders[1].timed.backend << "_ms\":" << median(theirs[k].ms)
+             << "}";
+      json << "]";
+    }
+    json << "}\n";
     if (!json) throw std::runtime_error("cannot write " + args.json);
   }
   return 0;

@@ -15,6 +15,7 @@ struct BenchArgs : FrameArgs {
   int warmup = 3;                  // untimed frames per backend first
   std::string glDriver = "llvmpipe";
   std::string json;                // empty: no JSON file
+  bool passes = false;             // also time each pass of both backends
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);

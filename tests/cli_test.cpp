@@ -168,6 +168,21 @@ TEST_SUITE("cli") {
     expectRefused("bench " + aScene() + " --json /nonexistent/dir/results.json");
   }
 
+  TEST_CASE("bench --passes times every pass of both backends, on screen and in the JSON") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult run = runCli(cwd, "bench hdr --size 64x48 --frames 2 --warmup 0 --passes --json passes.json");
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    CHECK(run.out.find("per pass") != std::string::npos);
+    for (const char* program : {"hdr/scene", "hdr/post+bright", "hdr/post+down", "hdr/post+up", "hdr/post+composite"})
+      CHECK(run.out.find(program) != std::string::npos);
+    const std::string json = readText(cwd / "passes.json");
+    CHECK(json.find("\"passes\":[{\"program\":\"hdr/scene\",\"raster_ms\":") != std::string::npos);
+    CHECK(json.find("\"llvmpipe_ms\":") != std::string::npos);
+  }
+
   TEST_CASE("an --out that cannot be written is refused before rendering") {
     expectRefused("render " + aScene() + " --out /nonexistent/dir/x.png");
     CHECK_FALSE(fs::exists("/nonexistent/dir/x.png"));

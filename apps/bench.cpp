@@ -52,17 +52,29 @@ double renderOnce(Contender& c, float time) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Both contenders' passes side by side: medians, and the ratio GL / this pipeline.
-void printPasses(const Contender (&contenders)[2], int frames) {
+// One pass of both contenders: its first program and the medians of its times.
+struct PassRow {
+  std::string program;
+  double oursMs, theirsMs;
+};
+
+std::vector<PassRow> passRows(const Contender (&contenders)[2]) {
   const std::vector<PassTimer::Pass>& ours = contenders[0].passTimer->passes();
   const std::vector<PassTimer::Pass>& theirs = contenders[1].passTimer->passes();
-  const std::string& gl = contenders[1].timed.backend;
+  std::vector<PassRow> rows;
+  for (size_t k = 0; k < std::min(ours.size(), theirs.size()); ++k)
+    rows.push_back({ours[k].program, median(ours[k].ms), median(theirs[k].ms)});
+  return rows;
+}
+
+// Both contenders' passes side by side: medians, and the ratio GL / this pipeline.
+void printPasses(const std::vector<PassRow>& rows, const std::string& gl, int frames) {
   std::printf("per pass (%d frames alternating, each pass finished before the next; medians):\n", frames);
   std::printf("  pass  %-24s %10s %11s %10s\n", "program", "raster ms", (gl + " ms").c_str(), "ratio");
-  for (size_t k = 0; k < std::min(ours.size(), theirs.size()); ++k) {
-    const double a = median(ours[k].ms), b = median(theirs[k].ms);
-    std::printf("  %4zu  %-24s %10.3f %11.3f %10.2f\n", k + 1, ours[k].program.empty() ? "(clear only)" : ours[k].program.c_str(),
-                a, b, a > 0 ? b / a : 0.0);
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const PassRow& row = rows[k];
+    std::printf("  %4zu  %-24s %10.3f %11.3f %10.2f\n", k + 1, row.program.empty() ? "(clear only)" : row.program.c_str(),
+                row.oursMs, row.theirsMs, row.oursMs > 0 ? row.theirsMs / row.oursMs : 0.0);
   }
 }
 
@@ -158,13 +170,15 @@ int runBench(const BenchArgs& args) {
   printBreakdown(contenders[0].backend->statistics(), breakdownFrames, cyclesPerMs, frame.width * frame.height);
 
   const int passFrames = args.passes ? std::min(args.frames, 9) : 0;
+  std::vector<PassRow> passes;
   if (passFrames > 0) {
     contenders[0].backend->resetStatistics(/*timeStages=*/false);
     for (Contender& c : contenders) c.passTimer->setTiming(true);
     for (int i = 0; i < passFrames; ++i)
       for (Contender& c : contenders) renderOnce(c, frame.time);
     for (Contender& c : contenders) c.passTimer->setTiming(false);
-    printPasses(contenders, passFrames);
+    passes = passRows(contenders);
+    printPasses(passes, contenders[1].timed.backend, passFrames);
   }
 
   const double ratio = contenders[1].timed.median() / contenders[0].timed.median();
@@ -186,11 +200,9 @@ int runBench(const BenchArgs& args) {
     json << "],\"ratio\":" << ratio;
     if (passFrames > 0) {
       json << ",\"passes\":[";
-      const std::vector<PassTimer::Pass>& ours = contenders[0].passTimer->passes();
-      const std::vector<PassTimer::Pass>& theirs = contenders[1].passTimer->passes();
-      for (size_t k = 0; k < std::min(ours.size(), theirs.size()); ++k)
-        json << (k ? "," : "") << "{\"program\":\"" << ours[k].program << "\",\"" << contenders[0].timed.backend
-             << "_ms\":" << median(ours[k].ms) << ",\"" << contenders[1].timed.backend << "_ms\":" << median(theirs[k].ms)
+      for (size_t k = 0; k < passes.size(); ++k)
+        json << (k ? "," : "") << "{\"program\":\"" << passes[k].program << "\",\"" << contenders[0].timed.backend
+             << "_ms\":" << passes[k].oursMs << ",\"" << contenders[1].timed.backend << "_ms\":" << passes[k].theirsMs
              << "}";
       json << "]";
     }

@@ -471,4 +471,60 @@ TEST_SUITE("gl_math") {
       CHECK(scalarDiffering == 0);
     }
   }
+
+#if RASTER_AVX2
+  // pow takes a shortcut when every lane's base is 0 or a positive normal float (and the
+  // exponent is 0 or not tiny): no daz, no edge cases. One negative lane sends the whole
+  // group down the full path, so each group is computed both ways and compared lane by lane.
+  TEST_CASE("pow's shortcut for plain groups gives the full path's bits") {
+    using raster::simd::Float8;
+    std::mt19937 rng(7);
+    auto plainBase = [&]() -> float {
+      switch (rng() % 6u) {
+        case 0: return 0.0f;
+        case 1: return fromBits(bits(1.0f) + (rng() % 64u) - 32u);   // log2 near 0
+        case 2: return std::fabs(magnitude(rng, -126, 127));
+        case 3: return std::numeric_limits<float>::min();
+        case 4: return std::numeric_limits<float>::max();
+        default: return uniformIn(rng, 0.0f, 1.0f);
+      }
+    };
+    auto plainExponent = [&]() -> float {
+      switch (rng() % 5u) {
+        case 0: return 0.0f;
+        case 1: return magnitude(rng, -55, -40);   // the smallest exponents the shortcut takes
+        case 2: return magnitude(rng, 100, 127);   // products far outside exp2's range
+        default: return uniformIn(rng, -64.0f, 64.0f);
+      }
+    };
+    size_t differing = 0, groups = 0;
+    std::string first;
+    auto compare = [&](const char* name, auto fn) {
+      for (int round = 0; round < 20000; ++round) {
+        alignas(32) float xs[8], ys[8], plain[8], full[8];
+        for (int l = 0; l < 8; ++l) xs[l] = plainBase(), ys[l] = plainExponent();
+        const float y = ys[0];
+        for (int l = 0; l < 8; ++l) ys[l] = (round & 1) ? y : ys[l];   // uniform exponents too
+        fn(Float8::load(xs), Float8::load(ys)).store(plain);
+        alignas(32) float xsBroken[8];
+        std::memcpy(xsBroken, xs, sizeof xs);
+        xsBroken[round % 8] = -1.0f;   // not plain: the full path for every lane
+        fn(Float8::load(xsBroken), Float8::load(ys)).store(full);
+        ++groups;
+        for (int l = 0; l < 8; ++l)
+          if (l != round % 8 && bits(plain[l]) != bits(full[l]) && differing++ == 0)
+            first = std::string(name) + "(" + std::to_string(xs[l]) + ", " + std::to_string(ys[l]) + ")";
+      }
+    };
+    namespace glsl = raster::glsl;
+    compare("pow", [](Float8 x, Float8 y) { return glsl::pow(x, y); });
+    compare("pow<2.2>", [](Float8 x, Float8) { return glsl::pow<2.2f>(x); });
+    compare("pow<0.4545>", [](Float8 x, Float8) { return glsl::pow<1.0f / 2.2f>(x); });
+    compare("pow<2.5>", [](Float8 x, Float8) { return glsl::pow<2.5f>(x); });
+    compare("pow<48>", [](Float8 x, Float8) { return glsl::pow<48.0f>(x); });
+    CAPTURE(first);
+    CHECK(groups == 100000);
+    CHECK(differing == 0);
+  }
+#endif
 }

@@ -226,9 +226,8 @@ constexpr float kAtan11 = -0.0121323213173444f;
 // Always inlined (here and log2Impl): pow is exp2(log2), and for Float8x2 an outlined call
 // would pass both 64-byte halves through the stack.
 template <class F>
-[[gnu::always_inline]] inline F exp2Impl(F x) {
+[[gnu::always_inline]] inline F exp2Core(F x) {
   using U = UOf<F>;
-  x = daz(x);
   x = minps(F(128.0f), x);
   x = maxps(F(-126.99999f), x);
   const F ipart = floorF(x);
@@ -244,6 +243,8 @@ template <class F>
   const F p = fmaF(odd, fpart, even);
   return expipart * p;
 }
+template <class F>
+[[gnu::always_inline]] inline F exp2Impl(F x) { return exp2Core(daz(x)); }
 
 // lp_build_log2_safe = lp_build_log2_approx(handle_edge_cases = TRUE):
 //   logexp = float(((bits(x) & 0x7f800000) >> 23) - 127)
@@ -253,10 +254,11 @@ template <class F>
 //   result = fmuladd(y, P(z), logexp)
 //   then, unordered compares: x >= +inf -> +inf; x == 0 -> -inf; x < 0 -> NaN
 //   (so NaN -> NaN; with DAZ a denormal compares equal to 0 -> -inf).
+// log2Core is the approximation alone: for a positive normal finite x, daz and the edge
+// cases change nothing.
 template <class F>
-[[gnu::always_inline]] inline F log2Impl(F x) {
+[[gnu::always_inline]] inline F log2Core(F x) {
   using U = UOf<F>;
-  x = daz(x);
   const U i = asBits(x);
   const F logexp = cvt(((i & U(0x7f800000u)) >> 23) - U(127u));
   const F mant = asFloat((i & U(0x007fffffu)) | U(0x3f800000u));
@@ -269,7 +271,12 @@ template <class F>
   odd = fmaF(z2, odd, F(kLog2P1));
   even = fmaF(z2, even, F(kLog2P0));
   const F p = fmaF(odd, z, even);
-  F res = fmaF(y, p, logexp);
+  return fmaF(y, p, logexp);
+}
+template <class F>
+[[gnu::always_inline]] inline F log2Impl(F x) {
+  x = daz(x);
+  F res = log2Core(x);
   const float inf = __builtin_inff();
   res = sel(uge(x, F(inf)), F(inf), res);
   res = sel(ueq(x, F(0.0f)), F(-inf), res);
@@ -277,10 +284,36 @@ template <class F>
   return res;
 }
 
+// Whether every lane holds a true value (for the float lane type, bool | bool is an int).
+inline bool allLanes(int m) { return m != 0; }
+template <class M> bool allLanes(M m) { return simd::all(m); }
+
+// pow's common case, checked once per group: every x is +-0 or a positive normal float and
+// every y is 0 or finite with |y| >= 2^-55. Then pow is exp2Core(log2Core(x) * y), with 0
+// where x is 0, bit for bit:
+//   - daz(x), daz(y) and the NaN choice of the product change nothing;
+//   - log2's edge cases (inf, 0, negative, NaN) do not occur, and a zero x is masked;
+//   - exp2's flush of a denormal product does nothing: log2Core(x) is an fmuladd of the
+//     floats y (0, or >= 2^-25 and a multiple of 2^-48) and p (a multiple of 2^-22) onto an
+//     integer, so it is 0 or at least 2^-70 in magnitude, and times |y| >= 2^-55 it is
+//     0 or at least 2^-125, no denormal.
+template <class F>
+[[gnu::always_inline]] inline bool powBaseIsPlain(F x) {
+  return allLanes(((x >= F(0x1p-126f)) | (x == F(0.0f))) & (x < F(__builtin_inff())));
+}
+constexpr float kPlainExponentMin = 0x1p-55f;
+template <class F>
+[[gnu::always_inline]] inline F powPlain(F x, F y) {
+  return sel(x == F(0.0f), F(0.0f), exp2Core(log2Core(x) * y));
+}
+
 // lp_build_pow: x == 0 (unordered: NaN too) ? 0 : exp2(log2_safe(x) * y).
 // So pow(0, y) = 0 for every y, pow(NaN, y) = 0, pow(x < 0, y) = NaN.
 template <class F>
-F powImpl(F x, F y) {
+[[gnu::always_inline]] inline F powImpl(F x, F y) {
+  const F ay = fabsF(y);
+  if (powBaseIsPlain(x) && allLanes(((ay >= F(kPlainExponentMin)) | (ay == F(0.0f))) & (ay < F(__builtin_inff()))))
+    return powPlain(x, y);
   x = daz(x);
   y = daz(y);
   const auto zero = ueq(x, F(0.0f));
@@ -293,8 +326,10 @@ F powImpl(F x, F y) {
 // powImpl with an exponent fixed at compile time, a normal float: daz(y) is y and y is no
 // NaN, so only x's part is left.
 template <float Y, class F>
-F powConstImpl(F x) {
+[[gnu::always_inline]] inline F powConstImpl(F x) {
   static_assert(Y == Y && __builtin_isnormal(Y), "a literal exponent is a normal float");
+  if constexpr (Y >= kPlainExponentMin || Y <= -kPlainExponentMin)
+    if (powBaseIsPlain(x)) return powPlain(x, F(Y));
   x = daz(x);
   const auto zero = ueq(x, F(0.0f));
   const F res = exp2Impl(log2Impl(x) * F(Y));

@@ -478,7 +478,7 @@ template <class F> requires detail::LaneType<F> F atan(F y, F x) { return detail
 
 // pow(x, y) with a run-time exponent (a varying, a uniform, a computed value): llvmpipe's
 // lp_build_pow, exp2(log2(x) * y), with pow(0, y) = 0.
-template <class F> requires detail::LaneType<F> F pow(F x, F y) { return detail::powImpl(x, y); }
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F pow(F x, F y) { return detail::powImpl(x, y); }
 
 // pow(x, Y) with a literal exponent in the GLSL source: Mesa's compilers fold some of
 // these before llvmpipe sees them (GLSL IR opt_algebraic.cpp, NIR nir_opt_algebraic.py):
@@ -489,7 +489,7 @@ template <class F> requires detail::LaneType<F> F pow(F x, F y) { return detail:
 // Not modelled (write them out in the port): a literal base, pow(2.0, y) = exp2(y) and
 // pow(1.0, y) = 1; and all-constant calls, which the compiler evaluates with the C library.
 template <float Y, class F> requires detail::LaneType<F>
-F pow(F x) {
+[[gnu::always_inline]] inline F pow(F x) {
   if constexpr (Y == 1.0f) {
     return x;
   } else if constexpr (Y == 2.0f) {

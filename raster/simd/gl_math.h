@@ -347,7 +347,7 @@ template <float Y, class F>
 //   result = clamp(poly ^ sign, -1, 1) (minps then maxps); NaN for infinite or NaN x.
 // Arguments with |x| * 4/pi >= 2^31 make cvtt return 0x80000000 (as on x86).
 template <class F>
-F sinOrCosImpl(F a, bool cosine) {
+[[gnu::always_inline]] inline F sinOrCosImpl(F a, bool cosine) {
   using U = UOf<F>;
   a = daz(a);
   const U ai = asBits(a);
@@ -468,8 +468,8 @@ F atan2Impl(F y, F x) {
 // instantiated with F = float computes what llvmpipe computes too.
 template <class F> requires detail::LaneType<F> F exp2(F x) { return detail::exp2Impl(x); }
 template <class F> requires detail::LaneType<F> F log2(F x) { return detail::log2Impl(x); }
-template <class F> requires detail::LaneType<F> F sin(F x) { return detail::sinOrCosImpl(x, false); }
-template <class F> requires detail::LaneType<F> F cos(F x) { return detail::sinOrCosImpl(x, true); }
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F sin(F x) { return detail::sinOrCosImpl(x, false); }
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F cos(F x) { return detail::sinOrCosImpl(x, true); }
 template <class F> requires detail::LaneType<F> F acos(F x) { return F(detail::kPi2) - detail::asinExpr(detail::daz(x), detail::kAcosP0, detail::kAcosP1); }
 template <class F> requires detail::LaneType<F> F asin(F x) { return detail::asinExpr(detail::daz(x), detail::kAsinP0, detail::kAsinP1); }
 // GLSL atan(y_over_x) and atan(y, x).

@@ -8,8 +8,10 @@
 namespace scenes {
 
 // This project's pipeline. threads = 0 uses every core; any count gives the same bytes.
-// scalarOnly turns every SIMD fast path off (plain C++ lanes); the bytes are the same too.
-std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false);
+// scalarOnly turns every SIMD fast path off (plain C++ lanes); visibilityFirst = false
+// shades every fragment that passes its depth test, in order, instead of only the visible
+// ones (raster::Renderer::setVisibilityFirst). The bytes are the same either way.
+std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

@@ -44,7 +44,8 @@ struct Mesh {
 
 class RasterBackend final : public Backend {
  public:
-  RasterBackend(int threads, bool scalarOnly) : renderer_(threads, scalarOnly) {
+  RasterBackend(int threads, bool scalarOnly, bool visibilityFirst) : renderer_(threads, scalarOnly) {
+    renderer_.setVisibilityFirst(visibilityFirst);
     textures_.emplace_back();     // handle 0: no texture
     framebuffers_.emplace_back(); // handle 0: the default framebuffer
     meshes_.emplace_back();
@@ -258,8 +259,8 @@ class RasterBackend final : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly) {
-  return std::make_unique<RasterBackend>(threads, scalarOnly);
+std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst) {
+  return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst);
 }
 
 }  // namespace scenes

@@ -35,6 +35,24 @@ TEST_SUITE("determinism") {
     }
   }
 
+  // Passes whose colour draws do not blend shade only each pixel's visible fragment
+  // (raster_tile.cpp, rasterizeVisibleFirst): the hdr scene's cubes and deferred's G-buffer
+  // (many triangles per tile, overlapping) take that path. It must leave the bytes of
+  // shading every fragment in order, with SIMD lanes and with plain ones.
+  TEST_CASE("shading only visible fragments gives the bytes of shading every fragment in order") {
+    for (const char* scene : {"hdr", "deferred"}) {
+      for (const auto& [w, h] : {std::pair{640, 480}, std::pair{333, 217}}) {
+        INFO(scene << " at " << w << "x" << h);
+        auto inOrder = scenes::makeRasterBackend(2, /*scalarOnly=*/false, /*visibilityFirst=*/false);
+        const auto reference = testing_support::renderScene(*inOrder, scene, 1.3f, w, h);
+        auto visible = scenes::makeRasterBackend(2);
+        checkSameBytes(reference, testing_support::renderScene(*visible, scene, 1.3f, w, h));
+        auto scalar = scenes::makeRasterBackend(2, /*scalarOnly=*/true);
+        checkSameBytes(reference, testing_support::renderScene(*scalar, scene, 1.3f, w, h));
+      }
+    }
+  }
+
   TEST_CASE("a backend that already rendered other frames gives the same bytes again") {
     auto backend = scenes::makeRasterBackend(0);
     const auto first = testing_support::renderScene(*backend, "shadow", 0.7f, 640, 480);

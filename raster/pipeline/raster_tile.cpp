@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <type_traits>
 #if RASTER_AVX2
 #include <immintrin.h>
@@ -239,53 +240,60 @@ struct ReadyGroup {
   F varyings[kMaxVaryingFloats];
 };
 
-// Depth test and fragment inputs of one lane group whose covered lanes are `laneMask`, at
-// group origin (gx, gy). False when nothing is left to shade.
+// Depth test of one lane group at origin (gx, gy) whose covered lanes are `laneMask`: z
+// from its plane plus the polygon offset (returned in z), clamped to [0, 1] (NaN -> 0),
+// quantized, tested and written. Returns the lanes that pass.
 template <class F>
-bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
-                  int gx, int gy, unsigned laneMask, PipelineCounters& counters, ReadyGroup<F>& group) {
+[[gnu::always_inline]] inline unsigned depthTestGroup(const TileJob& job, const SetupTriangle& tri,
+                                                     const RecordedDraw& draw, const LaneLayout<F>& layout, int gx,
+                                                     int gy, unsigned laneMask, F& z) {
   constexpr int kLanes = F::kCount;
   const Framebuffer& fb = *job.framebuffer;
   // Pixel coordinates per lane (small integers: the float sums are exact).
   const F px = F(float(gx)) + layout.dxLanes;
   const F py = F(float(gy)) + layout.dyLanes;
-  // Each lane's pixel index, computed once some lane needs it (not for depth-only draws).
-  bool texelsKnown = false;
-  auto knowTexels = [&] {
-    if (texelsKnown) return;
-    const size_t origin = size_t(gy) * size_t(fb.width) + size_t(gx);
-    for (int i = 0; i < kLanes; ++i) group.texel[i] = origin + layout.texel[i];
-    texelsKnown = true;
-  };
-
-  // Depth: plane + offset, clamped to [0, 1] (NaN -> 0), quantized, tested, written.
-  const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+  z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
   const RasterState& state = draw.state;
-  if (state.depthTest && fb.depth) {
-    uint32_t codes[kLanes];
-    output_merge::depthCodes(simd::min(simd::max(z, F(0.0f)), F(1.0f)), fb.depth->format, codes);
+  if (!state.depthTest || !fb.depth) return laneMask;
+  uint32_t codes[kLanes];
+  output_merge::depthCodes(simd::min(simd::max(z, F(0.0f)), F(1.0f)), fb.depth->format, codes);
 #if RASTER_AVX2
-    if constexpr (std::is_same_v<F, simd::Float8>) {
-      uint32_t* rowTop = fb.depth->depth.data() + size_t(gy) * size_t(fb.width) + size_t(gx);
-      // On a last odd row the second row's lanes are all masked off: no pointer past the buffer.
-      uint32_t* rowBottom = gy + 1 < fb.height ? rowTop + fb.width : rowTop;
-      const bool wholeRows = gx + 4 <= fb.width && gy + 1 < fb.height;
-      laneMask = output_merge::depthTestRows(codes, rowTop, rowBottom, laneMask, fb.flipY,
-                                             state.depthFunc == DepthFunc::Lequal, state.depthWrite,
-                                             wholeRows);
-    } else
-#endif
-    {
-      knowTexels();
-      laneMask = output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), group.texel, laneMask,
-                                                  state.depthFunc == DepthFunc::Lequal, state.depthWrite);
-    }
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    uint32_t* rowTop = fb.depth->depth.data() + size_t(gy) * size_t(fb.width) + size_t(gx);
+    // On a last odd row the second row's lanes are all masked off: no pointer past the buffer.
+    uint32_t* rowBottom = gy + 1 < fb.height ? rowTop + fb.width : rowTop;
+    const bool wholeRows = gx + 4 <= fb.width && gy + 1 < fb.height;
+    return output_merge::depthTestRows(codes, rowTop, rowBottom, laneMask, fb.flipY,
+                                       state.depthFunc == DepthFunc::Lequal, state.depthWrite, wholeRows);
   }
-  if (!laneMask) return false;
-  group.outputs = std::min(draw.shader->colorOutputs(), int(fb.colors.size()));
-  if (group.outputs == 0) return false;   // depth-only: the colour the shader would write is discarded
-  knowTexels();
+#endif
+  size_t texel[kLanes];
+  const size_t origin = size_t(gy) * size_t(fb.width) + size_t(gx);
+  for (int i = 0; i < kLanes; ++i) texel[i] = origin + layout.texel[i];
+  return output_merge::depthTest<kLanes>(codes, fb.depth->depth.data(), texel, laneMask,
+                                         state.depthFunc == DepthFunc::Lequal, state.depthWrite);
+}
+
+// The colour outputs a draw writes to this framebuffer (0: depth-only).
+int colorOutputsOf(const TileJob& job, const RecordedDraw& draw) {
+  return std::min(draw.shader->colorOutputs(), int(job.framebuffer->colors.size()));
+}
+
+// Fragment inputs of a lane group at origin (gx, gy) whose lanes `laneMask` passed their
+// depth test (z as depthTestGroup computed it): pixel indices, perspective-correct varyings
+// (helper lanes too, so dFdx / dFdy see whole quads) and gl_FragCoord.
+template <class F>
+[[gnu::always_inline]] inline void fillGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw,
+                                             const LaneLayout<F>& layout, int gx, int gy, unsigned laneMask, F z,
+                                             PipelineCounters& counters, ReadyGroup<F>& group) {
+  constexpr int kLanes = F::kCount;
+  const Framebuffer& fb = *job.framebuffer;
+  const F px = F(float(gx)) + layout.dxLanes;
+  const F py = F(float(gy)) + layout.dyLanes;
+  const size_t origin = size_t(gy) * size_t(fb.width) + size_t(gx);
+  for (int i = 0; i < kLanes; ++i) group.texel[i] = origin + layout.texel[i];
   counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+  group.outputs = colorOutputsOf(job, draw);
   group.draw = &draw;
   group.laneMask = laneMask;
 
@@ -299,7 +307,6 @@ bool prepareGroup(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
   group.in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
   group.in.gl_FrontFacing = tri.frontFacing;
-  return true;
 }
 
 // Shades one ready group and writes its colour outputs.
@@ -405,7 +412,195 @@ class GroupShader {
   int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
 };
 
+// The lane groups of one triangle inside one tile, in walk order: visit(gx, gy, laneMask)
+// for every group with a covered lane. Depth-only draws fill the 16x16 regions wholly inside
+// the triangle themselves (depthOnlyRegion) and visit only the rest.
+template <class F, class Visit>
+void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
+                  int tileX0, int tileY0, int tileX1, int tileY1, Visit&& visit) {
+  const Framebuffer& fb = *job.framebuffer;
+  const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
+  const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
+  const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
+  // Depth test and write, and no colour the shader writes is kept.
+  const bool depthOnly = draw.state.depthTest && draw.state.depthWrite && fb.depth && colorOutputsOf(job, draw) == 0;
+  // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
+  // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
+  // row of the triangle's extent at a time, so texture reads run along long rows.
+  const int firstRegionX = x0 & ~(kRegion - 1);
+  for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
+    Overlap overlap[kTileSize / kRegion + 1];
+    for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
+      overlap[(regionX - firstRegionX) / kRegion] = regionOverlap(edges, regionX, regionY);
+#if RASTER_AVX2
+    // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
+    if (std::is_same_v<F, simd::Float8> && depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
+      for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion) {
+        Overlap& region = overlap[(regionX - firstRegionX) / kRegion];
+        if (region != Overlap::Inside || regionX < x0 || regionX + kRegion - 1 > x1) continue;
+        depthOnlyRegion(tri, draw.state, *fb.depth, fb.width, regionX, regionY);
+        region = Overlap::Outside;
+      }
+    }
+#endif
+    const int bandY1 = std::min(y1, regionY + kRegion - 1);
+    for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
+      for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
+        const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
+        if (region == Overlap::Outside) continue;
+        const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(edges, blockX, blockY);
+        const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
+        if (!coverage) continue;
+        for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
+          const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
+          const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
+                                                   : layout.laneMask(coverage, g);
+          if (laneMask) visit(gx, gy, laneMask);
+        }
+      }
+    }
+  }
+}
+
+// Per-pixel triangle indices of one tile for rasterizeVisibleFirst, kept per lane group:
+// a group's entries are valid once it is marked (bit: group column, per pair of rows).
+template <class F>
+class TileTriangles {
+ public:
+  static constexpr int kLanes = F::kCount;
+  static constexpr int kGroupWidth = 2 * LaneLayout<F>::kQuads;   // 4 (8 lanes) or 2 (4 lanes)
+  static constexpr uint32_t kNone = ~0u;
+
+  explicit TileTriangles(bool flipY) : local_(flipY) {}
+
+  // Lanes `passed` of the group at tile offset (lx, ly) now show triangle `index`.
+  void mark(int lx, int ly, unsigned passed, uint32_t index) {
+    uint32_t* at = entries_ + ly * kTileSize + lx;
+    uint32_t& rowBits = marked_[ly / 2];
+    const uint32_t bit = 1u << (lx / kGroupWidth);
+    const bool first = !(rowBits & bit);
+    rowBits |= bit;
+#if RASTER_AVX2
+    if constexpr (kLanes == 8) {
+      if (first) {
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_set1_epi32(-1));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(at + kTileSize), _mm_set1_epi32(-1));
+      }
+      const __m256i bit8 = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+      const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(passed)), bit8), bit8);
+      const __m256i rows = _mm256_permutevar8x32_epi32(lanes, local_.toRows);
+      const __m128i value = _mm_set1_epi32(int(index));
+      _mm_maskstore_epi32(reinterpret_cast<int*>(at), _mm256_castsi256_si128(rows), value);
+      _mm_maskstore_epi32(reinterpret_cast<int*>(at + kTileSize), _mm256_extracti128_si256(rows, 1), value);
+      return;
+    }
+#endif
+    if (first)
+      for (int i = 0; i < kLanes; ++i) at[local_.texel[i]] = kNone;
+    for (; passed; passed &= passed - 1) at[local_.texel[__builtin_ctz(passed)]] = index;
+  }
+
+  // Calls shade(lx, ly, index, laneMask) once per triangle that marked group (lx, ly).
+  template <class Shade>
+  void forEachVisible(Shade&& shade) const {
+    for (int row = 0; row < kTileSize / 2; ++row) {
+      for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
+        const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
+        const uint32_t* at = entries_ + ly * kTileSize + lx;
+        alignas(32) uint32_t lanes[kLanes];
+#if RASTER_AVX2
+        if constexpr (kLanes == 8) {
+          const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
+                                                 _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTileSize)));
+          const __m256i v = _mm256_permutevar8x32_epi32(rows, local_.toLanes);
+          _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+          const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
+          unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
+          while (remaining) {
+            const uint32_t index = lanes[__builtin_ctz(remaining)];
+            const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
+            const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
+            remaining &= ~laneMask;
+            shade(lx, ly, index, laneMask);
+          }
+          continue;
+        }
+#endif
+        unsigned remaining = 0;
+        for (int i = 0; i < kLanes; ++i) {
+          lanes[i] = at[local_.texel[i]];
+          if (lanes[i] != kNone) remaining |= 1u << i;
+        }
+        while (remaining) {
+          const uint32_t index = lanes[__builtin_ctz(remaining)];
+          unsigned laneMask = 0;
+          for (int i = 0; i < kLanes; ++i)
+            if (lanes[i] == index) laneMask |= 1u << i;
+          remaining &= ~laneMask;
+          shade(lx, ly, index, laneMask);
+        }
+      }
+    }
+  }
+
+ private:
+  struct Local : LaneLayout<F> {   // lane offsets within the tile, and lanes <-> rows orders
+#if RASTER_AVX2
+    __m256i toRows, toLanes;
+#endif
+    explicit Local(bool flipY) : LaneLayout<F>(flipY, kTileSize) {
+#if RASTER_AVX2
+      // As output_merge::depthTestRows: [top row x..x+3 | bottom row x..x+3] <-> lanes.
+      toRows = flipY ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+      toLanes = flipY ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+#endif
+    }
+  };
+  const Local local_;
+  alignas(32) uint32_t entries_[kTileSize * kTileSize];
+  uint32_t marked_[kTileSize / 2] = {};
+
+ public:
+  void reset() { std::fill(std::begin(marked_), std::end(marked_), 0u); }
+};
+
+// Visibility first, for passes whose colour draws do not blend (TileJob::visibilityFirst).
+// Pass 1 walks every triangle of the bin in order with the depth test alone, and records per
+// pixel the last colour-writing triangle whose fragment passed: the fragment whose colour
+// the pixel would end with. Pass 2 shades, group by group, only those fragments: for each
+// triangle a group's pixels name, the group exactly as the in-order walk prepares it (same
+// origin, planes and helper lanes, so the same bits), with only that triangle's pixels
+// written. Each pixel is written once, so no order is needed between the groups.
+template <class F>
+void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX1, int tileY1,
+                           std::span<const uint32_t> bin, const LaneLayout<F>& layout, PipelineCounters& counters,
+                           GroupShader<F>& shader) {
+  thread_local TileTriangles<F> visibleFlip(true), visible(false);
+  TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
+  shown.reset();
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const RecordedDraw& draw = job.draws[tri.drawIndex];
+    const bool writesColor = colorOutputsOf(job, draw) > 0;
+    walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
+      F z;
+      const unsigned passed = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
+      if (passed && writesColor) shown.mark(gx - tileX0, gy - tileY0, passed, index);
+    });
+  }
+  shown.forEachVisible([&](int lx, int ly, uint32_t index, unsigned laneMask) {
+    const SetupTriangle& tri = job.triangles[index];
+    const int gx = tileX0 + lx, gy = tileY0 + ly;
+    const F px = F(float(gx)) + layout.dxLanes, py = F(float(gy)) + layout.dyLanes;
+    const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+    fillGroup(job, tri, job.draws[tri.drawIndex], layout, gx, gy, laneMask, z, counters, shader.next());
+    shader.push();
+  });
+}
+
 }  // namespace
+
+constexpr size_t kVisibilityFirstMinTriangles = 16;
 
 template <class F>
 void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters) {
@@ -418,50 +613,22 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   const uint64_t shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
 
   GroupShader<F> shader(job, counters);
-  for (uint32_t index : bin) {
-    const SetupTriangle& tri = job.triangles[index];
-    const RecordedDraw& draw = job.draws[tri.drawIndex];
-    const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
-    const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
-    const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
-    // Depth test and write, and no colour the shader writes is kept.
-    const bool depthOnly = draw.state.depthTest && draw.state.depthWrite && fb.depth &&
-                           std::min(draw.shader->colorOutputs(), int(fb.colors.size())) == 0;
-    // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
-    // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
-    // row of the triangle's extent at a time, so texture reads run along long rows.
-    const int firstRegionX = x0 & ~(kRegion - 1);
-    for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
-      Overlap overlap[kTileSize / kRegion + 1];
-      for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
-        overlap[(regionX - firstRegionX) / kRegion] = regionOverlap(edges, regionX, regionY);
-#if RASTER_AVX2
-      // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
-      if (std::is_same_v<F, simd::Float8> && depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
-        for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion) {
-          Overlap& region = overlap[(regionX - firstRegionX) / kRegion];
-          if (region != Overlap::Inside || regionX < x0 || regionX + kRegion - 1 > x1) continue;
-          depthOnlyRegion(tri, draw.state, *fb.depth, fb.width, regionX, regionY);
-          region = Overlap::Outside;
-        }
-      }
-#endif
-      const int bandY1 = std::min(y1, regionY + kRegion - 1);
-      for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
-        for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
-          const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
-          if (region == Overlap::Outside) continue;
-          const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(edges, blockX, blockY);
-          const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
-          if (!coverage) continue;
-          for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
-            const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
-            const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
-                                                     : layout.laneMask(coverage, g);
-            if (laneMask && prepareGroup(job, tri, draw, layout, gx, gy, laneMask, counters, shader.next())) shader.push();
-          }
-        }
-      }
+  // A tile crossed by a few triangles has little overdraw to save (a floor, a cube's
+  // faces), and the visibility pass would cost more than it saves.
+  if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
+    rasterizeVisibleFirst<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout, counters, shader);
+  } else {
+    for (uint32_t index : bin) {
+      const SetupTriangle& tri = job.triangles[index];
+      const RecordedDraw& draw = job.draws[tri.drawIndex];
+      const bool writesColor = colorOutputsOf(job, draw) > 0;
+      walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
+        F z;
+        const unsigned passed = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
+        if (!passed || !writesColor) return;
+        fillGroup(job, tri, draw, layout, gx, gy, passed, z, counters, shader.next());
+        shader.push();
+      });
     }
   }
   shader.flush();

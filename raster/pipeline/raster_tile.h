@@ -12,6 +12,10 @@
 // Per group: z from its plane plus polygon offset, clamped to [0, 1] and quantized; depth
 // test and write; then varyings (perspective-correct), the fragment shader, and the
 // conversion and write of every colour output for the lanes that passed.
+// Passes whose colour draws do not blend, on tiles crossed by many triangles, shade only
+// the visible fragments: all the tile's triangles are depth-tested first, recording each
+// pixel's last colour fragment to pass, and then only those are shaded (same groups, same
+// bits; TileJob::visibilityFirst).
 // Programs that read textures are shaded two groups per call (simd::Float8x2, with AVX2):
 // their lookups wait on memory, and a second group's lookups overlap that wait. Pairing
 // never changes a bit: lanes are independent, and writes keep their order.
@@ -29,6 +33,9 @@ struct TileJob {
   std::span<const Plane> varyingPlanes;
   std::span<const RecordedDraw> draws;
   bool timeStages = false;   // read the cycle counter around each stage (raster bench)
+  // No colour draw of the pass blends: tiles find each pixel's visible fragment first and
+  // shade only those (rasterizeVisibleFirst in raster_tile.cpp).
+  bool visibilityFirst = false;
 };
 
 constexpr int kTileSize = 64;   // llvmpipe TILE_ORDER 6

@@ -182,6 +182,19 @@ void Renderer::bin(uint32_t firstTriangle) {
   }
 }
 
+// Worth it (and exact) when some colour draw is depth tested, and no colour draw blends:
+// then the colour a pixel ends with is that of the last colour fragment to pass its test.
+bool Renderer::visibilityFirst() const {
+  if (!visibilityFirstAllowed_ || !framebuffer_.depth) return false;
+  bool depthTested = false;
+  for (const RecordedDraw& draw : draws_) {
+    if (std::min(draw.shader->colorOutputs(), int(framebuffer_.colors.size())) == 0) continue;
+    if (draw.state.blendAdditive) return false;
+    depthTested |= draw.state.depthTest;
+  }
+  return depthTested;
+}
+
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
@@ -191,6 +204,7 @@ void Renderer::flush() {
     job.varyingPlanes = varyingPlanes_;
     job.draws = draws_;
     job.timeStages = timeStages_;
+    job.visibilityFirst = visibilityFirst();
     std::vector<PipelineCounters> tileCounters(bins_.size());
     pool_.parallelFor(int(bins_.size()), [&](int tile) {
       const int tileX = tile % tilesX_, tileY = tile / tilesX_;

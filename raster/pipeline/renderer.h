@@ -103,10 +103,15 @@ class Renderer {
   // group), so they are taken only when asked for.
   void setStageTiming(bool on) { timeStages_ = on; }
   void resetCounters() { counters_ = {}; }
+  // Passes whose colour draws do not blend find each pixel's visible fragment before
+  // shading (TileJob::visibilityFirst); off, every fragment that passes its depth test is
+  // shaded in order. The output bytes are the same either way.
+  void setVisibilityFirst(bool allowed) { visibilityFirstAllowed_ = allowed; }
   int threads() const { return pool_.threads(); }
 
  private:
   void clearRect(int x0, int y0, int x1, int y1) const;
+  bool visibilityFirst() const;
   void bin(uint32_t firstTriangle);
 
   ThreadPool pool_;
@@ -121,6 +126,7 @@ class Renderer {
   int tilesX_ = 0, tilesY_ = 0;
   PipelineCounters counters_;
   bool timeStages_ = false;
+  bool visibilityFirstAllowed_ = true;
 };
 
 }  // namespace raster

@@ -482,16 +482,16 @@ class TileTriangles {
     rowBits |= bit;
 #if RASTER_AVX2
     if constexpr (kLanes == 8) {
-      if (first) {
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_set1_epi32(-1));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(at + kTileSize), _mm_set1_epi32(-1));
-      }
+      // The group's two rows of four, read (or kNone when first marked), blended, written.
+      __m128i* top = reinterpret_cast<__m128i*>(at);
+      __m128i* bottom = reinterpret_cast<__m128i*>(at + kTileSize);
+      const __m256i old = first ? _mm256_set1_epi32(-1) : _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
       const __m256i bit8 = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
       const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(passed)), bit8), bit8);
       const __m256i rows = _mm256_permutevar8x32_epi32(lanes, local_.toRows);
-      const __m128i value = _mm_set1_epi32(int(index));
-      _mm_maskstore_epi32(reinterpret_cast<int*>(at), _mm256_castsi256_si128(rows), value);
-      _mm_maskstore_epi32(reinterpret_cast<int*>(at + kTileSize), _mm256_extracti128_si256(rows, 1), value);
+      const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
+      _mm_storeu_si128(top, _mm256_castsi256_si128(merged));
+      _mm_storeu_si128(bottom, _mm256_extracti128_si256(merged, 1));
       return;
     }
 #endif

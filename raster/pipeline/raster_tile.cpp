@@ -462,6 +462,25 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   }
 }
 
+// Walks the bin's triangles in order through the depth test, calling
+// passed(index, tri, draw, gx, gy, laneMask, z) for every lane group of a colour-writing
+// draw with lanes left (depth-only draws stop at the test and its write).
+template <class F, class Passed>
+[[gnu::always_inline]] inline void depthTestBin(const TileJob& job, int tileX0, int tileY0, int tileX1, int tileY1,
+                                                std::span<const uint32_t> bin, const LaneLayout<F>& layout,
+                                                Passed&& passed) {
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const RecordedDraw& draw = job.draws[tri.drawIndex];
+    const bool writesColor = colorOutputsOf(job, draw) > 0;
+    walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
+      F z;
+      const unsigned lanes = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
+      if (lanes && writesColor) passed(index, tri, draw, gx, gy, lanes, z);
+    });
+  }
+}
+
 // Per-pixel triangle indices of one tile for rasterizeVisibleFirst, kept per lane group:
 // a group's entries are valid once it is marked (bit: group column, per pair of rows).
 template <class F>
@@ -578,16 +597,10 @@ void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX
   thread_local TileTriangles<F> visibleFlip(true), visible(false);
   TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
   shown.reset();
-  for (uint32_t index : bin) {
-    const SetupTriangle& tri = job.triangles[index];
-    const RecordedDraw& draw = job.draws[tri.drawIndex];
-    const bool writesColor = colorOutputsOf(job, draw) > 0;
-    walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
-      F z;
-      const unsigned passed = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
-      if (passed && writesColor) shown.mark(gx - tileX0, gy - tileY0, passed, index);
-    });
-  }
+  depthTestBin<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout,
+                  [&](uint32_t index, const SetupTriangle&, const RecordedDraw&, int gx, int gy, unsigned passed, F) {
+                    shown.mark(gx - tileX0, gy - tileY0, passed, index);
+                  });
   shown.forEachVisible([&](int lx, int ly, uint32_t index, unsigned laneMask) {
     const SetupTriangle& tri = job.triangles[index];
     const int gx = tileX0 + lx, gy = tileY0 + ly;
@@ -617,19 +630,12 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   // faces), and the visibility pass would cost more than it saves.
   if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
     rasterizeVisibleFirst<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout, counters, shader);
-  } else {
-    for (uint32_t index : bin) {
-      const SetupTriangle& tri = job.triangles[index];
-      const RecordedDraw& draw = job.draws[tri.drawIndex];
-      const bool writesColor = colorOutputsOf(job, draw) > 0;
-      walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
-        F z;
-        const unsigned passed = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
-        if (!passed || !writesColor) return;
-        fillGroup(job, tri, draw, layout, gx, gy, passed, z, counters, shader.next());
-        shader.push();
-      });
-    }
+  } else {   // in order: each group is shaded as soon as it passes its depth test
+    depthTestBin<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout,
+                    [&](uint32_t, const SetupTriangle& tri, const RecordedDraw& draw, int gx, int gy, unsigned passed, F z) {
+                      fillGroup(job, tri, draw, layout, gx, gy, passed, z, counters, shader.next());
+                      shader.push();
+                    });
   }
   shader.flush();
   if (job.timeStages)

@@ -207,20 +207,6 @@ template <int N>
   pairsToPlanes(v, left, right);
 }
 
-// A row's two texels (x0, x1) of 8 lanes with one 16-byte load per lane: with CLAMP_TO_EDGE
-// x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1, so each lane loads the pair
-// at min(x0, W - 2) and takes its left texel from the pair's right one at the edge. W >= 2.
-[[gnu::always_inline]] inline void fetchHalfPairs(const Texture& t, __m256i x0, __m256i y, __m256 left[4],
-                                                  __m256 right[4]) {
-  const __m256i last = splat(t.width - 1);
-  alignas(32) int start[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(start),
-                     _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), _mm256_min_epi32(x0, splat(t.width - 2))));
-  loadHalfPairs(t, start, 0, left, right);
-  const __m256 atEdge = _mm256_castsi256_ps(_mm256_cmpeq_epi32(x0, last));
-  for (int c = 0; c < 4; ++c) left[c] = _mm256_blendv_ps(left[c], right[c], atEdge);
-}
-
 // Bilinear blend of a 2x2 footprint, channel by channel, as llvmpipe's SoA path: rows first.
 [[gnu::always_inline]] inline void blendFootprint(const __m256 p00[4], const __m256 p01[4], const __m256 p10[4],
                                                   const __m256 p11[4], __m256 wx, __m256 wy, simd::Float8 out[4]) {
@@ -243,6 +229,57 @@ template <int N>
     for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(rgba[h][c]);
 }
 
+// Bilinear RGBA16F with CLAMP_TO_EDGE (W >= 2), blended before the transpose. With
+// CLAMP_TO_EDGE x1 = x0 + 1 except at the right edge, where x1 = x0 = W - 1: each lane loads
+// the pair at min(x0, W - 2) as one vector [left rgba | right rgba] (16 bytes per row), and
+// at the edge takes its left texel from the pair's right one. Then lanes k and k + 4 are
+// blended together in one vector [lane k | lane k + 4], each lane's weights broadcast over
+// its four channels, and only the four results are transposed into planes. Every lane and
+// channel gets blendFootprint's operations (rows, then columns), so the bits are the same;
+// the shuffles are about half as many as transposing all four texels first.
+template <int N>
+[[gnu::always_inline]] inline void sampleHalfClampBlendFirst(const Texture& t, const LinearTaps8* x,
+                                                              const LinearTaps8* y, simd::Float8 (*out)[4]) {
+  const uint16_t* texels = t.half.data();
+  __m256 rows[N][2][8];   // [group][row y0 | y1][lane]: left texel low, right texel high
+  for (int h = 0; h < N; ++h) {
+    const __m256i column = _mm256_min_epi32(x[h].i0, splat(t.width - 2));
+    alignas(32) int start[2][8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(start[0]), _mm256_add_epi32(_mm256_mullo_epi32(y[h].i0, splat(t.width)), column));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(start[1]), _mm256_add_epi32(_mm256_mullo_epi32(y[h].i1, splat(t.width)), column));
+    for (int r = 0; r < 2; ++r)
+      for (int k = 0; k < 8; ++k)
+        rows[h][r][k] = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][k]) * 4)));
+    // At the right edge x1 = x0 = W - 1: the pair was loaded one texel left, so its right
+    // texel is both of the lane's.
+    unsigned atEdge = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(x[h].i0, splat(t.width - 1)))));
+    for (; atEdge; atEdge &= atEdge - 1) {
+      const int k = __builtin_ctz(atEdge);
+      for (int r = 0; r < 2; ++r) rows[h][r][k] = _mm256_permute2f128_ps(rows[h][r][k], rows[h][r][k], 0x11);
+    }
+  }
+  for (int h = 0; h < N; ++h) {
+    __m256 blended[4];   // [lane k rgba | lane k + 4 rgba]
+    for (int k = 0; k < 4; ++k) {
+      const __m256i lanes = _mm256_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4);
+      const __m256 wx = _mm256_permutevar8x32_ps(x[h].weight, lanes), wy = _mm256_permutevar8x32_ps(y[h].weight, lanes);
+      __m256 row[2];
+      for (int r = 0; r < 2; ++r) {
+        const __m256 left = _mm256_permute2f128_ps(rows[h][r][k], rows[h][r][k + 4], 0x20);
+        const __m256 right = _mm256_permute2f128_ps(rows[h][r][k], rows[h][r][k + 4], 0x31);
+        row[r] = _mm256_fmadd_ps(wx, _mm256_sub_ps(right, left), left);
+      }
+      blended[k] = _mm256_fmadd_ps(wy, _mm256_sub_ps(row[1], row[0]), row[0]);
+    }
+    const __m256 t0 = _mm256_unpacklo_ps(blended[0], blended[1]), t1 = _mm256_unpackhi_ps(blended[0], blended[1]);
+    const __m256 t2 = _mm256_unpacklo_ps(blended[2], blended[3]), t3 = _mm256_unpackhi_ps(blended[2], blended[3]);
+    out[h][0] = simd::Float8(_mm256_shuffle_ps(t0, t2, 0x44));
+    out[h][1] = simd::Float8(_mm256_shuffle_ps(t0, t2, 0xEE));
+    out[h][2] = simd::Float8(_mm256_shuffle_ps(t1, t3, 0x44));
+    out[h][3] = simd::Float8(_mm256_shuffle_ps(t1, t3, 0xEE));
+  }
+}
+
 template <int N>
 [[gnu::always_inline]] inline void sampleHalf(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
   if (t.sampler.filter == Filter::Nearest) {
@@ -251,19 +288,17 @@ template <int N>
     return sampleHalfNearest<N>(t, s, tc, all, out);
   }
   LinearTaps8 x[N], y[N];
-  __m256 p00[N][4], p01[N][4], p10[N][4], p11[N][4];
   for (int h = 0; h < N; ++h) {
     x[h] = wrapLinearFloat(s[h], t.width, t.sampler.wrapS);
     y[h] = wrapLinearFloat(tc[h], t.height, t.sampler.wrapT);
-    if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) {
-      fetchHalfPairs(t, x[h].i0, y[h].i0, p00[h], p01[h]);
-      fetchHalfPairs(t, x[h].i0, y[h].i1, p10[h], p11[h]);
-    } else {
-      fetchHalf(t, x[h].i0, y[h].i0, p00[h]);
-      fetchHalf(t, x[h].i1, y[h].i0, p01[h]);
-      fetchHalf(t, x[h].i0, y[h].i1, p10[h]);
-      fetchHalf(t, x[h].i1, y[h].i1, p11[h]);
-    }
+  }
+  if (t.sampler.wrapS == Wrap::ClampToEdge && t.width >= 2) return sampleHalfClampBlendFirst<N>(t, x, y, out);
+  __m256 p00[N][4], p01[N][4], p10[N][4], p11[N][4];
+  for (int h = 0; h < N; ++h) {
+    fetchHalf(t, x[h].i0, y[h].i0, p00[h]);
+    fetchHalf(t, x[h].i1, y[h].i0, p01[h]);
+    fetchHalf(t, x[h].i0, y[h].i1, p10[h]);
+    fetchHalf(t, x[h].i1, y[h].i1, p11[h]);
   }
   for (int h = 0; h < N; ++h) blendFootprint(p00[h], p01[h], p10[h], p11[h], x[h].weight, y[h].weight, out[h]);
 }

@@ -491,6 +491,8 @@ class TileTriangles {
   static constexpr uint32_t kNone = ~0u;
 
   explicit TileTriangles(bool flipY) : local_(flipY) {}
+  // Forgets every mark (a new tile).
+  void reset() { std::fill(std::begin(marked_), std::end(marked_), 0u); }
 
   // Lanes `passed` of the group at tile offset (lx, ly) now show triangle `index`.
   void mark(int lx, int ly, unsigned passed, uint32_t index) {
@@ -578,9 +580,6 @@ class TileTriangles {
   const Local local_;
   alignas(32) uint32_t entries_[kTileSize * kTileSize];
   uint32_t marked_[kTileSize / 2] = {};
-
- public:
-  void reset() { std::fill(std::begin(marked_), std::end(marked_), 0u); }
 };
 
 // Visibility first, for passes whose colour draws do not blend (TileJob::visibilityFirst).

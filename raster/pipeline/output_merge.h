@@ -39,6 +39,24 @@ unsigned depthTest(const uint32_t* codes, uint32_t* depth, const size_t* texel, 
 }
 
 #if RASTER_AVX2
+// An 8-lane group's lanes (two 2x2 quads side by side) against its two memory rows of 4
+// pixels: permutevar8x32 indices from quad lane order to row-major order [top x..x+3 |
+// bottom x..x+3], and back. `flipped`: the quads' rows are swapped (window-system buffers).
+inline __m256i quadLanesToRows(bool flipped) {
+  return flipped ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+}
+inline __m256i rowsToQuadLanes(bool flipped) {
+  return flipped ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+}
+
+// The depth test on 8 codes against 8 stored codes: all bits set where the fragment passes.
+// Codes are below 2^24, so signed compares are exact. LESS: stored > code; LEQUAL:
+// !(code > stored).
+inline __m256i depthPasses(__m256i code, __m256i stored, bool lessEqual) {
+  return lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
+                   : _mm256_cmpgt_epi32(stored, code);
+}
+
 // The same test for an 8-lane group: two 2x2 quads side by side, i.e. two memory rows of 4
 // codes (rowTop at the group's first row, rowBottom the next). `flipped`: the quads' rows
 // are swapped (window-system buffers).
@@ -49,12 +67,9 @@ unsigned depthTest(const uint32_t* codes, uint32_t* depth, const size_t* texel, 
 // cores run masked stores as slow microcode, so they are kept for the edges).
 inline unsigned depthTestRows(const uint32_t* codes, uint32_t* rowTop, uint32_t* rowBottom, unsigned laneMask,
                               bool flipped, bool lessEqual, bool write, bool wholeRows) {
-  // Quad lane order <-> row-major order [top x..x+3 | bottom x..x+3].
-  const __m256i toRows = flipped ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-  const __m256i toQuads = flipped ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-  const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-  const __m256i covered = _mm256_permutevar8x32_epi32(
-      _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(laneMask)), bit), bit), toRows);
+  const __m256i toRows = quadLanesToRows(flipped), toQuads = rowsToQuadLanes(flipped);
+  const __m256i covered =
+      _mm256_permutevar8x32_epi32(_mm256_castps_si256(simd::Mask8::fromBits(laneMask).v), toRows);
   const __m256i code = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(codes)), toRows);
   const __m128i maskTop = _mm256_castsi256_si128(covered), maskBottom = _mm256_extracti128_si256(covered, 1);
   const __m256i stored =
@@ -62,10 +77,7 @@ inline unsigned depthTestRows(const uint32_t* codes, uint32_t* rowTop, uint32_t*
                                     _mm_loadu_si128(reinterpret_cast<const __m128i*>(rowBottom)))
                 : _mm256_setr_m128i(_mm_maskload_epi32(reinterpret_cast<const int*>(rowTop), maskTop),
                                     _mm_maskload_epi32(reinterpret_cast<const int*>(rowBottom), maskBottom));
-  // Codes are below 2^24, so signed compares are exact. LESS: stored > code; LEQUAL: !(code > stored).
-  const __m256i passes = lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
-                                   : _mm256_cmpgt_epi32(stored, code);
-  const __m256i pass = _mm256_and_si256(passes, covered);
+  const __m256i pass = _mm256_and_si256(depthPasses(code, stored, lessEqual), covered);
   if (write && wholeRows) {
     const __m256i merged = _mm256_blendv_epi8(stored, code, pass);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(rowTop), _mm256_castsi256_si128(merged));

@@ -169,6 +169,12 @@ F evaluatePlane(const Plane& p, F px, F py) {
   return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
 }
 
+// A fragment's window z: the z plane plus the polygon offset (clamped only for the test).
+template <class F>
+F fragmentDepth(const SetupTriangle& tri, F px, F py) {
+  return evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+}
+
 #if RASTER_AVX2
 // A depth-only draw over a 16x16 region wholly inside its triangle: no lane is shaded, so
 // the depth test runs along memory rows, 8 pixels a step, instead of in 2x2 quads. Each
@@ -177,21 +183,18 @@ F evaluatePlane(const Plane& p, F px, F py) {
 void depthOnlyRegion(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width, int x, int y) {
   using simd::Float8;
   const Float8 columns(_mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7));
-  const __m256i allOnes = _mm256_set1_epi32(-1);
   for (int row = 0; row < kRegion; ++row) {
     const Float8 py(float(y + row));
     uint32_t* dst = depth.depth.data() + size_t(y + row) * size_t(width) + size_t(x);
     for (int column = 0; column < kRegion; column += 8) {
       const Float8 px = Float8(float(x + column)) + columns;
-      const Float8 z = evaluatePlane(tri.z, px, py) + Float8(tri.depthOffset);
+      const Float8 z = fragmentDepth(tri, px, py);
       alignas(32) uint32_t codes[8];
       output_merge::depthCodes(simd::min(simd::max(z, Float8(0.0f)), Float8(1.0f)), depth.format, codes);
       const __m256i code = _mm256_load_si256(reinterpret_cast<const __m256i*>(codes));
       __m256i* stored = reinterpret_cast<__m256i*>(dst + column);
       const __m256i old = _mm256_loadu_si256(stored);
-      // Codes are below 2^24, so signed compares are exact. LESS: old > code; LEQUAL: !(code > old).
-      const __m256i pass = state.depthFunc == DepthFunc::Lequal ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, old), allOnes)
-                                                                 : _mm256_cmpgt_epi32(old, code);
+      const __m256i pass = output_merge::depthPasses(code, old, state.depthFunc == DepthFunc::Lequal);
       _mm256_storeu_si256(stored, _mm256_blendv_epi8(old, code, pass));
     }
   }
@@ -252,7 +255,7 @@ template <class F>
   // Pixel coordinates per lane (small integers: the float sums are exact).
   const F px = F(float(gx)) + layout.dxLanes;
   const F py = F(float(gy)) + layout.dyLanes;
-  z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+  z = fragmentDepth(tri, px, py);
   const RasterState& state = draw.state;
   if (!state.depthTest || !fb.depth) return laneMask;
   uint32_t codes[kLanes];
@@ -274,11 +277,6 @@ template <class F>
                                          state.depthFunc == DepthFunc::Lequal, state.depthWrite);
 }
 
-// The colour outputs a draw writes to this framebuffer (0: depth-only).
-int colorOutputsOf(const TileJob& job, const RecordedDraw& draw) {
-  return std::min(draw.shader->colorOutputs(), int(job.framebuffer->colors.size()));
-}
-
 // Fragment inputs of a lane group at origin (gx, gy) whose lanes `laneMask` passed their
 // depth test (z as depthTestGroup computed it): pixel indices, perspective-correct varyings
 // (helper lanes too, so dFdx / dFdy see whole quads) and gl_FragCoord.
@@ -293,7 +291,7 @@ template <class F>
   const size_t origin = size_t(gy) * size_t(fb.width) + size_t(gx);
   for (int i = 0; i < kLanes; ++i) group.texel[i] = origin + layout.texel[i];
   counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
-  group.outputs = colorOutputsOf(job, draw);
+  group.outputs = colorOutputsWritten(draw, *job.framebuffer);
   group.draw = &draw;
   group.laneMask = laneMask;
 
@@ -423,7 +421,8 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
   const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
   // Depth test and write, and no colour the shader writes is kept.
-  const bool depthOnly = draw.state.depthTest && draw.state.depthWrite && fb.depth && colorOutputsOf(job, draw) == 0;
+  const bool depthOnly =
+      draw.state.depthTest && draw.state.depthWrite && fb.depth && colorOutputsWritten(draw, fb) == 0;
   // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
   // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
   // row of the triangle's extent at a time, so texture reads run along long rows.
@@ -472,7 +471,7 @@ template <class F, class Passed>
   for (uint32_t index : bin) {
     const SetupTriangle& tri = job.triangles[index];
     const RecordedDraw& draw = job.draws[tri.drawIndex];
-    const bool writesColor = colorOutputsOf(job, draw) > 0;
+    const bool writesColor = colorOutputsWritten(draw, *job.framebuffer) > 0;
     walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
       F z;
       const unsigned lanes = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
@@ -507,8 +506,7 @@ class TileTriangles {
       __m128i* top = reinterpret_cast<__m128i*>(at);
       __m128i* bottom = reinterpret_cast<__m128i*>(at + kTileSize);
       const __m256i old = first ? _mm256_set1_epi32(-1) : _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
-      const __m256i bit8 = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-      const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(passed)), bit8), bit8);
+      const __m256i lanes = _mm256_castps_si256(simd::Mask8::fromBits(passed).v);
       const __m256i rows = _mm256_permutevar8x32_epi32(lanes, local_.toRows);
       const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
       _mm_storeu_si128(top, _mm256_castsi256_si128(merged));
@@ -571,9 +569,8 @@ class TileTriangles {
 #endif
     explicit Local(bool flipY) : LaneLayout<F>(flipY, kTileSize) {
 #if RASTER_AVX2
-      // As output_merge::depthTestRows: [top row x..x+3 | bottom row x..x+3] <-> lanes.
-      toRows = flipY ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-      toLanes = flipY ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+      toRows = output_merge::quadLanesToRows(flipY);
+      toLanes = output_merge::rowsToQuadLanes(flipY);
 #endif
     }
   };
@@ -604,7 +601,7 @@ void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX
     const SetupTriangle& tri = job.triangles[index];
     const int gx = tileX0 + lx, gy = tileY0 + ly;
     const F px = F(float(gx)) + layout.dxLanes, py = F(float(gy)) + layout.dyLanes;
-    const F z = evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+    const F z = fragmentDepth(tri, px, py);
     fillGroup(job, tri, job.draws[tri.drawIndex], layout, gx, gy, laneMask, z, counters, shader.next());
     shader.push();
   });

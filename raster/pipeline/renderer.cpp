@@ -188,7 +188,7 @@ bool Renderer::visibilityFirst() const {
   if (!visibilityFirstAllowed_ || !framebuffer_.depth) return false;
   bool depthTested = false;
   for (const RecordedDraw& draw : draws_) {
-    if (std::min(draw.shader->colorOutputs(), int(framebuffer_.colors.size())) == 0) continue;
+    if (colorOutputsWritten(draw, framebuffer_) == 0) continue;
     if (draw.state.blendAdditive) return false;
     depthTested |= draw.state.depthTest;
   }

@@ -12,6 +12,7 @@
 // order, so the output does not depend on the thread count.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -66,6 +67,12 @@ struct RecordedDraw {
   RasterState state;
   bool samplesTextures = false;   // shader->samplesTextures(), asked once per draw
 };
+
+// The colour outputs a draw writes to a framebuffer: those both its shader and the
+// framebuffer have (0: a depth-only draw).
+inline int colorOutputsWritten(const RecordedDraw& draw, const Framebuffer& framebuffer) {
+  return std::min(draw.shader->colorOutputs(), int(framebuffer.colors.size()));
+}
 
 // What happened in the pipeline since the counters were last reset.
 struct PipelineCounters {

@@ -1,5 +1,6 @@
-// Float bilinear taps along one axis, 8 lanes at once: what the depth-compare sampler and the
-// half-float colour sampler share (llvmpipe computes both in its float SoA path).
+// What the 8-lane samplers share: float bilinear taps along one axis (the depth-compare
+// sampler and the half-float colour sampler; llvmpipe computes both in its float SoA path),
+// and the gather of two neighbouring 32-bit texels per lane (depth codes, RGBA8).
 #pragma once
 
 #if RASTER_AVX2
@@ -45,6 +46,19 @@ inline bool tapsAreConsecutive(const LinearTaps8* x, const LinearTaps8* y, int c
     }
   }
   return _mm256_movemask_ps(_mm256_castsi256_ps(consecutive)) == 0xFF;
+}
+
+// Texels index and index + 1 of each lane, 32 bits each (index + 1 in the same array): one
+// 64-bit gather element per lane (32-bit indices into a 64-bit-element view are byte
+// offsets / 8: scale 4), lanes 0-3 then 4-7, split into the left texels and the right ones
+// in lane order.
+inline void gatherTexelPairs(const void* texels, __m256i index, __m256i& left, __m256i& right) {
+  const long long* base = static_cast<const long long*>(texels);
+  const __m256 lo = _mm256_castsi256_ps(_mm256_i32gather_epi64(base, _mm256_castsi256_si128(index), 4));
+  const __m256 hi = _mm256_castsi256_ps(_mm256_i32gather_epi64(base, _mm256_extracti128_si256(index, 1), 4));
+  // lo = [l0 r0 l1 r1 | l2 r2 l3 r3], hi likewise for lanes 4-7.
+  left = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0x88)), 0xD8);
+  right = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0xDD)), 0xD8);
 }
 
 }  // namespace raster::sampling

@@ -80,15 +80,6 @@ template <int N>
   const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
   const __m256i width = splat(t.width);
   auto fetch = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4); };
-  // Texels index and index + 1 of each lane: gathered as 64-bit elements (lanes 0-3, then
-  // 4-7), then split into the left texels and the right ones, in lane order.
-  auto fetchPairs = [&](__m256i index, __m256i& left, __m256i& right) {
-    const long long* base = reinterpret_cast<const long long*>(texels);
-    const __m256 lo = _mm256_castsi256_ps(_mm256_i32gather_epi64(base, _mm256_castsi256_si128(index), 4));
-    const __m256 hi = _mm256_castsi256_ps(_mm256_i32gather_epi64(base, _mm256_extracti128_si256(index, 1), 4));
-    left = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0x88)), 0xD8);
-    right = _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, 0xDD)), 0xD8);
-  };
   const __m256 kUnorm8 = splat(float(1.0 / 255.0));
   if (t.sampler.filter == Filter::Nearest) {
     __m256i p[N];
@@ -107,8 +98,8 @@ template <int N>
     if (_mm256_movemask_epi8(adjacent) == -1) {
       // Every lane's two texels of a row are neighbours (no wrap, no clamp between them):
       // one 64-bit element fetches both.
-      fetchPairs(_mm256_add_epi32(_mm256_mullo_epi32(y[h].x0, width), x[h].x0), p00[h], p01[h]);
-      fetchPairs(_mm256_add_epi32(_mm256_mullo_epi32(y[h].x1, width), x[h].x0), p10[h], p11[h]);
+      gatherTexelPairs(texels, _mm256_add_epi32(_mm256_mullo_epi32(y[h].x0, width), x[h].x0), p00[h], p01[h]);
+      gatherTexelPairs(texels, _mm256_add_epi32(_mm256_mullo_epi32(y[h].x1, width), x[h].x0), p10[h], p11[h]);
       continue;
     }
     p00[h] = fetch(x[h].x0, y[h].x0);

@@ -56,39 +56,42 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
 }
 
 #if RASTER_AVX2
+namespace {
+
 // The row's two texels x0, x1 with one 64-bit load per lane: CLAMP_TO_EDGE gives x1 = x0 + 1
 // except at the right edge (x1 = x0 = W - 1), so each lane loads the pair starting at
 // min(x0, W - 2) and takes its left texel from the pair's right one at the edge. Needs W >= 2.
 void fetchRowPairs(const int* codes, int width, __m256i rowStart, __m256i x0, __m256i& left, __m256i& right) {
-  const __m256i last = _mm256_set1_epi32(width - 1);
   const __m256i start = _mm256_add_epi32(rowStart, _mm256_min_epi32(x0, _mm256_set1_epi32(width - 2)));
-  const long long* pairs = reinterpret_cast<const long long*>(codes);
-  // 32-bit indices into a 64-bit-element view are byte offsets / 8: gather at scale 4.
-  const __m256i a = _mm256_i32gather_epi64(pairs, _mm256_castsi256_si128(start), 4);
-  const __m256i b = _mm256_i32gather_epi64(pairs, _mm256_extracti128_si256(start, 1), 4);
-  // a = [l0 r0 l1 r1 | l2 r2 l3 r3], b likewise for lanes 4-7: split and restore lane order.
-  const __m256i order = _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
-  const __m256i lo = _mm256_permutevar8x32_epi32(
-      _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(2, 0, 2, 0))), order);
-  const __m256i hi = _mm256_permutevar8x32_epi32(
-      _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(a), _mm256_castsi256_ps(b), _MM_SHUFFLE(3, 1, 3, 1))), order);
-  right = hi;
-  left = _mm256_blendv_epi8(lo, hi, _mm256_cmpeq_epi32(x0, last));
+  __m256i lo;
+  gatherTexelPairs(codes, start, lo, right);
+  left = _mm256_blendv_epi8(lo, right, _mm256_cmpeq_epi32(x0, _mm256_set1_epi32(width - 1)));
 }
 
+// The reference depth clamped to [0, 1], NaN -> 0 (maxps returns its second operand on NaN).
+__m256 clampRef(__m256 ref) { return _mm256_min_ps(_mm256_max_ps(ref, _mm256_setzero_ps()), _mm256_set1_ps(1.0f)); }
+
+// What a depth code is multiplied by to read as a float in [0, 1] (the unorm conversion).
+float depthCodeScale(const Texture& depth) {
+  return depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
+}
+
+// lp_build_sample_comparefunc, GL_LEQUAL: all bits set where ref <= the texel.
+__m256 refPasses(__m256 ref, __m256i code, float scale) {
+  return _mm256_cmp_ps(ref, _mm256_mul_ps(_mm256_cvtepi32_ps(code), _mm256_set1_ps(scale)), _CMP_LE_OQ);
+}
+
+}  // namespace
+
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref8) {
-  __m256 ref = _mm256_max_ps(ref8.v, _mm256_setzero_ps());
-  ref = _mm256_min_ps(ref, _mm256_set1_ps(1.0f));
+  const __m256 ref = clampRef(ref8.v);
   const LinearTaps8 x = wrapLinearClampToEdge8(s.v, depth.width);
   const LinearTaps8 y = wrapLinearClampToEdge8(t.v, depth.height);
   const __m256i width = _mm256_set1_epi32(depth.width);
   const __m256i row0 = _mm256_mullo_epi32(y.i0, width), row1 = _mm256_mullo_epi32(y.i1, width);
-  const float scale = depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
+  const float scale = depthCodeScale(depth);
   const int* codes = reinterpret_cast<const int*>(depth.depth.data());
-  auto passes = [&](__m256i code) {
-    const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(code), _mm256_set1_ps(scale));
-    return _mm256_cmp_ps(ref, texel, _CMP_LE_OQ);
-  };
+  auto passes = [&](__m256i code) { return refPasses(ref, code, scale); };
   __m256 m00, m01, m10, m11;
   if (depth.width >= 2) {
     __m256i c00, c01, c10, c11;
@@ -139,12 +142,12 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
                                 simd::Float8(_mm256_add_ps(t[h].v, _mm256_set1_ps(float(j - radius) * step))), ref8[h]);
   }
 
-  const float scale = depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
+  const float scale = depthCodeScale(depth);
   const uint32_t* codes = depth.depth.data();
   __m256 ref[N];
   alignas(32) int start[N][8];   // each lane's top-left texel of the neighbourhood
   for (int h = 0; h < N; ++h) {
-    ref[h] = _mm256_min_ps(_mm256_max_ps(ref8[h].v, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+    ref[h] = clampRef(ref8[h].v);
     _mm256_store_si256(reinterpret_cast<__m256i*>(start[h]),
                        _mm256_add_epi32(_mm256_mullo_epi32(y[h][0].i0, _mm256_set1_epi32(depth.width)), x[h][0].i0));
   }
@@ -167,10 +170,7 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
         const __m256i t2 = _mm256_unpacklo_epi32(v[2], v[3]), t3 = _mm256_unpackhi_epi32(v[2], v[3]);
         const __m256i column[4] = {_mm256_unpacklo_epi64(t0, t2), _mm256_unpackhi_epi64(t0, t2),
                                    _mm256_unpacklo_epi64(t1, t3), _mm256_unpackhi_epi64(t1, t3)};
-        for (int c = 0; c < 4; ++c) {
-          const __m256 texel = _mm256_mul_ps(_mm256_cvtepi32_ps(column[c]), _mm256_set1_ps(scale));
-          passes[h][r][first + c] = _mm256_cmp_ps(ref[h], texel, _CMP_LE_OQ);
-        }
+        for (int c = 0; c < 4; ++c) passes[h][r][first + c] = refPasses(ref[h], column[c], scale);
       }
     }
   }

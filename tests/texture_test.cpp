@@ -88,6 +88,14 @@ void checkLookups(const TextureCase& c, unsigned seed) {
   CHECK(cmp.diffs == 0);
 }
 
+// A w x h texture of random texels: any RGBA8 bytes, or halves of values in [-8, 8].
+raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::TexelFormat format) {
+  raster::Texture tex(w, h, format);
+  for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
+  for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+  return tex;
+}
+
 }  // namespace
 
 TEST_SUITE("texture") {
@@ -118,9 +126,7 @@ TEST_SUITE("texture") {
     long mismatches = 0, lookups = 0;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA8, raster::TexelFormat::RGBA16F}) {
       for (const auto& [w, h] : {std::pair{16, 8}, std::pair{13, 7}, std::pair{1, 1}, std::pair{64, 3}}) {
-        raster::Texture tex(w, h, format);
-        for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
-        for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+        raster::Texture tex = randomTexture(rng, w, h, format);
         for (raster::Filter filter : {raster::Filter::Nearest, raster::Filter::Linear})
           for (raster::Wrap ws : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge})
             for (raster::Wrap wt : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge}) {
@@ -178,9 +184,7 @@ TEST_SUITE("texture") {
     long mismatches = 0, taps = 0;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{4, 4}, std::pair{2, 1}}) {
-        raster::Texture tex(w, h, format);
-        for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
-        for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+        raster::Texture tex = randomTexture(rng, w, h, format);
         for (raster::Wrap wrap : {raster::Wrap::ClampToEdge, raster::Wrap::Repeat}) {
           tex.sampler = {raster::Filter::Linear, wrap, wrap, false};
           for (int round = 0; round < 300; ++round) {

@@ -50,10 +50,12 @@ inline __m256i rowsToQuadLanes(bool flipped) {
 }
 
 // The depth test on 8 codes against 8 stored codes: all bits set where the fragment passes.
-// Codes are below 2^24, so signed compares are exact. LESS: stored > code; LEQUAL:
-// !(code > stored).
+// Codes are below 2^24, so signed compares are exact and stored + 1 cannot overflow.
+// LESS: stored > code; LEQUAL: stored + 1 > code. (LEQUAL written as NOT(code > stored) is
+// miscompiled by GCC 12 with AVX-512VL: the NOT, folded into the blend that consumes the
+// mask, was dropped in depthOnlyRegion, and raster_vs_gl's depth-only cases failed.)
 inline __m256i depthPasses(__m256i code, __m256i stored, bool lessEqual) {
-  return lessEqual ? _mm256_xor_si256(_mm256_cmpgt_epi32(code, stored), _mm256_set1_epi32(-1))
+  return lessEqual ? _mm256_cmpgt_epi32(_mm256_add_epi32(stored, _mm256_set1_epi32(1)), code)
                    : _mm256_cmpgt_epi32(stored, code);
 }
 

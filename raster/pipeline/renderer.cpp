@@ -39,7 +39,8 @@ void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewpor
   framebuffer_ = framebuffer;
   tilesX_ = (framebuffer.width + kTileSize - 1) / kTileSize;
   tilesY_ = (framebuffer.height + kTileSize - 1) / kTileSize;
-  bins_.assign(size_t(tilesX_) * size_t(tilesY_), {});
+  // Bins keep their capacity from pass to pass (flush empties them).
+  if (bins_.size() != size_t(tilesX_) * size_t(tilesY_)) bins_.assign(size_t(tilesX_) * size_t(tilesY_), {});
 
   // GL viewport -> scale/translate (_mesa_get_viewport_xform), mirrored for window-system
   // buffers as st_atom_viewport does for Y_0_TOP framebuffers. Depth range [0, 1].
@@ -102,7 +103,7 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
 
   // Vertex shading: every vertex of the buffer once per instance; instances in parallel.
   const uint64_t vertexStart = cycleCount();
-  ShadedVertices shaded;
+  ShadedVertices& shaded = shaded_;   // every record is written below, so old contents never show
   shaded.varyingFloats = varyingFloats;
   shaded.stride = vertex_stage::kVaryingOffset + varyingFloats;
   const size_t records = size_t(vertices.vertexCount) * size_t(instanceCount);

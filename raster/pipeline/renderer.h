@@ -130,6 +130,7 @@ class Renderer {
   std::vector<SetupTriangle> triangles_;
   std::vector<Plane> varyingPlanes_;
   std::vector<std::vector<uint32_t>> bins_;   // per tile: triangle indices in API order
+  ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
   int tilesX_ = 0, tilesY_ = 0;
   PipelineCounters counters_;
   bool timeStages_ = false;

@@ -435,4 +435,51 @@ TEST_SUITE("raster_vs_gl") {
       }
     }
   }
+
+  // A tile whose first triangle covers it whole, with no depth test or blending, skips its
+  // colour clear (Renderer::flush): every texel is written anyway. Here the first triangle
+  // leaves one corner pixel of a tile uncovered, or covers tiles whole but under a depth
+  // test that rejects it (cleared depth 0.5) or with blending, and a second draw follows.
+  // Every byte must match GL, so texels only the clear writes keep its colour (new targets
+  // start zeroed: a wrongly skipped clear shows).
+  TEST_CASE("(g) colour clears under a first triangle that covers a tile, or nearly") {
+    BackendPair backends;
+    ClearOp clear;
+    clear.color = true;
+    clear.colorValue = glm::vec4(0.2f, 0.4f, 0.6f, 0.8f);
+    clear.depth = true;
+    clear.depthValue = 0.5f;   // the first triangle (window z 0.625) fails LESS wherever there is depth
+    const TargetDesc targets[] = {
+        {150, 100, TextureFormat::RGBA8, std::nullopt},
+        {150, 100, TextureFormat::RGBA8, TextureFormat::Depth24},
+        {130, 70, std::nullopt, std::nullopt, true},
+    };
+    // Window-space corners of a triangle whose long edge is x + y = c: pixels whose centres
+    // sum to more than c stay uncovered (c = 126.9 leaves pixel (63, 63) of tile 0 only).
+    auto cornerCut = [](float c) {
+      return std::vector<glm::vec2>{{-300.0f, -300.0f}, {c + 300.0f, -300.0f}, {-300.0f, c + 300.0f}};
+    };
+    const std::vector<glm::vec2> cuts[] = {cornerCut(126.9f), cornerCut(127.1f), cornerCut(60.0f), cornerCut(400.0f)};
+    for (const TargetDesc& target : targets) {
+      for (const auto& corners : cuts) {
+        for (bool blend : {false, true}) {
+          std::vector<Vertex> vertices;
+          for (const glm::vec2& p : corners)
+            vertices.push_back({clipFromWindow(p, 0.25f, 1.0f, target.width, target.height), glm::vec4(0.9f, 0.1f, 0.3f, 1.0f)});
+          DrawCall first;
+          first.mesh = makeMesh(vertices);
+          first.state.depthTest = !blend;
+          first.state.blendAdditive = blend;
+          DrawCall second = depthPass(makeMesh({{clipFromWindow({10.0f, 10.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)},
+                                                {clipFromWindow({90.0f, 20.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)},
+                                                {clipFromWindow({30.0f, 95.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)}}));
+          const BothRendered both = renderBoth(backends, target, {first, second}, clear);
+          INFO(targetName(target), ", edge x + y = ", corners[1].x - 300.0f, blend ? ", blending" : "");
+          REQUIRE(both.raster.color);
+          REQUIRE(both.gl.color);
+          CHECK(both.raster.color->rgba8 == both.gl.color->rgba8);
+        }
+      }
+    }
+  }
 }

@@ -609,6 +609,24 @@ void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX
 
 }  // namespace
 
+bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, int x0, int y0, int x1, int y1) {
+  if (bin.empty() || x1 <= x0 || y1 <= y0) return false;
+  const SetupTriangle& tri = job.triangles[bin.front()];
+  const RecordedDraw& draw = job.draws[tri.drawIndex];
+  const Framebuffer& fb = *job.framebuffer;
+  if (draw.state.blendAdditive || (draw.state.depthTest && fb.depth) ||
+      colorOutputsWritten(draw, fb) != int(fb.colors.size()))
+    return false;
+  // The walk writes only inside the bounds (which hold every covered pixel centre anyway).
+  if (tri.minX > x0 || tri.maxX < x1 - 1 || tri.minY > y0 || tri.maxY < y1 - 1) return false;
+  // Each edge function is linear: over the rectangle it is smallest at one corner.
+  for (const EdgeFunction& e : tri.edge) {
+    const int64_t alongX = -e.dcdx * (x1 - 1 - x0), alongY = e.dcdy * (y1 - 1 - y0);
+    if (e.at(x0, y0) + std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0) <= 0) return false;
+  }
+  return true;
+}
+
 constexpr size_t kVisibilityFirstMinTriangles = 16;
 
 template <class F>

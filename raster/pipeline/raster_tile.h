@@ -40,6 +40,13 @@ struct TileJob {
 
 constexpr int kTileSize = 64;   // llvmpipe TILE_ORDER 6
 
+// True when the bin's first triangle writes every colour texel of the rectangle
+// [x0, x1) x [y0, y1) of the tile: it covers every pixel centre there, its draw writes
+// every colour target of the framebuffer without blending, and no depth test can reject
+// one of its fragments. A colour clear of that rectangle would be overwritten before
+// anything reads it (the fullscreen triangles of the post-processing passes).
+bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, int x0, int y0, int x1, int y1);
+
 template <class F>
 void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uint32_t> bin, PipelineCounters& counters);
 

@@ -60,7 +60,7 @@ void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewpor
 
 // Clears one rectangle of the bound framebuffer: glClear, carried out tile by tile inside
 // the tiles' tasks (parallel, and the tile's pixels are then in cache for its triangles).
-void Renderer::clearRect(int x0, int y0, int x1, int y1) const {
+void Renderer::clearRect(int x0, int y0, int x1, int y1, bool colorToo) const {
   const ClearValues& values = pendingClear_;
   const size_t width = size_t(framebuffer_.width);
   // The rectangle's first row texel by texel, then the other rows copied from it whole.
@@ -71,7 +71,7 @@ void Renderer::clearRect(int x0, int y0, int x1, int y1) const {
     for (size_t i = 0; i < rowLength; i += perTexel) std::copy(texel, texel + perTexel, first + i);
     for (int y = y0 + 1; y < y1; ++y) std::copy(first, first + rowLength, data + (size_t(y) * width + size_t(x0)) * perTexel);
   };
-  if (values.color) {
+  if (values.color && colorToo) {
     for (Texture* target : framebuffer_.colors) {
       if (target->format == TexelFormat::RGBA8) {
         uint8_t texel[4];
@@ -209,9 +209,12 @@ void Renderer::flush() {
     std::vector<PipelineCounters> tileCounters(bins_.size());
     pool_.parallelFor(int(bins_.size()), [&](int tile) {
       const int tileX = tile % tilesX_, tileY = tile / tilesX_;
-      if (clearing)
-        clearRect(tileX * kTileSize, tileY * kTileSize, std::min((tileX + 1) * kTileSize, framebuffer_.width),
-                  std::min((tileY + 1) * kTileSize, framebuffer_.height));
+      if (clearing) {
+        const int x0 = tileX * kTileSize, y0 = tileY * kTileSize;
+        const int x1 = std::min(x0 + kTileSize, framebuffer_.width), y1 = std::min(y0 + kTileSize, framebuffer_.height);
+        // A colour clear the tile's first triangle overwrites whole is skipped (same bytes).
+        clearRect(x0, y0, x1, y1, !firstTriangleOverwritesColor(job, bins_[size_t(tile)], x0, y0, x1, y1));
+      }
       if (bins_[size_t(tile)].empty()) return;
       if (scalarOnly_) rasterizeTile<ScalarLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);
       else rasterizeTile<FastLanes>(job, tileX, tileY, bins_[size_t(tile)], tileCounters[size_t(tile)]);

@@ -117,7 +117,7 @@ class Renderer {
   int threads() const { return pool_.threads(); }
 
  private:
-  void clearRect(int x0, int y0, int x1, int y1) const;
+  void clearRect(int x0, int y0, int x1, int y1, bool colorToo) const;   // colorToo: its colour clear too, if any
   bool visibilityFirst() const;
   void bin(uint32_t firstTriangle);
 

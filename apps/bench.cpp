@@ -148,8 +148,17 @@ int runBench(const BenchArgs& args) {
     c.scene->setup(*c.passTimer);
   }
 
-  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d: %d warm-up + %d timed frames each\n", frame.scene.c_str(),
-               frame.width, frame.height, frame.time, threads, args.warmup, args.frames);
+  // What this pipeline was compiled for (CMakeLists.txt: RASTER_AVX2, RASTER_AVX512), so a
+  // figure can be read against the build that made it.
+#if defined(__AVX512VL__) && RASTER_AVX2
+  const char* builtFor = "AVX2/FMA/F16C + AVX-512";
+#elif RASTER_AVX2
+  const char* builtFor = "AVX2/FMA/F16C";
+#else
+  const char* builtFor = "plain C++ lanes";
+#endif
+  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d: %d warm-up + %d timed frames each (raster built for %s)\n",
+               frame.scene.c_str(), frame.width, frame.height, frame.time, threads, args.warmup, args.frames, builtFor);
   for (int i = 0; i < args.warmup; ++i)
     for (Contender& c : contenders) renderOnce(c, frame.time);
   // The timed frames run without the stage timers: reading the cycle counter per lane group

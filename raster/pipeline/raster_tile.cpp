@@ -24,6 +24,15 @@ namespace {
 constexpr int kBlock = 4;    // 4x4 pixel blocks, as llvmpipe hands them to the shader
 constexpr int kRegion = 16;  // 16x16 regions of blocks (llvmpipe's middle level)
 
+// The largest and smallest amounts an edge function rises over a rectangle of pixel
+// centres whose far corner is (farX, farY) pixels from its first one: the function is
+// linear, so both sit at corners.
+void edgeExtremes(const EdgeFunction& e, int farX, int farY, int64_t& high, int64_t& low) {
+  const int64_t alongX = -e.dcdx * farX, alongY = e.dcdy * farY;
+  high = std::max<int64_t>(alongX, 0) + std::max<int64_t>(alongY, 0);
+  low = std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0);
+}
+
 // One edge function as the block walk uses it, set up once per triangle and tile. The
 // function is linear, so over a square of pixels it is largest and smallest at fixed
 // corners: a square is tested by its first pixel's value plus those two offsets, with no
@@ -38,13 +47,8 @@ struct WalkEdge {
   __m256i pixel[2];               // -dcdx * col + dcdy * row: rows 0-1, rows 2-3
 #endif
   explicit WalkEdge(const EdgeFunction& e) : f(e) {
-    auto extremes = [&](int far, int64_t& high, int64_t& low) {
-      const int64_t alongX = -e.dcdx * far, alongY = e.dcdy * far;
-      high = std::max<int64_t>(alongX, 0) + std::max<int64_t>(alongY, 0);
-      low = std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0);
-    };
-    extremes(kBlock - 1, blockMax, blockMin);
-    extremes(kRegion - 1, regionMax, regionMin);
+    edgeExtremes(e, kBlock - 1, kBlock - 1, blockMax, blockMin);
+    edgeExtremes(e, kRegion - 1, kRegion - 1, regionMax, regionMin);
     smallSteps = std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28);
 #if RASTER_AVX2
     if (smallSteps) {
@@ -619,10 +623,10 @@ bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> 
     return false;
   // The walk writes only inside the bounds (which hold every covered pixel centre anyway).
   if (tri.minX > x0 || tri.maxX < x1 - 1 || tri.minY > y0 || tri.maxY < y1 - 1) return false;
-  // Each edge function is linear: over the rectangle it is smallest at one corner.
   for (const EdgeFunction& e : tri.edge) {
-    const int64_t alongX = -e.dcdx * (x1 - 1 - x0), alongY = e.dcdy * (y1 - 1 - y0);
-    if (e.at(x0, y0) + std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0) <= 0) return false;
+    int64_t high, low;
+    edgeExtremes(e, x1 - 1 - x0, y1 - 1 - y0, high, low);
+    if (e.at(x0, y0) + low <= 0) return false;   // some pixel centre outside this edge
   }
   return true;
 }

@@ -16,6 +16,7 @@ struct BenchArgs : FrameArgs {
   std::string glDriver = "llvmpipe";
   std::string json;                // empty: no JSON file
   bool passes = false;             // also time each pass of both backends
+  bool noPin = false;              // leave the process free to run on every core
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);

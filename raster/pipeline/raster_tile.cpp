@@ -450,7 +450,10 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
     for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
       for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
         const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
-        if (region == Overlap::Outside) continue;
+        if (region == Overlap::Outside) {   // on to the next region's first block
+          blockX = (blockX | (kRegion - 1)) - (kBlock - 1);
+          continue;
+        }
         const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(edges, blockX, blockY);
         const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
         if (!coverage) continue;

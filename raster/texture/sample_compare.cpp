@@ -118,13 +118,14 @@ namespace {
 // blends its own 2x2 of those compare results with its own weights, as compareLinearClamp8
 // would. Otherwise (an edge, or rounding that moves a tap) every tap of that group is a
 // lone lookup. With N = 2 both groups' rows are loaded before either blends, so their
-// cache misses overlap.
-template <int N>
+// cache misses overlap. The radius is a template argument so that the arrays below are
+// exactly the grid's size and its loops unroll (a 3x3 grid's compare results stay in
+// registers instead of a 6x6 array on the stack).
+template <int N, int R>
 void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float8* t, float step, const simd::Float8* ref8,
-                  int radius, simd::Float8* const* taps) {
-  constexpr int kMaxTaps = 5, kMaxTexels = kMaxTaps + 1;
-  const int count = 2 * radius + 1, texels = count + 1;
-  LinearTaps8 x[N][kMaxTaps] = {}, y[N][kMaxTaps] = {};
+                  simd::Float8* const* taps) {
+  constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
+  LinearTaps8 x[N][count], y[N][count];
   bool shared[N];
   for (int h = 0; h < N; ++h) {
     for (int k = 0; k < count; ++k) {
@@ -152,7 +153,7 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
                        _mm256_add_epi32(_mm256_mullo_epi32(y[h][0].i0, _mm256_set1_epi32(depth.width)), x[h][0].i0));
   }
   // passes[h][r][c]: ref <= texel (r, c) of group h's neighbourhood, per lane.
-  __m256 passes[N][kMaxTexels][kMaxTexels];
+  __m256 passes[N][texels][texels];
   for (int r = 0; r < texels; ++r) {
     const size_t rowOffset = size_t(r) * size_t(depth.width);
     for (int h = 0; h < N; ++h) {
@@ -192,13 +193,15 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
 
 void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
                   simd::Float8* taps) {
-  compareGridN<1>(depth, &s, &t, step, &ref, radius, &taps);
+  if (radius == 1) return compareGridN<1, 1>(depth, &s, &t, step, &ref, &taps);
+  compareGridN<1, 2>(depth, &s, &t, step, &ref, &taps);
 }
 
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
                     const simd::Float8 ref[2], int radius, simd::Float8* lo, simd::Float8* hi) {
   simd::Float8* const taps[2] = {lo, hi};
-  compareGridN<2>(depth, s, t, step, ref, radius, taps);
+  if (radius == 1) return compareGridN<2, 1>(depth, s, t, step, ref, taps);
+  compareGridN<2, 2>(depth, s, t, step, ref, taps);
 }
 #endif
 

@@ -191,18 +191,26 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
 
 }  // namespace
 
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
+template <int R>
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref,
                   simd::Float8* taps) {
-  if (radius == 1) return compareGridN<1, 1>(depth, &s, &t, step, &ref, &taps);
-  compareGridN<1, 2>(depth, &s, &t, step, &ref, &taps);
+  compareGridN<1, R>(depth, &s, &t, step, &ref, &taps);
 }
 
+template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
-                    const simd::Float8 ref[2], int radius, simd::Float8* lo, simd::Float8* hi) {
+                    const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
   simd::Float8* const taps[2] = {lo, hi};
-  if (radius == 1) return compareGridN<2, 1>(depth, s, t, step, ref, taps);
-  compareGridN<2, 2>(depth, s, t, step, ref, taps);
+  compareGridN<2, R>(depth, s, t, step, ref, taps);
 }
+
+// The grids the shaders use: 3x3 (shadow) and 5x5 (deferred).
+template void compareGrid8<1>(const Texture&, simd::Float8, simd::Float8, float, simd::Float8, simd::Float8*);
+template void compareGrid8<2>(const Texture&, simd::Float8, simd::Float8, float, simd::Float8, simd::Float8*);
+template void compareGrid8x2<1>(const Texture&, const simd::Float8*, const simd::Float8*, float, const simd::Float8*,
+                                simd::Float8*, simd::Float8*);
+template void compareGrid8x2<2>(const Texture&, const simd::Float8*, const simd::Float8*, float, const simd::Float8*,
+                                simd::Float8*, simd::Float8*);
 #endif
 
 }  // namespace raster::sampling

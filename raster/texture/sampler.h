@@ -33,15 +33,17 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 // The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
 
-// The (2 * radius + 1)^2 lookups at (s + i * step, t + j * step), i and j in -radius..radius,
-// each bit-identical to compareLinearClamp8 there; taps[(j + radius) * (2 * radius + 1) +
-// (i + radius)]. Overlapping taps share their texels (radius 1 or 2).
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref, int radius,
+// The (2R + 1)^2 lookups at (s + i * step, t + j * step), i and j in -R..R, each
+// bit-identical to compareLinearClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
+// Overlapping taps share their texels. Defined for R = 1 and 2 (sample_compare.cpp).
+template <int R>
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref,
                   simd::Float8* taps);
 // Two such grids (Float8x2 shading), each bit-identical to compareGrid8: both groups'
 // texel rows are loaded before either blends, so their cache misses overlap.
+template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
-                    const simd::Float8 ref[2], int radius, simd::Float8* lo, simd::Float8* hi);
+                    const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
 #endif
 
 // One colour lookup (sampler2D): RGBA8 through llvmpipe's 8-bit fixed-point path, float
@@ -196,13 +198,13 @@ void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float 
   static_assert(R == 1 || R == 2, "3x3 and 5x5 grids");
 #if RASTER_AVX2
   if constexpr (std::is_same_v<F, simd::Float8>) {
-    sampling::compareGrid8(*sampler.texture, uv.x, uv.y, step, ref, R, &taps[0][0]);
+    sampling::compareGrid8<R>(*sampler.texture, uv.x, uv.y, step, ref, &taps[0][0]);
     return;
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
     constexpr int kTaps = (2 * R + 1) * (2 * R + 1);
     simd::Float8 lo[kTaps], hi[kTaps];
     const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi}, refs[2] = {ref.lo, ref.hi};
-    sampling::compareGrid8x2(*sampler.texture, s, t, step, refs, R, lo, hi);
+    sampling::compareGrid8x2<R>(*sampler.texture, s, t, step, refs, lo, hi);
     for (int k = 0; k < kTaps; ++k) taps[k / (2 * R + 1)][k % (2 * R + 1)] = {lo[k], hi[k]};
     return;
   }

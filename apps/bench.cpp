@@ -107,27 +107,23 @@ void printBreakdown(const std::vector<std::pair<std::string, double>>& stats, in
 
 // Restricts the process to `threads` of the cores it may run on, before either backend
 // starts a thread (threads inherit the mask), so both render on the same cores. Unpinned,
-// one rendering thread on a 2-core host wanders between cores: our 1-thread medians at
-// 1920x1080 swung between 25 and 38 ms from run to run, pinned they stay within 3%.
+// one rendering thread on a 2-core host wanders between cores: our 1-thread shadow medians
+// at 1920x1080 read 25 ms in some runs and 35-47 ms in others; pinned, within 3%. (Mesa's
+// shader disk-cache thread sets its own mask back to every core; it idles while frames run.)
 // Returns how many cores the process is now on.
 int pinToCores(int threads) {
   cpu_set_t allowed;
   if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return 0;
   const int available = CPU_COUNT(&allowed);
   if (threads >= available) return available;
-  // Keep the core this thread is on now, then the next allowed ones.
-  const int current = sched_getcpu();
+  // The core this thread is on now first, then the next allowed ones.
   cpu_set_t pinned;
   CPU_ZERO(&pinned);
   int kept = 0;
-  for (int pass = 0; pass < 2 && kept < threads; ++pass)
-    for (int cpu = 0; cpu < CPU_SETSIZE && kept < threads; ++cpu) {
-      const bool first = cpu == current;
-      if (CPU_ISSET(cpu, &allowed) && !CPU_ISSET(cpu, &pinned) && (pass == 1 || first)) {
-        CPU_SET(cpu, &pinned);
-        ++kept;
-      }
-    }
+  const int current = sched_getcpu();
+  if (current >= 0 && CPU_ISSET(current, &allowed)) CPU_SET(current, &pinned), ++kept;
+  for (int cpu = 0; cpu < CPU_SETSIZE && kept < threads; ++cpu)
+    if (CPU_ISSET(cpu, &allowed) && !CPU_ISSET(cpu, &pinned)) CPU_SET(cpu, &pinned), ++kept;
   return sched_setaffinity(0, sizeof pinned, &pinned) == 0 ? kept : available;
 }
 

@@ -115,8 +115,8 @@ void checkFragmentAgrees(const typename Program::Uniforms& u, std::mt19937& rng,
   for (int k = 0; k < Program::kColorOutputs; ++k) {
     const raster::glsl::vec4<Paired>& c = pairedOut.color[k];
     float a[4][8], b[4][8];
-    storeVec4(raster::glsl::vec4<Float8>(c.x.lo, c.y.lo, c.z.lo, c.w.lo), a);
-    storeVec4(raster::glsl::vec4<Float8>(c.x.hi, c.y.hi, c.z.hi, c.w.hi), b);
+    storeVec4(raster::glsl::vec4<Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), a);
+    storeVec4(raster::glsl::vec4<Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), b);
     CHECK(sameBits(&a[0][0], &plain[0][k][0][0], 32));
     CHECK(sameBits(&b[0][0], &plain[1][k][0][0], 32));
   }

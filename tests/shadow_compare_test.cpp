@@ -243,10 +243,10 @@ TEST_SUITE("shadow_compare") {
           Float8x2 pair3[3][3], pair5[5][5];
           raster::textureCompareGrid<1>(sampler, uvPair, step, refPair, pair3);
           raster::textureCompareGrid<2>(sampler, uvPair, step, refPair, pair5);
-          check([&](int j, int i) { return pair3[j][i].lo; }, 1, s, t, ref);
-          check([&](int j, int i) { return pair3[j][i].hi; }, 1, sr, tr, refr);
-          check([&](int j, int i) { return pair5[j][i].lo; }, 2, s, t, ref);
-          check([&](int j, int i) { return pair5[j][i].hi; }, 2, sr, tr, refr);
+          check([&](int j, int i) { return pair3[j][i].low(); }, 1, s, t, ref);
+          check([&](int j, int i) { return pair3[j][i].high(); }, 1, sr, tr, refr);
+          check([&](int j, int i) { return pair5[j][i].low(); }, 2, s, t, ref);
+          check([&](int j, int i) { return pair5[j][i].high(); }, 2, sr, tr, refr);
         }
       }
     }

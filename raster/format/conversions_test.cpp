@@ -15,7 +15,7 @@
 #include <vector>
 
 #if RASTER_AVX2
-#include <immintrin.h>
+#include "raster/simd/intrinsics.h"
 #endif
 
 #include "raster/format/conversions.h"

@@ -11,7 +11,7 @@
 #include <iterator>
 #include <type_traits>
 #if RASTER_AVX2
-#include <immintrin.h>
+#include "raster/simd/intrinsics.h"
 #endif
 
 #include "raster/format/conversions.h"
@@ -361,8 +361,8 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
   const bool additive = a.draw->state.blendAdditive;
   for (int k = 0; k < a.outputs; ++k) {
     const glsl::vec4<Float8x2>& c = out.color[k];
-    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.lo, c.y.lo, c.z.lo, c.w.lo), a.texel, a.laneMask, additive);
-    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.hi, c.y.hi, c.z.hi, c.w.hi), b.texel, b.laneMask, additive);
+    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), a.texel, a.laneMask, additive);
+    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), b.texel, b.laneMask, additive);
   }
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }

@@ -120,6 +120,28 @@ inline U8 cvtt(simd::Float8 f) { return U8(_mm256_cvttps_epi32(f.v)); }
 inline simd::Float8 cvt(U8 u) { return simd::Float8(_mm256_cvtepi32_ps(u.v)); }
 inline simd::Mask8 eq(U8 a, U8 b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
 
+#if RASTER_ZMM_PAIRS
+// Float8x2 in one 512-bit register: the same, all 16 lanes at once.
+struct U8x2 {
+  __m512i v;
+  U8x2() = default;
+  U8x2(uint32_t s) : v(_mm512_set1_epi32(int(s))) {}  // NOLINT: broadcast
+  explicit U8x2(__m512i x) : v(x) {}
+  friend U8x2 operator&(U8x2 a, U8x2 b) { return U8x2(_mm512_and_si512(a.v, b.v)); }
+  friend U8x2 operator|(U8x2 a, U8x2 b) { return U8x2(_mm512_or_si512(a.v, b.v)); }
+  friend U8x2 operator^(U8x2 a, U8x2 b) { return U8x2(_mm512_xor_si512(a.v, b.v)); }
+  friend U8x2 operator+(U8x2 a, U8x2 b) { return U8x2(_mm512_add_epi32(a.v, b.v)); }
+  friend U8x2 operator-(U8x2 a, U8x2 b) { return U8x2(_mm512_sub_epi32(a.v, b.v)); }
+  friend U8x2 operator~(U8x2 a) { return U8x2(_mm512_xor_si512(a.v, _mm512_set1_epi32(-1))); }
+  friend U8x2 operator<<(U8x2 a, int n) { return U8x2(_mm512_slli_epi32(a.v, unsigned(n))); }
+  friend U8x2 operator>>(U8x2 a, int n) { return U8x2(_mm512_srli_epi32(a.v, unsigned(n))); }
+};
+inline U8x2 asBits(simd::Float8x2 f) { return U8x2(_mm512_castps_si512(f.v)); }
+inline simd::Float8x2 asFloat(U8x2 u) { return simd::Float8x2(_mm512_castsi512_ps(u.v)); }
+inline U8x2 cvtt(simd::Float8x2 f) { return U8x2(_mm512_cvttps_epi32(f.v)); }
+inline simd::Float8x2 cvt(U8x2 u) { return simd::Float8x2(_mm512_cvtepi32_ps(u.v)); }
+inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
+#else
 // Float8x2: the same, half by half.
 struct U8x2 {
   U8 lo, hi;
@@ -140,6 +162,7 @@ inline simd::Float8x2 asFloat(U8x2 u) { return {asFloat(u.lo), asFloat(u.hi)}; }
 inline U8x2 cvtt(simd::Float8x2 f) { return {cvtt(f.lo), cvtt(f.hi)}; }
 inline simd::Float8x2 cvt(U8x2 u) { return {cvt(u.lo), cvt(u.hi)}; }
 inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {eq(a.lo, b.lo), eq(a.hi, b.hi)}; }
+#endif
 #endif
 
 // Every vector lane type (Lanes<N>, Float8, Float8x2): its own operations from simd/lanes.h.

@@ -4,7 +4,7 @@
 #pragma once
 
 #if RASTER_AVX2
-#include <immintrin.h>
+#include "raster/simd/intrinsics.h"
 
 #include <initializer_list>
 

@@ -2,7 +2,7 @@
 // operations as the scalar reference in sample_color.cpp, lane for lane, so the results
 // are bit-identical (tests/texture_test.cpp holds the two together).
 #if RASTER_AVX2
-#include <immintrin.h>
+#include "raster/simd/intrinsics.h"
 
 #include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/sampler.h"

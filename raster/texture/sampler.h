@@ -74,11 +74,6 @@ void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, fl
 
 #if RASTER_AVX2
 // Float8x2 lookups are two 8-lane lookups, one per half.
-inline glsl::vec2<simd::Float8> lowHalf(glsl::vec2<simd::Float8x2> v) { return {v.x.lo, v.y.lo}; }
-inline glsl::vec2<simd::Float8> highHalf(glsl::vec2<simd::Float8x2> v) { return {v.x.hi, v.y.hi}; }
-inline glsl::vec4<simd::Float8x2> joinHalves(glsl::vec4<simd::Float8> lo, glsl::vec4<simd::Float8> hi) {
-  return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, {lo.w, hi.w}};
-}
 // The two halves' channel planes of a sampleColor8x2 lookup, as one colour.
 inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) {
   return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
@@ -100,7 +95,7 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
-    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi};
+    const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, rgba);
     return sampling::joinHalves(rgba);
@@ -130,8 +125,8 @@ glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv)
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, needed, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
-    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi};
-    const simd::Mask8 live[2] = {needed.lo, needed.hi};
+    const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
+    const simd::Mask8 live[2] = {needed.low(), needed.high()};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, live, rgba);
     return sampling::joinHalves(rgba);
@@ -150,8 +145,8 @@ F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
   } else if constexpr (std::is_same_v<F, simd::Float8>) {
     return sampling::compareLinearClamp8(*sampler.texture, uv.x, uv.y, ref);
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
-    return {sampling::compareLinearClamp8(*sampler.texture, uv.x.lo, uv.y.lo, ref.lo),
-            sampling::compareLinearClamp8(*sampler.texture, uv.x.hi, uv.y.hi, ref.hi)};
+    return {sampling::compareLinearClamp8(*sampler.texture, uv.x.low(), uv.y.low(), ref.low()),
+            sampling::compareLinearClamp8(*sampler.texture, uv.x.high(), uv.y.high(), ref.high())};
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], r[F::kCount], out[F::kCount];
@@ -166,9 +161,12 @@ F textureCompare(const Sampler2DShadow& sampler, glsl::vec2<F> uv, F ref) {
 // A 3x3 grid of colour lookups one step apart, as a tent filter makes them:
 //   taps[j + 1][i + 1] = texture(sampler, uv + vec2(i * step.x, j * step.y)),  i, j in -1..1,
 // each bit-identical to that lone lookup; the sampler only shares the texels that
-// neighbouring taps have in common (4x4 texels instead of 9 footprints of 2x2).
+// neighbouring taps have in common (4x4 texels instead of 9 footprints of 2x2). Always
+// inlined: outlined, the Float8x2 form passed its 36 joined taps through memory, which made
+// the bloom upsample 20% slower with Float8x2 in one AVX-512 register.
 template <class F>
-void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step, glsl::vec4<F> (&taps)[3][3]) {
+[[gnu::always_inline]] inline void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step,
+                                                  glsl::vec4<F> (&taps)[3][3]) {
 #if RASTER_AVX2
   if constexpr (std::is_same_v<F, simd::Float8>) {
     simd::Float8 planes[9][4];
@@ -176,10 +174,11 @@ void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step, 
     for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
     return;
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
-    glsl::vec4<simd::Float8> lo[3][3], hi[3][3];
-    textureGrid3x3(sampler, sampling::lowHalf(uv), step, lo);
-    textureGrid3x3(sampler, sampling::highHalf(uv), step, hi);
-    for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = sampling::joinHalves(lo[k / 3][k % 3], hi[k / 3][k % 3]);
+    simd::Float8 lo[9][4], hi[9][4];
+    sampling::sampleColorGrid8(*sampler.texture, uv.x.low(), uv.y.low(), step.x, step.y, lo);
+    sampling::sampleColorGrid8(*sampler.texture, uv.x.high(), uv.y.high(), step.x, step.y, hi);
+    for (int k = 0; k < 9; ++k)
+      taps[k / 3][k % 3] = {{lo[k][0], hi[k][0]}, {lo[k][1], hi[k][1]}, {lo[k][2], hi[k][2]}, {lo[k][3], hi[k][3]}};
     return;
   }
 #endif
@@ -203,7 +202,7 @@ void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float 
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
     constexpr int kTaps = (2 * R + 1) * (2 * R + 1);
     simd::Float8 lo[kTaps], hi[kTaps];
-    const simd::Float8 s[2] = {uv.x.lo, uv.x.hi}, t[2] = {uv.y.lo, uv.y.hi}, refs[2] = {ref.lo, ref.hi};
+    const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()}, refs[2] = {ref.low(), ref.high()};
     sampling::compareGrid8x2<R>(*sampler.texture, s, t, step, refs, lo, hi);
     for (int k = 0; k < kTaps; ++k) taps[k / (2 * R + 1)][k % (2 * R + 1)] = {lo[k], hi[k]};
     return;

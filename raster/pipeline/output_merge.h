@@ -157,8 +157,8 @@ inline void depthCodes<simd::Float8>(simd::Float8 z, TexelFormat format, uint32_
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(codes), result);
 }
 
-template <>
-inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint32_t* texels) {
+// packRgba8 for 8 lanes, in a register.
+inline __m256i packRgba8Lanes(const glsl::vec4<simd::Float8>& color) {
   // min(1, x) keeps NaN (minps returns its second operand), * 255, cvtps2dq (NaN -> INT_MIN),
   // clamp to [0, 255]: the same as unorm8FromFloat per channel.
   auto channel = [](__m256 x) {
@@ -167,9 +167,36 @@ inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint3
     return _mm256_min_epi32(_mm256_max_epi32(scaled, _mm256_setzero_si256()), _mm256_set1_epi32(255));
   };
   const __m256i r = channel(color.x.v), g = channel(color.y.v), b = channel(color.z.v), a = channel(color.w.v);
-  const __m256i rgba = _mm256_or_si256(_mm256_or_si256(r, _mm256_slli_epi32(g, 8)),
-                                       _mm256_or_si256(_mm256_slli_epi32(b, 16), _mm256_slli_epi32(a, 24)));
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(texels), rgba);
+  return _mm256_or_si256(_mm256_or_si256(r, _mm256_slli_epi32(g, 8)),
+                         _mm256_or_si256(_mm256_slli_epi32(b, 16), _mm256_slli_epi32(a, 24)));
+}
+
+template <>
+inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint32_t* texels) {
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(texels), packRgba8Lanes(color));
+}
+
+// A whole 8-lane group, not blended, written row by row. The group is two quads side by
+// side (raster_tile.cpp, LaneLayout), so lanes 0 1 4 5 are four neighbouring texels of one
+// row, starting at texel[0], and lanes 2 3 6 7 of the other, starting at texel[2]: one
+// store per row, or per pair of texels for RGBA16F, instead of one per lane.
+inline void writeRgba8Rows(const glsl::vec4<simd::Float8>& color, uint8_t* texels, const size_t* texel) {
+  const __m256i rows = _mm256_permutevar8x32_epi32(packRgba8Lanes(color), _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[0] * 4), _mm256_castsi256_si128(rows));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[2] * 4), _mm256_extracti128_si256(rows, 1));
+}
+inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel) {
+  // Planes -> v[k] = [lane k rgba | lane k + 4 rgba], as writeHalfTexels.
+  const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
+  const __m256 t2 = _mm256_unpacklo_ps(color.z.v, color.w.v), t3 = _mm256_unpackhi_ps(color.z.v, color.w.v);
+  const __m256 v[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
+                       _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};
+  // Lanes k, k + 1 (k = 0, 2) and k + 4, k + 5: neighbouring texels.
+  for (int k = 0; k < 4; k += 2) {
+    const __m256 left = _mm256_permute2f128_ps(v[k], v[k + 1], 0x20), right = _mm256_permute2f128_ps(v[k], v[k + 1], 0x31);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[k] * 4), _mm256_cvtps_ph(left, _MM_FROUND_TO_ZERO));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[k + 4] * 4), _mm256_cvtps_ph(right, _MM_FROUND_TO_ZERO));
+  }
 }
 #endif
 

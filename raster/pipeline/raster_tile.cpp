@@ -211,6 +211,14 @@ void depthOnlyRegion(const SetupTriangle& tri, const RasterState& state, Texture
 template <class F>
 void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t* texel, unsigned laneMask,
                       bool blendAdditive) {
+#if RASTER_AVX2
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    if (laneMask == 0xFFu && !blendAdditive) {
+      if (target.format == TexelFormat::RGBA8) return output_merge::writeRgba8Rows(color, target.rgba8.data(), texel);
+      if (target.format == TexelFormat::RGBA16F) return output_merge::writeHalfRows(color, target.half.data(), texel);
+    }
+  }
+#endif
   if (target.format == TexelFormat::RGBA8) {
     uint32_t packed[F::kCount];
     output_merge::packRgba8(color, packed);
@@ -302,7 +310,7 @@ template <class F>
   // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
   const F w = evaluatePlane(tri.w, px, py);
   const F oow = F(1.0f) / w;
-  const int varyingCount = draw.shader->varyingFloats();
+  const int varyingCount = draw.varyingFloats;
   for (int v = 0; v < varyingCount; ++v) group.varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
 
   // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
@@ -348,7 +356,7 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
   in.gl_FragCoord = {{ca.x, cb.x}, {ca.y, cb.y}, {ca.z, cb.z}, {ca.w, cb.w}};
   in.gl_FrontFacing = a.in.gl_FrontFacing;
   Float8x2 varyings[kMaxVaryingFloats];
-  const int varyingCount = a.draw->shader->varyingFloats();
+  const int varyingCount = a.draw->varyingFloats;
   for (int v = 0; v < varyingCount; ++v) varyings[v] = {a.varyings[v], b.varyings[v]};
   FragmentOutput<Float8x2> out;
   a.draw->shader->shadeFragments(in, varyings, out);

@@ -165,7 +165,8 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
     }
   }
   const bool samplesTextures = shader->samplesTextures();
-  draws_.push_back(RecordedDraw{std::move(shader), state, samplesTextures});
+  const int colorOutputs = shader->colorOutputs();
+  draws_.push_back(RecordedDraw{std::move(shader), state, samplesTextures, varyingFloats, colorOutputs});
   const uint64_t binStart = cycleCount();
   counters_.setupCycles += binStart - setupStart;
   bin(firstTriangle);

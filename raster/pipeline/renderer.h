@@ -65,13 +65,16 @@ struct RasterState {
 struct RecordedDraw {
   std::unique_ptr<ShaderInstance> shader;
   RasterState state;
-  bool samplesTextures = false;   // shader->samplesTextures(), asked once per draw
+  // The shader's answers, asked once per draw rather than once per lane group.
+  bool samplesTextures = false;   // shader->samplesTextures()
+  int varyingFloats = 0;          // shader->varyingFloats()
+  int colorOutputs = 0;           // shader->colorOutputs()
 };
 
 // The colour outputs a draw writes to a framebuffer: those both its shader and the
 // framebuffer have (0: a depth-only draw).
 inline int colorOutputsWritten(const RecordedDraw& draw, const Framebuffer& framebuffer) {
-  return std::min(draw.shader->colorOutputs(), int(framebuffer.colors.size()));
+  return std::min(draw.colorOutputs, int(framebuffer.colors.size()));
 }
 
 // What happened in the pipeline since the counters were last reset.

@@ -65,6 +65,11 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
                     simd::Float8 out[2][4]);
 
+#if RASTER_ZMM_PAIRS
+// The same for Float8x2 in one 512-bit register, with the result in that form too.
+void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]);
+#endif
+
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
 // sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
 // CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
@@ -95,10 +100,16 @@ glsl::vec4<F> texture(const Sampler2D& sampler, glsl::vec2<F> uv) {
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+#if RASTER_ZMM_PAIRS
+    simd::Float8x2 rgba[4];
+    sampling::sampleColor8x2(*sampler.texture, uv.x, uv.y, rgba);
+    return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#else
     const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, rgba);
     return sampling::joinHalves(rgba);
+#endif
 #endif
   } else {
     alignas(32) float s[F::kCount], t[F::kCount], out[4][F::kCount];

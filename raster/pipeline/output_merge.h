@@ -123,14 +123,21 @@ void writeHalfTexels(const glsl::vec4<F>& color, uint16_t* texels, const size_t*
 #if RASTER_AVX2
 // F16C's vcvtps2ph with truncation is halfFromFloatTowardZero (tests/simd and format hold
 // them equal on every class of input); vcvtph2ps is exact.
+// Planes -> one RGBA vector per lane: v[k] holds lane k in its low half, lane k + 4 high.
+inline void lanesToTexels(const glsl::vec4<simd::Float8>& color, __m256 v[4]) {
+  const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
+  const __m256 t2 = _mm256_unpacklo_ps(color.z.v, color.w.v), t3 = _mm256_unpackhi_ps(color.z.v, color.w.v);
+  v[0] = _mm256_shuffle_ps(t0, t2, 0x44);
+  v[1] = _mm256_shuffle_ps(t0, t2, 0xEE);
+  v[2] = _mm256_shuffle_ps(t1, t3, 0x44);
+  v[3] = _mm256_shuffle_ps(t1, t3, 0xEE);
+}
+
 template <>
 inline void writeHalfTexels<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel,
                                           unsigned laneMask, bool blend) {
-  // Planes -> one RGBA vector per lane: v[k] holds lane k in its low half, lane k + 4 high.
-  const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
-  const __m256 t2 = _mm256_unpacklo_ps(color.z.v, color.w.v), t3 = _mm256_unpackhi_ps(color.z.v, color.w.v);
-  const __m256 v[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
-                       _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};
+  __m256 v[4];
+  lanesToTexels(color, v);
   for (int k = 0; k < 4; ++k) {
     for (int half = 0; half < 2; ++half) {
       const int lane = k + 4 * half;
@@ -181,16 +188,14 @@ inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint3
 // row, starting at texel[0], and lanes 2 3 6 7 of the other, starting at texel[2]: one
 // store per row, or per pair of texels for RGBA16F, instead of one per lane.
 inline void writeRgba8Rows(const glsl::vec4<simd::Float8>& color, uint8_t* texels, const size_t* texel) {
-  const __m256i rows = _mm256_permutevar8x32_epi32(packRgba8Lanes(color), _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7));
+  // Lanes 0 1 4 5 | 2 3 6 7 (texel[0]'s row, then texel[2]'s), whichever row is on top.
+  const __m256i rows = _mm256_permutevar8x32_epi32(packRgba8Lanes(color), quadLanesToRows(false));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[0] * 4), _mm256_castsi256_si128(rows));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[2] * 4), _mm256_extracti128_si256(rows, 1));
 }
 inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel) {
-  // Planes -> v[k] = [lane k rgba | lane k + 4 rgba], as writeHalfTexels.
-  const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
-  const __m256 t2 = _mm256_unpacklo_ps(color.z.v, color.w.v), t3 = _mm256_unpackhi_ps(color.z.v, color.w.v);
-  const __m256 v[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
-                       _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};
+  __m256 v[4];
+  lanesToTexels(color, v);
   // Lanes k, k + 1 (k = 0, 2) and k + 4, k + 5: neighbouring texels.
   for (int k = 0; k < 4; k += 2) {
     const __m256 left = _mm256_permute2f128_ps(v[k], v[k + 1], 0x20), right = _mm256_permute2f128_ps(v[k], v[k + 1], 0x31);

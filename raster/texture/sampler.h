@@ -79,10 +79,12 @@ void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, fl
 
 #if RASTER_AVX2
 // Float8x2 lookups are two 8-lane lookups, one per half.
-// The two halves' channel planes of a sampleColor8x2 lookup, as one colour.
-inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) {
-  return {{rgba[0][0], rgba[1][0]}, {rgba[0][1], rgba[1][1]}, {rgba[0][2], rgba[1][2]}, {rgba[0][3], rgba[1][3]}};
+// Two halves' channel planes (r, g, b, a each), as one colour.
+inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&lo)[4], const simd::Float8 (&hi)[4]) {
+  return {{lo[0], hi[0]}, {lo[1], hi[1]}, {lo[2], hi[2]}, {lo[3], hi[3]}};
 }
+// The same for a sampleColor8x2 lookup's planes.
+inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) { return joinHalves(rgba[0], rgba[1]); }
 #endif
 
 }  // namespace sampling
@@ -188,8 +190,7 @@ template <class F>
     simd::Float8 lo[9][4], hi[9][4];
     sampling::sampleColorGrid8(*sampler.texture, uv.x.low(), uv.y.low(), step.x, step.y, lo);
     sampling::sampleColorGrid8(*sampler.texture, uv.x.high(), uv.y.high(), step.x, step.y, hi);
-    for (int k = 0; k < 9; ++k)
-      taps[k / 3][k % 3] = {{lo[k][0], hi[k][0]}, {lo[k][1], hi[k][1]}, {lo[k][2], hi[k][2]}, {lo[k][3], hi[k][3]}};
+    for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = sampling::joinHalves(lo[k], hi[k]);
     return;
   }
 #endif

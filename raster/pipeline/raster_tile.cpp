@@ -376,6 +376,74 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
 }
 #endif
 
+#if RASTER_AVX2
+// A tile that one triangle covers whole, the fullscreen triangle of a post-processing pass
+// being the common case: no lane is left out and no fragment can fail, so the tile is
+// shaded block by block, each 4x4 block's two groups as one pair, straight from the planes.
+// That skips the walk's coverage and depth bookkeeping and the ready-group copies. Each
+// lane gets the arithmetic depthTestGroup and fillGroup give it, the pairs are the ones
+// GroupShader forms there (a block's upper group, then its lower one), and every pixel is
+// written once, so the bits are the same. Returns false (nothing done) for other tiles.
+bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, int tileY1, std::span<const uint32_t> bin,
+                      const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
+  using simd::Float8;
+  using simd::Float8x2;
+  if (bin.size() != 1) return false;
+  const SetupTriangle& tri = job.triangles[bin.front()];
+  const RecordedDraw& draw = job.draws[tri.drawIndex];
+  const Framebuffer& fb = *job.framebuffer;
+  // Pairs are for programs that read textures (GroupShader); a depth test could fail lanes.
+  if (!draw.samplesTextures || (draw.state.depthTest && fb.depth)) return false;
+  if ((tileX1 + 1 - tileX0) % kBlock || (tileY1 + 1 - tileY0) % kBlock) return false;   // partial blocks
+  if (!triangleCoversRect(tri, tileX0, tileY0, tileX1 + 1, tileY1 + 1)) return false;
+
+  // Lane offsets of the pair: the block's upper group (rows 0-1), then its lower (rows 2-3).
+  const Float8x2 dx(layout.dxLanes, layout.dxLanes), dy(layout.dyLanes, layout.dyLanes + Float8(2.0f));
+  const int varyingCount = draw.varyingFloats, outputs = colorOutputsWritten(draw, fb);
+  const std::span<const Plane> planes = job.varyingPlanes.subspan(tri.varyingBase, size_t(varyingCount));
+  const bool additive = draw.state.blendAdditive;
+  FragmentInput<Float8x2> in;
+  in.gl_FrontFacing = tri.frontFacing;
+  Float8x2 varyings[kMaxVaryingFloats];
+  FragmentOutput<Float8x2> out;
+  for (int blockY = tileY0; blockY <= tileY1; blockY += kBlock) {
+    for (int blockX = tileX0; blockX <= tileX1; blockX += kBlock) {
+      const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
+      const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
+      const Float8x2 z = fragmentDepth(tri, px, py);
+      const Float8x2 w = evaluatePlane(tri.w, px, py);
+      const Float8x2 oow = Float8x2(1.0f) / w;
+      for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[size_t(v)], px, py) * oow;
+      const Float8x2 fragY = fb.flipY ? Float8x2(float(fb.height)) - (py + Float8x2(0.5f)) : py + Float8x2(0.5f);
+      in.gl_FragCoord = glsl::vec4<Float8x2>(px + Float8x2(0.5f), fragY, z, w);
+      draw.shader->shadeFragments(in, varyings, out);
+      const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
+
+      size_t upper[8], lower[8];
+      const size_t origin = size_t(blockY) * size_t(fb.width) + size_t(blockX);
+      for (int i = 0; i < 8; ++i) {
+        upper[i] = origin + layout.texel[i];
+        lower[i] = upper[i] + 2 * size_t(fb.width);
+      }
+      for (int k = 0; k < outputs; ++k) {
+        const glsl::vec4<Float8x2>& c = out.color[k];
+        writeColorOutput(*fb.colors[k], glsl::vec4<Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), upper, 0xFFu, additive);
+        writeColorOutput(*fb.colors[k], glsl::vec4<Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), lower, 0xFFu, additive);
+      }
+      if (job.timeStages) {
+        counters.shadeCycles += mergeStart - shadeStart;
+        counters.mergeCycles += cycleCount() - mergeStart;
+      }
+    }
+  }
+  const unsigned lanes = unsigned((tileX1 + 1 - tileX0) * (tileY1 + 1 - tileY0));
+  counters.lanesCovered += lanes;
+  counters.laneGroupsShaded += lanes / 8;
+  counters.lanesShaded += lanes;
+  return true;
+}
+#endif
+
 // Shades a tile's ready groups in order. Programs that read textures are shaded two groups
 // per call (Float8x2): a group waits in its slot until the next ready group joins it, or
 // until one that cannot join (another draw or facing) or the end of the tile sends it alone.
@@ -624,15 +692,9 @@ void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX
 
 }  // namespace
 
-bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, int x0, int y0, int x1, int y1) {
-  if (bin.empty() || x1 <= x0 || y1 <= y0) return false;
-  const SetupTriangle& tri = job.triangles[bin.front()];
-  const RecordedDraw& draw = job.draws[tri.drawIndex];
-  const Framebuffer& fb = *job.framebuffer;
-  if (draw.state.blendAdditive || (draw.state.depthTest && fb.depth) ||
-      colorOutputsWritten(draw, fb) != int(fb.colors.size()))
-    return false;
-  // The walk writes only inside the bounds (which hold every covered pixel centre anyway).
+bool triangleCoversRect(const SetupTriangle& tri, int x0, int y0, int x1, int y1) {
+  if (x1 <= x0 || y1 <= y0) return false;
+  // The walk visits only the bounds (which hold every covered pixel centre anyway).
   if (tri.minX > x0 || tri.maxX < x1 - 1 || tri.minY > y0 || tri.maxY < y1 - 1) return false;
   for (const EdgeFunction& e : tri.edge) {
     int64_t high, low;
@@ -640,6 +702,17 @@ bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> 
     if (e.at(x0, y0) + low <= 0) return false;   // some pixel centre outside this edge
   }
   return true;
+}
+
+bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, int x0, int y0, int x1, int y1) {
+  if (bin.empty()) return false;
+  const SetupTriangle& tri = job.triangles[bin.front()];
+  const RecordedDraw& draw = job.draws[tri.drawIndex];
+  const Framebuffer& fb = *job.framebuffer;
+  if (draw.state.blendAdditive || (draw.state.depthTest && fb.depth) ||
+      colorOutputsWritten(draw, fb) != int(fb.colors.size()))
+    return false;
+  return triangleCoversRect(tri, x0, y0, x1, y1);
 }
 
 constexpr size_t kVisibilityFirstMinTriangles = 16;
@@ -654,19 +727,26 @@ void rasterizeTile(const TileJob& job, int tileX, int tileY, std::span<const uin
   const uint64_t tileStart = job.timeStages ? cycleCount() : 0;
   const uint64_t shadeBefore = counters.shadeCycles, mergeBefore = counters.mergeCycles;
 
-  GroupShader<F> shader(job, counters);
-  // A tile crossed by a few triangles has little overdraw to save (a floor, a cube's
-  // faces), and the visibility pass would cost more than it saves.
-  if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
-    rasterizeVisibleFirst<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout, counters, shader);
-  } else {   // in order: each group is shaded as soon as it passes its depth test
-    depthTestBin<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout,
-                    [&](uint32_t, const SetupTriangle& tri, const RecordedDraw& draw, int gx, int gy, unsigned passed, F z) {
-                      fillGroup(job, tri, draw, layout, gx, gy, passed, z, counters, shader.next());
-                      shader.push();
-                    });
-  }
-  shader.flush();
+  auto shadeTile = [&] {
+#if RASTER_AVX2
+    if constexpr (std::is_same_v<F, simd::Float8>)
+      if (shadeCoveredTile(job, tileX0, tileY0, tileX1, tileY1, bin, layout, counters)) return;
+#endif
+    GroupShader<F> shader(job, counters);
+    // A tile crossed by a few triangles has little overdraw to save (a floor, a cube's
+    // faces), and the visibility pass would cost more than it saves.
+    if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
+      rasterizeVisibleFirst<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout, counters, shader);
+    } else {   // in order: each group is shaded as soon as it passes its depth test
+      depthTestBin<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout,
+                      [&](uint32_t, const SetupTriangle& tri, const RecordedDraw& draw, int gx, int gy, unsigned passed, F z) {
+                        fillGroup(job, tri, draw, layout, gx, gy, passed, z, counters, shader.next());
+                        shader.push();
+                      });
+    }
+    shader.flush();
+  };
+  shadeTile();
   if (job.timeStages)
     counters.rasterCycles += (cycleCount() - tileStart) - (counters.shadeCycles - shadeBefore) - (counters.mergeCycles - mergeBefore);
 }

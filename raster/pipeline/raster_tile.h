@@ -19,6 +19,8 @@
 // Programs that read textures are shaded two groups per call (simd::Float8x2, with AVX2):
 // their lookups wait on memory, and a second group's lookups overlap that wait. Pairing
 // never changes a bit: lanes are independent, and writes keep their order.
+// A tile that a single triangle covers whole (a post-processing pass's fullscreen
+// triangle) skips the walk: its blocks are shaded pair by pair straight from the planes.
 #pragma once
 
 #include <span>
@@ -39,6 +41,9 @@ struct TileJob {
 };
 
 constexpr int kTileSize = 64;   // llvmpipe TILE_ORDER 6
+
+// True when the triangle covers every pixel centre of the rectangle [x0, x1) x [y0, y1).
+bool triangleCoversRect(const SetupTriangle& tri, int x0, int y0, int x1, int y1);
 
 // True when the bin's first triangle writes every colour texel of the rectangle
 // [x0, x1) x [y0, y1) of the tile: it covers every pixel centre there, its draw writes

@@ -203,6 +203,38 @@ inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texel
     _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[k + 4] * 4), _mm256_cvtps_ph(right, _MM_FROUND_TO_ZERO));
   }
 }
+
+// The same for a pair of whole groups (simd::Float8x2), `first` the low group's texels and
+// `second` the high one's. With 512-bit pairs, one conversion and one lane-to-row permute
+// serve both groups.
+inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t* texels, const size_t* first,
+                               const size_t* second) {
+#if RASTER_ZMM_PAIRS
+  auto channel = [](__m512 x) {   // packRgba8Lanes' conversion, 16 lanes
+    const __m512 clamped = _mm512_min_ps(_mm512_set1_ps(1.0f), x);
+    const __m512i scaled = _mm512_cvtps_epi32(_mm512_mul_ps(clamped, _mm512_set1_ps(255.0f)));
+    return _mm512_min_epi32(_mm512_max_epi32(scaled, _mm512_setzero_si512()), _mm512_set1_epi32(255));
+  };
+  const __m512i r = channel(color.x.v), g = channel(color.y.v), b = channel(color.z.v), a = channel(color.w.v);
+  const __m512i packed = _mm512_or_si512(_mm512_or_si512(r, _mm512_slli_epi32(g, 8)),
+                                         _mm512_or_si512(_mm512_slli_epi32(b, 16), _mm512_slli_epi32(a, 24)));
+  // quadLanesToRows(false) in each half: [first's two rows | second's two rows].
+  const __m512i rows = _mm512_permutexvar_epi32(
+      _mm512_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7, 8, 9, 12, 13, 10, 11, 14, 15), packed);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + first[0] * 4), _mm512_castsi512_si128(rows));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + first[2] * 4), _mm512_extracti32x4_epi32(rows, 1));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + second[0] * 4), _mm512_extracti32x4_epi32(rows, 2));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + second[2] * 4), _mm512_extracti32x4_epi32(rows, 3));
+#else
+  writeRgba8Rows(glsl::vec4<simd::Float8>(color.x.low(), color.y.low(), color.z.low(), color.w.low()), texels, first);
+  writeRgba8Rows(glsl::vec4<simd::Float8>(color.x.high(), color.y.high(), color.z.high(), color.w.high()), texels, second);
+#endif
+}
+inline void writeHalfRowsPair(const glsl::vec4<simd::Float8x2>& color, uint16_t* texels, const size_t* first,
+                              const size_t* second) {
+  writeHalfRows(glsl::vec4<simd::Float8>(color.x.low(), color.y.low(), color.z.low(), color.w.low()), texels, first);
+  writeHalfRows(glsl::vec4<simd::Float8>(color.x.high(), color.y.high(), color.z.high(), color.w.high()), texels, second);
+}
 #endif
 
 }  // namespace raster::output_merge

@@ -94,6 +94,58 @@ TEST_SUITE("format") {
     CHECK(compared == 2000);
   }
 #if RASTER_AVX2
+  TEST_CASE("whole groups stored a row at a time, alone or as a pair, equal the per-lane writes") {
+    using raster::simd::Float8;
+    using raster::simd::Float8x2;
+    const std::vector<float> values = interestingValues();
+    std::mt19937 rng(7);
+    for (int round = 0; round < 400; ++round) {
+      // A 4x4 block of a 4-texel-wide target: group a on rows 0-1, group b on rows 2-3, lanes
+      // in quad order (raster_tile.cpp's LaneLayout), rows swapped on flipped targets.
+      const bool flipped = round & 1;
+      size_t first[8], second[8];
+      for (int i = 0; i < 8; ++i) {
+        const int dx = (i / 4) * 2 + (i & 1), dy = flipped ? 1 - ((i >> 1) & 1) : (i >> 1) & 1;
+        first[i] = size_t(dy * 4 + dx);
+        second[i] = first[i] + 8;
+      }
+      float lanes[4][16];
+      for (auto& channel : lanes)
+        for (float& x : channel) x = values[rng() % values.size()] * (round % 3 == 0 ? 70000.0f : 1.0f);
+      auto group = [&](int g) {
+        return raster::glsl::vec4<Float8>(Float8::load(lanes[0] + 8 * g), Float8::load(lanes[1] + 8 * g),
+                                          Float8::load(lanes[2] + 8 * g), Float8::load(lanes[3] + 8 * g));
+      };
+      auto plainGroup = [&](int g) {
+        return raster::glsl::vec4<Plain>(Plain::load(lanes[0] + 8 * g), Plain::load(lanes[1] + 8 * g),
+                                         Plain::load(lanes[2] + 8 * g), Plain::load(lanes[3] + 8 * g));
+      };
+      const raster::glsl::vec4<Float8x2> pair(Float8x2(group(0).x, group(1).x), Float8x2(group(0).y, group(1).y),
+                                              Float8x2(group(0).z, group(1).z), Float8x2(group(0).w, group(1).w));
+
+      uint8_t expected8[16 * 4], rows8[16 * 4], pair8[16 * 4];
+      for (int g = 0; g < 2; ++g) {
+        uint32_t packed[8];
+        raster::output_merge::packRgba8(plainGroup(g), packed);
+        for (int i = 0; i < 8; ++i) std::memcpy(expected8 + (g ? second : first)[i] * 4, &packed[i], 4);
+      }
+      raster::output_merge::writeRgba8Rows(group(0), rows8, first);
+      raster::output_merge::writeRgba8Rows(group(1), rows8, second);
+      raster::output_merge::writeRgba8RowsPair(pair, pair8, first, second);
+      CHECK(std::memcmp(rows8, expected8, sizeof expected8) == 0);
+      CHECK(std::memcmp(pair8, expected8, sizeof expected8) == 0);
+
+      std::vector<uint16_t> expected16(16 * 4), rows16(16 * 4), pair16(16 * 4);
+      raster::output_merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, false);
+      raster::output_merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, false);
+      raster::output_merge::writeHalfRows(group(0), rows16.data(), first);
+      raster::output_merge::writeHalfRows(group(1), rows16.data(), second);
+      raster::output_merge::writeHalfRowsPair(pair, pair16.data(), first, second);
+      CHECK(rows16 == expected16);
+      CHECK(pair16 == expected16);
+    }
+  }
+
   TEST_CASE("depth test of a lane group: whole-row and masked-edge forms equal the per-lane test") {
     std::mt19937 rng(6);
     for (int round = 0; round < 4000; ++round) {

@@ -426,9 +426,16 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
         lower[i] = upper[i] + 2 * size_t(fb.width);
       }
       for (int k = 0; k < outputs; ++k) {
+        Texture& target = *fb.colors[k];
         const glsl::vec4<Float8x2>& c = out.color[k];
-        writeColorOutput(*fb.colors[k], glsl::vec4<Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), upper, 0xFFu, additive);
-        writeColorOutput(*fb.colors[k], glsl::vec4<Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), lower, 0xFFu, additive);
+        if (!additive && target.format == TexelFormat::RGBA8) {
+          output_merge::writeRgba8RowsPair(c, target.rgba8.data(), upper, lower);
+        } else if (!additive && target.format == TexelFormat::RGBA16F) {
+          output_merge::writeHalfRowsPair(c, target.half.data(), upper, lower);
+        } else {
+          writeColorOutput(target, glsl::vec4<Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), upper, 0xFFu, additive);
+          writeColorOutput(target, glsl::vec4<Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), lower, 0xFFu, additive);
+        }
       }
       if (job.timeStages) {
         counters.shadeCycles += mergeStart - shadeStart;

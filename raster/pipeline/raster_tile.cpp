@@ -408,7 +408,6 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
   FragmentOutput<Float8x2> out;
   for (int blockY = tileY0; blockY <= tileY1; blockY += kBlock) {
     for (int blockX = tileX0; blockX <= tileX1; blockX += kBlock) {
-      const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
       const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
       const Float8x2 z = fragmentDepth(tri, px, py);
       const Float8x2 w = evaluatePlane(tri.w, px, py);
@@ -416,6 +415,7 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
       for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[size_t(v)], px, py) * oow;
       const Float8x2 fragY = fb.flipY ? Float8x2(float(fb.height)) - (py + Float8x2(0.5f)) : py + Float8x2(0.5f);
       in.gl_FragCoord = glsl::vec4<Float8x2>(px + Float8x2(0.5f), fragY, z, w);
+      const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;   // interpolation counts as rasterization
       draw.shader->shadeFragments(in, varyings, out);
       const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
 

@@ -204,6 +204,14 @@ inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texel
   }
 }
 
+// A pair's colour (simd::Float8x2) as its two groups' colours: the low group, the high one.
+inline glsl::vec4<simd::Float8> lowGroup(const glsl::vec4<simd::Float8x2>& c) {
+  return {c.x.low(), c.y.low(), c.z.low(), c.w.low()};
+}
+inline glsl::vec4<simd::Float8> highGroup(const glsl::vec4<simd::Float8x2>& c) {
+  return {c.x.high(), c.y.high(), c.z.high(), c.w.high()};
+}
+
 // The same for a pair of whole groups (simd::Float8x2), `first` the low group's texels and
 // `second` the high one's. With 512-bit pairs, one conversion and one lane-to-row permute
 // serve both groups.
@@ -226,14 +234,14 @@ inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t*
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + second[0] * 4), _mm512_extracti32x4_epi32(rows, 2));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + second[2] * 4), _mm512_extracti32x4_epi32(rows, 3));
 #else
-  writeRgba8Rows(glsl::vec4<simd::Float8>(color.x.low(), color.y.low(), color.z.low(), color.w.low()), texels, first);
-  writeRgba8Rows(glsl::vec4<simd::Float8>(color.x.high(), color.y.high(), color.z.high(), color.w.high()), texels, second);
+  writeRgba8Rows(lowGroup(color), texels, first);
+  writeRgba8Rows(highGroup(color), texels, second);
 #endif
 }
 inline void writeHalfRowsPair(const glsl::vec4<simd::Float8x2>& color, uint16_t* texels, const size_t* first,
                               const size_t* second) {
-  writeHalfRows(glsl::vec4<simd::Float8>(color.x.low(), color.y.low(), color.z.low(), color.w.low()), texels, first);
-  writeHalfRows(glsl::vec4<simd::Float8>(color.x.high(), color.y.high(), color.z.high(), color.w.high()), texels, second);
+  writeHalfRows(lowGroup(color), texels, first);
+  writeHalfRows(highGroup(color), texels, second);
 }
 #endif
 

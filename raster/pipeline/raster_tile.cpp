@@ -289,6 +289,25 @@ template <class F>
                                          state.depthFunc == DepthFunc::Lequal, state.depthWrite);
 }
 
+// Fragment inputs of lanes at pixels (px, py) with window z: perspective-correct varyings
+// and gl_FragCoord, for a group or a pair of groups (the same operations per lane).
+template <class F>
+[[gnu::always_inline]] inline void interpolateFragment(const TileJob& job, const SetupTriangle& tri,
+                                                       const RecordedDraw& draw, F px, F py, F z, FragmentInput<F>& in,
+                                                       F* varyings) {
+  const Framebuffer& fb = *job.framebuffer;
+  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
+  const F w = evaluatePlane(tri.w, px, py);
+  const F oow = F(1.0f) / w;
+  const int varyingCount = draw.varyingFloats;
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
+
+  // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
+  const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
+  in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
+  in.gl_FrontFacing = tri.frontFacing;
+}
+
 // Fragment inputs of a lane group at origin (gx, gy) whose lanes `laneMask` passed their
 // depth test (z as depthTestGroup computed it): pixel indices, perspective-correct varyings
 // (helper lanes too, so dFdx / dFdy see whole quads) and gl_FragCoord.
@@ -307,16 +326,7 @@ template <class F>
   group.draw = &draw;
   group.laneMask = laneMask;
 
-  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
-  const F w = evaluatePlane(tri.w, px, py);
-  const F oow = F(1.0f) / w;
-  const int varyingCount = draw.varyingFloats;
-  for (int v = 0; v < varyingCount; ++v) group.varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
-
-  // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
-  const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
-  group.in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
-  group.in.gl_FrontFacing = tri.frontFacing;
+  interpolateFragment(job, tri, draw, px, py, z, group.in, group.varyings);
 }
 
 // Shades one ready group and writes its colour outputs.
@@ -369,8 +379,8 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
   const bool additive = a.draw->state.blendAdditive;
   for (int k = 0; k < a.outputs; ++k) {
     const glsl::vec4<Float8x2>& c = out.color[k];
-    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), a.texel, a.laneMask, additive);
-    writeColorOutput(*fb.colors[k], glsl::vec4<simd::Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), b.texel, b.laneMask, additive);
+    writeColorOutput(*fb.colors[k], output_merge::lowGroup(c), a.texel, a.laneMask, additive);
+    writeColorOutput(*fb.colors[k], output_merge::highGroup(c), b.texel, b.laneMask, additive);
   }
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
@@ -381,7 +391,7 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
 // being the common case: no lane is left out and no fragment can fail, so the tile is
 // shaded block by block, each 4x4 block's two groups as one pair, straight from the planes.
 // That skips the walk's coverage and depth bookkeeping and the ready-group copies. Each
-// lane gets the arithmetic depthTestGroup and fillGroup give it, the pairs are the ones
+// lane gets the walk's fragmentDepth and interpolateFragment, the pairs are the ones
 // GroupShader forms there (a block's upper group, then its lower one), and every pixel is
 // written once, so the bits are the same. Returns false (nothing done) for other tiles.
 bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, int tileY1, std::span<const uint32_t> bin,
@@ -399,22 +409,15 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
 
   // Lane offsets of the pair: the block's upper group (rows 0-1), then its lower (rows 2-3).
   const Float8x2 dx(layout.dxLanes, layout.dxLanes), dy(layout.dyLanes, layout.dyLanes + Float8(2.0f));
-  const int varyingCount = draw.varyingFloats, outputs = colorOutputsWritten(draw, fb);
-  const std::span<const Plane> planes = job.varyingPlanes.subspan(tri.varyingBase, size_t(varyingCount));
+  const int outputs = colorOutputsWritten(draw, fb);
   const bool additive = draw.state.blendAdditive;
   FragmentInput<Float8x2> in;
-  in.gl_FrontFacing = tri.frontFacing;
   Float8x2 varyings[kMaxVaryingFloats];
   FragmentOutput<Float8x2> out;
   for (int blockY = tileY0; blockY <= tileY1; blockY += kBlock) {
     for (int blockX = tileX0; blockX <= tileX1; blockX += kBlock) {
       const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
-      const Float8x2 z = fragmentDepth(tri, px, py);
-      const Float8x2 w = evaluatePlane(tri.w, px, py);
-      const Float8x2 oow = Float8x2(1.0f) / w;
-      for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[size_t(v)], px, py) * oow;
-      const Float8x2 fragY = fb.flipY ? Float8x2(float(fb.height)) - (py + Float8x2(0.5f)) : py + Float8x2(0.5f);
-      in.gl_FragCoord = glsl::vec4<Float8x2>(px + Float8x2(0.5f), fragY, z, w);
+      interpolateFragment(job, tri, draw, px, py, fragmentDepth(tri, px, py), in, varyings);
       const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;   // interpolation counts as rasterization
       draw.shader->shadeFragments(in, varyings, out);
       const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
@@ -433,8 +436,8 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
         } else if (!additive && target.format == TexelFormat::RGBA16F) {
           output_merge::writeHalfRowsPair(c, target.half.data(), upper, lower);
         } else {
-          writeColorOutput(target, glsl::vec4<Float8>(c.x.low(), c.y.low(), c.z.low(), c.w.low()), upper, 0xFFu, additive);
-          writeColorOutput(target, glsl::vec4<Float8>(c.x.high(), c.y.high(), c.z.high(), c.w.high()), lower, 0xFFu, additive);
+          writeColorOutput(target, output_merge::lowGroup(c), upper, 0xFFu, additive);
+          writeColorOutput(target, output_merge::highGroup(c), lower, 0xFFu, additive);
         }
       }
       if (job.timeStages) {

@@ -66,8 +66,10 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
                     simd::Float8 out[2][4]);
 
 #if RASTER_ZMM_PAIRS
-// The same for Float8x2 in one 512-bit register, with the result in that form too.
+// The same for Float8x2 in one 512-bit register, with the result in that form too; the
+// second form takes `live` lanes as the masked sampleColor8.
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]);
+void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
 #endif
 
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
@@ -138,11 +140,17 @@ glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv)
     sampling::sampleColor8(*sampler.texture, uv.x, uv.y, needed, rgba);
     return {rgba[0], rgba[1], rgba[2], rgba[3]};
   } else if constexpr (std::is_same_v<F, simd::Float8x2>) {
+#if RASTER_ZMM_PAIRS
+    simd::Float8x2 rgba[4];
+    sampling::sampleColor8x2(*sampler.texture, uv.x, uv.y, needed, rgba);
+    return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#else
     const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
     const simd::Mask8 live[2] = {needed.low(), needed.high()};
     simd::Float8 rgba[2][4];
     sampling::sampleColor8x2(*sampler.texture, s, t, live, rgba);
     return sampling::joinHalves(rgba);
+#endif
   }
 #endif
   (void)needed;

@@ -64,10 +64,14 @@ __m256i wrapNearest(__m256 coord, int size, Wrap wrap, bool floorClamp) {
   return clampInt(floorClamp ? floorToInt(scaled) : _mm256_cvttps_epi32(scaled), 0, size - 1);
 }
 
-// lerp8 with pmulhrsw: a + floor((w * (b - a) * 128 + 16384) / 32768), per 32-bit lane.
-__m256i lerp8(__m256i weight, __m256i a, __m256i b) {
-  const __m256i product = _mm256_mullo_epi32(_mm256_mullo_epi32(weight, _mm256_sub_epi32(b, a)), splat(128));
-  return _mm256_and_si256(_mm256_add_epi32(a, _mm256_srai_epi32(_mm256_add_epi32(product, splat(16384)), 15)), splat(0xFF));
+// lerp8 with pmulhrsw: a + floor((w * (b - a) * 128 + 16384) / 32768), per 32-bit lane,
+// given weight128 = w * 128. pmulhrsw computes exactly that rounding on 16-bit values, and
+// b - a (-255..255) and w * 128 (0..32640) fit 16 bits: the low half of each lane gets the
+// step. A negative step leaves its high half zero instead of all ones, an error of 65536,
+// which the final & 0xFF removes.
+__m256i lerp8(__m256i weight128, __m256i a, __m256i b) {
+  const __m256i step = _mm256_mulhrs_epi16(_mm256_sub_epi32(b, a), weight128);
+  return _mm256_and_si256(_mm256_add_epi32(a, step), splat(0xFF));
 }
 
 __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
@@ -108,10 +112,11 @@ template <int N>
     p11[h] = fetch(x[h].x1, y[h].x1);
   }
   for (int h = 0; h < N; ++h) {
+    const __m256i weightX = _mm256_slli_epi32(x[h].weight, 7), weightY = _mm256_slli_epi32(y[h].weight, 7);
     for (int c = 0; c < 4; ++c) {
-      const __m256i row0 = lerp8(x[h].weight, channel(p00[h], c), channel(p01[h], c));
-      const __m256i row1 = lerp8(x[h].weight, channel(p10[h], c), channel(p11[h], c));
-      out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(y[h].weight, row0, row1)), kUnorm8));
+      const __m256i row0 = lerp8(weightX, channel(p00[h], c), channel(p01[h], c));
+      const __m256i row1 = lerp8(weightX, channel(p10[h], c), channel(p11[h], c));
+      out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(weightY, row0, row1)), kUnorm8));
     }
   }
 }

@@ -35,6 +35,22 @@ TEST_SUITE("determinism") {
     }
   }
 
+  // Draws of thousands of triangles (the hdr scene's instanced cubes, deferred's statue) are
+  // set up in chunks and binned in bands of tile rows in parallel when there are threads
+  // to share them (renderer.cpp): the triangles must reach every tile in API order, with
+  // their own varyings, whatever the chunks.
+  TEST_CASE("large draws set up and binned in parallel give the bytes of one thread") {
+    for (const char* scene : {"hdr", "deferred"}) {
+      auto one = scenes::makeRasterBackend(1);
+      const auto reference = testing_support::renderScene(*one, scene, 0.9f, 333, 217);
+      for (int threads : {2, 7}) {
+        INFO(scene << " with " << threads << " threads");
+        auto backend = scenes::makeRasterBackend(threads);
+        checkSameBytes(reference, testing_support::renderScene(*backend, scene, 0.9f, 333, 217));
+      }
+    }
+  }
+
   // Passes whose colour draws do not blend shade only each pixel's visible fragment
   // (raster_tile.cpp, rasterizeVisibleFirst): the hdr scene's cubes and deferred's G-buffer
   // (many triangles per tile, overlapping) take that path. It must leave the bytes of

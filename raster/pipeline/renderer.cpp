@@ -2,6 +2,7 @@
 #include "raster/pipeline/renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -101,6 +102,63 @@ void Renderer::clearRect(int x0, int y0, int x1, int y1, bool colorToo) const {
   }
 }
 
+// Assembles primitives [first, end) of a draw (instance-major: every primitive of instance 0,
+// then of instance 1, ...), clips those that need it and sets up the rest, appending them
+// to `out` in that order.
+void Renderer::assemble(const AssemblyInput& in, size_t first, size_t end, SetupOutput out) const {
+  const size_t perInstance = in.indices.size() / 3;
+  clip::Clipper clipper(in.setup.varyingFloats, viewport_);
+  for (size_t p = first; p < end; ++p) {
+    const int base = int(p / perInstance) * in.vertexCount;
+    const size_t t = (p % perInstance) * 3;
+    const int r0 = base + int(in.indices[t]), r1 = base + int(in.indices[t + 1]), r2 = base + int(in.indices[t + 2]);
+    const unsigned m0 = in.shaded.clipMask[size_t(r0)], m1 = in.shaded.clipMask[size_t(r1)], m2 = in.shaded.clipMask[size_t(r2)];
+    out.counters.trianglesIn++;
+    if (m0 & m1 & m2) {   // all three outside one plane
+      out.counters.trianglesRejected++;
+      continue;
+    }
+    if ((m0 | m1 | m2) == 0) {
+      out.counters.trianglesSetUp += setupTriangle(in.setup, in.shaded.record(r0), in.shaded.record(r1),
+                                                   in.shaded.record(r2), in.drawIndex, out.triangles, out.varyingPlanes);
+      continue;
+    }
+    out.counters.trianglesClipped++;
+    const clip::Polygon& polygon =
+        clipper.clipTriangle(in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), m0 | m1 | m2);
+    for (int i = 2; i < polygon.count; ++i) {
+      out.counters.trianglesSetUp += setupTriangle(in.setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0],
+                                                   in.drawIndex, out.triangles, out.varyingPlanes);
+    }
+  }
+}
+
+// Appends the first `chunks` setup chunks to the pass's triangles, in chunk order; each
+// chunk's varying-plane indices move by where its planes land.
+void Renderer::appendChunks(int chunks) {
+  size_t triangleCount = triangles_.size(), planeCount = varyingPlanes_.size();
+  for (int c = 0; c < chunks; ++c) {
+    SetupChunk& chunk = setupChunks_[size_t(c)];
+    chunk.triangleAt = triangleCount;
+    chunk.planeAt = planeCount;
+    triangleCount += chunk.triangles.size();
+    planeCount += chunk.varyingPlanes.size();
+    counters_ += chunk.counters;
+  }
+  triangles_.resize(triangleCount);
+  varyingPlanes_.resize(planeCount);
+  pool_.parallelFor(chunks, [&](int c) {
+    const SetupChunk& chunk = setupChunks_[size_t(c)];
+    SetupTriangle* to = triangles_.data() + chunk.triangleAt;
+    for (const SetupTriangle& tri : chunk.triangles) {
+      *to = tri;
+      to->varyingBase += uint32_t(chunk.planeAt);
+      ++to;
+    }
+    std::copy(chunk.varyingPlanes.begin(), chunk.varyingPlanes.end(), varyingPlanes_.begin() + std::ptrdiff_t(chunk.planeAt));
+  });
+}
+
 void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& vertices,
                     std::span<const uint32_t> indices, const RasterState& state, int instanceCount) {
   if (framebuffer_.width <= 0) throw std::logic_error("Renderer::draw before beginPass");
@@ -139,30 +197,27 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
 
   const uint32_t drawIndex = uint32_t(draws_.size());
   const uint32_t firstTriangle = uint32_t(triangles_.size());
-  clip::Clipper clipper(varyingFloats, viewport_);
-  for (int instance = 0; instance < instanceCount; ++instance) {
-    const int base = instance * vertices.vertexCount;
-    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-      const int r0 = base + int(indices[t]), r1 = base + int(indices[t + 1]), r2 = base + int(indices[t + 2]);
-      const unsigned m0 = shaded.clipMask[size_t(r0)], m1 = shaded.clipMask[size_t(r1)], m2 = shaded.clipMask[size_t(r2)];
-      counters_.trianglesIn++;
-      if (m0 & m1 & m2) {   // all three outside one plane
-        counters_.trianglesRejected++;
-        continue;
-      }
-      if ((m0 | m1 | m2) == 0) {
-        counters_.trianglesSetUp += setupTriangle(setup, shaded.record(r0), shaded.record(r1), shaded.record(r2),
-                                                  drawIndex, triangles_, varyingPlanes_);
-        continue;
-      }
-      counters_.trianglesClipped++;
-      const clip::Polygon& polygon =
-          clipper.clipTriangle(shaded.record(r0), shaded.record(r1), shaded.record(r2), m0 | m1 | m2);
-      for (int i = 2; i < polygon.count; ++i) {
-        counters_.trianglesSetUp += setupTriangle(setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0],
-                                                  drawIndex, triangles_, varyingPlanes_);
-      }
-    }
+  const AssemblyInput input{setup, shaded, indices, vertices.vertexCount, drawIndex};
+  const size_t primitives = size_t(instanceCount) * (indices.size() / 3);
+  // Large draws are set up in chunks of primitives in parallel, each into its own lists,
+  // which are then appended in chunk order: the same triangles in the same order as one
+  // pass through them, for any thread count.
+  const int chunks = pool_.threads() > 1 && primitives >= 2 * kSetupChunkPrimitives
+                         ? int(std::min<size_t>(primitives / kSetupChunkPrimitives, size_t(4 * pool_.threads())))
+                         : 1;
+  if (chunks == 1) {
+    assemble(input, 0, primitives, {triangles_, varyingPlanes_, counters_});
+  } else {
+    if (setupChunks_.size() < size_t(chunks)) setupChunks_.resize(size_t(chunks));
+    pool_.parallelFor(chunks, [&](int c) {
+      SetupChunk& chunk = setupChunks_[size_t(c)];
+      chunk.triangles.clear();
+      chunk.varyingPlanes.clear();
+      chunk.counters = {};
+      assemble(input, primitives * size_t(c) / size_t(chunks), primitives * size_t(c + 1) / size_t(chunks),
+               {chunk.triangles, chunk.varyingPlanes, chunk.counters});
+    });
+    appendChunks(chunks);
   }
   const bool samplesTextures = shader->samplesTextures();
   const int colorOutputs = shader->colorOutputs();
@@ -174,23 +229,37 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
 }
 
 // Bins triangles [firstTriangle, end) into the tiles their bounds touch, skipping tiles
-// that one edge function rejects at all four corners of the overlap.
+// that one edge function rejects at all four corners of the overlap. Bands of tile rows
+// are binned in parallel: each band's tiles get their triangles in order, whoever bins
+// the other bands.
 void Renderer::bin(uint32_t firstTriangle) {
-  for (uint32_t t = firstTriangle; t < triangles_.size(); ++t) {
-    const SetupTriangle& tri = triangles_[t];
-    for (int tileY = tri.minY / kTileSize; tileY <= tri.maxY / kTileSize; ++tileY) {
-      for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
-        const int x0 = std::max(tileX * kTileSize, tri.minX), x1 = std::min(tileX * kTileSize + kTileSize - 1, tri.maxX);
-        const int y0 = std::max(tileY * kTileSize, tri.minY), y1 = std::min(tileY * kTileSize + kTileSize - 1, tri.maxY);
-        bool outside = false;
-        for (const EdgeFunction& e : tri.edge)
-          outside = outside || std::max({e.at(x0, y0), e.at(x1, y0), e.at(x0, y1), e.at(x1, y1)}) <= 0;
-        if (outside) continue;
-        bins_[size_t(tileY) * size_t(tilesX_) + size_t(tileX)].push_back(t);
-        counters_.tileBinEntries++;
+  const size_t count = triangles_.size() - firstTriangle;
+  const int bands = pool_.threads() > 1 && count >= kSetupChunkPrimitives ? std::min(tilesY_, 4 * pool_.threads()) : 1;
+  std::atomic<uint64_t> entries{0};
+  auto binBand = [&](int band) {
+    uint64_t binned = 0;
+    const int bandY0 = tilesY_ * band / bands, bandY1 = tilesY_ * (band + 1) / bands - 1;
+    for (uint32_t t = firstTriangle; t < triangles_.size(); ++t) {
+      const SetupTriangle& tri = triangles_[t];
+      const int tileY0 = std::max(tri.minY / kTileSize, bandY0), tileY1 = std::min(tri.maxY / kTileSize, bandY1);
+      for (int tileY = tileY0; tileY <= tileY1; ++tileY) {
+        for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
+          const int x0 = std::max(tileX * kTileSize, tri.minX), x1 = std::min(tileX * kTileSize + kTileSize - 1, tri.maxX);
+          const int y0 = std::max(tileY * kTileSize, tri.minY), y1 = std::min(tileY * kTileSize + kTileSize - 1, tri.maxY);
+          bool outside = false;
+          for (const EdgeFunction& e : tri.edge)
+            outside = outside || std::max({e.at(x0, y0), e.at(x1, y0), e.at(x0, y1), e.at(x1, y1)}) <= 0;
+          if (outside) continue;
+          bins_[size_t(tileY) * size_t(tilesX_) + size_t(tileX)].push_back(t);
+          ++binned;
+        }
       }
     }
-  }
+    entries += binned;
+  };
+  if (bands == 1) binBand(0);
+  else pool_.parallelFor(bands, binBand);
+  counters_.tileBinEntries += entries;
 }
 
 // Worth it (and exact) when some colour draw is depth tested, and no colour draw blends:

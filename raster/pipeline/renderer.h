@@ -87,10 +87,10 @@ struct PipelineCounters {
   uint64_t laneGroupsShaded = 0;   // fragment-shader invocations (lane groups)
   uint64_t lanesShaded = 0;        // lanes in those groups (pixels + helpers)
   uint64_t lanesCovered = 0;       // shaded lanes that passed coverage and depth (the rest are helpers)
-  // Time-stamp-counter cycles per stage. Vertex shading, clip + setup and binning run on
-  // the calling thread (vertex shading's cycles are its wall time); the tile stages are
-  // summed over every thread: raster = coverage, depth and interpolation; shade = the
-  // fragment shader; merge = colour conversion and writes.
+  // Time-stamp-counter cycles per stage. Vertex shading, clip + setup and binning are
+  // timed on the calling thread, as wall time (each runs in parallel where the draw is
+  // large enough); the tile stages are summed over every thread: raster = coverage, depth
+  // and interpolation; shade = the fragment shader; merge = colour conversion and writes.
   uint64_t vertexCycles = 0, setupCycles = 0, binCycles = 0;
   uint64_t rasterCycles = 0, shadeCycles = 0, mergeCycles = 0;
   PipelineCounters& operator+=(const PipelineCounters& o);
@@ -120,8 +120,34 @@ class Renderer {
   int threads() const { return pool_.threads(); }
 
  private:
+  // A draw's primitives, as assemble() reads them.
+  struct AssemblyInput {
+    const SetupState& setup;
+    const ShadedVertices& shaded;
+    std::span<const uint32_t> indices;
+    int vertexCount;
+    uint32_t drawIndex;
+  };
+  // Where assemble() appends its triangles and planes, and counts what it saw.
+  struct SetupOutput {
+    std::vector<SetupTriangle>& triangles;
+    std::vector<Plane>& varyingPlanes;
+    PipelineCounters& counters;
+  };
+  // One chunk of a draw set up in parallel: its own lists, kept so no draw allocates them anew.
+  struct SetupChunk {
+    std::vector<SetupTriangle> triangles;
+    std::vector<Plane> varyingPlanes;
+    PipelineCounters counters;
+    size_t triangleAt = 0, planeAt = 0;   // where its lists land in the pass's
+  };
+  // Draws of fewer primitives than twice this are set up in one piece, and binned so.
+  static constexpr size_t kSetupChunkPrimitives = 1024;
+
   void clearRect(int x0, int y0, int x1, int y1, bool colorToo) const;   // colorToo: its colour clear too, if any
   bool visibilityFirst() const;
+  void assemble(const AssemblyInput& in, size_t first, size_t end, SetupOutput out) const;
+  void appendChunks(int chunks);
   void bin(uint32_t firstTriangle);
 
   ThreadPool pool_;
@@ -134,6 +160,7 @@ class Renderer {
   std::vector<Plane> varyingPlanes_;
   std::vector<std::vector<uint32_t>> bins_;   // per tile: triangle indices in API order
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
+  std::vector<SetupChunk> setupChunks_;
   int tilesX_ = 0, tilesY_ = 0;
   PipelineCounters counters_;
   bool timeStages_ = false;

@@ -46,6 +46,9 @@ struct WalkEdge {
 #if RASTER_AVX2
   __m256i pixel[2];               // -dcdx * col + dcdy * row: rows 0-1, rows 2-3
 #endif
+#if RASTER_ZMM_PAIRS
+  __m512i pixel16;                // both in one register
+#endif
   explicit WalkEdge(const EdgeFunction& e) : f(e) {
     edgeExtremes(e, kBlock - 1, kBlock - 1, blockMax, blockMin);
     edgeExtremes(e, kRegion - 1, kRegion - 1, regionMax, regionMin);
@@ -58,6 +61,9 @@ struct WalkEdge {
         const __m256i row = _mm256_add_epi32(_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_set1_epi32(2 * half));
         pixel[half] = _mm256_sub_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdy)), row), xTerm);
       }
+#if RASTER_ZMM_PAIRS
+      pixel16 = _mm512_inserti64x4(_mm512_castsi256_si512(pixel[0]), pixel[1], 1);
+#endif
     }
 #endif
   }
@@ -106,6 +112,29 @@ uint32_t blockCoverage(const WalkEdge (&edges)[3], int blockX, int blockY) {
   }
   return mask;
 }
+
+#if RASTER_AVX2
+// blockCoverage without a branch, when every edge has small steps: each edge's value at the
+// block's first pixel is clamped to +-2^30 and compared with all 16 pixel offsets at once.
+// The offsets stay below 3 * 2^28 in size, so beyond the clamp a block lies wholly on one
+// side of the edge either way, and every bit is the one blockCoverage gives.
+[[gnu::always_inline]] inline uint32_t blockCoverageSmallSteps(const WalkEdge (&edges)[3], int blockX, int blockY) {
+  constexpr int64_t kLimit = int64_t(1) << 30;
+  uint32_t mask = 0xFFFFu;
+  for (const WalkEdge& e : edges) {
+    const int32_t threshold = int32_t(-std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit));
+#if RASTER_ZMM_PAIRS
+    mask &= _mm512_cmpgt_epi32_mask(e.pixel16, _mm512_set1_epi32(threshold));
+#else
+    auto rows = [&](int half) {
+      return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(e.pixel[half], _mm256_set1_epi32(threshold)))));
+    };
+    mask &= rows(0) | rows(1) << 8;
+#endif
+  }
+  return mask;
+}
+#endif
 
 // Pixels of the block inside the framebuffer.
 uint32_t blockBounds(int blockX, int blockY, int width, int height) {
@@ -510,6 +539,7 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
   const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
   const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
   const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
+  const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
   // Depth test and write, and no colour the shader writes is kept.
   const bool depthOnly =
       draw.state.depthTest && draw.state.depthWrite && fb.depth && colorOutputsWritten(draw, fb) == 0;
@@ -540,7 +570,11 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
           blockX = (blockX | (kRegion - 1)) - (kBlock - 1);
           continue;
         }
-        const uint32_t inside = region == Overlap::Inside ? 0xFFFFu : blockCoverage(edges, blockX, blockY);
+        const uint32_t inside = region == Overlap::Inside ? 0xFFFFu
+#if RASTER_AVX2
+                                : smallSteps ? blockCoverageSmallSteps(edges, blockX, blockY)
+#endif
+                                             : blockCoverage(edges, blockX, blockY);
         const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
         if (!coverage) continue;
         for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {

@@ -1,4 +1,5 @@
-// C++ port of post.vert / ssao.frag (10 - Deferred Shading, SSAO pass), line by line.
+// C++ port of post.vert / ssao.frag (10 - Deferred Shading, SSAO pass), line by line; the
+// sample loop is split in three, with the same operations per sample (see fragment()).
 // Per-lane branches run under masks: both sides are computed and select() keeps the one
 // GLSL would take, which gives the same values lane by lane.
 #pragma once
@@ -60,27 +61,38 @@ struct SsaoPass : PostProgram {
       const vec3<F> bitangent = cross(n, tangent);
       const F ang0 = hash21(l_uv * F(1024.0f)) * F(6.2831853f);
 
-      F occ = F(0.0f);
+      // The GLSL loop, split in three with the same operations per sample: its sample
+      // points, then their 16 stored positions, then the tests. A GLSL compiler unrolls
+      // this constant loop and is free to order it so; here it lets the 16 G-buffer reads
+      // be in flight together instead of each waiting behind the previous sample's tests.
+      vec3<F> sp[SSAO_K];
+      vec4<F> clip[SSAO_K];
+      vec2<F> suv[SSAO_K];
       for (int i = 0; i < SSAO_K; i++) {
         // Constant per unrolled iteration: folded by the GLSL compiler in float.
         const float fi = (float(i) + 0.5f) / float(SSAO_K);
         const F ang = ang0 + F(float(i) * 2.3998277f);
         const float rr = SSAO_RADIUS * std::sqrt(fi);
         const vec3<F> off = (cos(ang) * tangent + sin(ang) * bitangent) * F(rr) + n * F(rr * 0.5f);
-        const vec3<F> sp = p + off;
-        const vec4<F> clip = u.u_proj * (u.u_view * vec4<F>(sp, F(1.0f)));
-        const F wv = max(clip.w, F(0.0001f));
-        const vec2<F> suv = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
-        const vec3<F> stored_p = raster::texture(u.ssao_g_worldpos, suv).xyz();
-        const F stored_vz = (u.u_view * vec4<F>(stored_p, F(1.0f))).z;
-        const F sample_vz = (u.u_view * vec4<F>(sp, F(1.0f))).z;
+        sp[i] = p + off;
+        clip[i] = u.u_proj * (u.u_view * vec4<F>(sp[i], F(1.0f)));
+        const F wv = max(clip[i].w, F(0.0001f));
+        suv[i] = vec2<F>(clip[i].x / wv * F(0.5f) + F(0.5f), clip[i].y / wv * F(0.5f) + F(0.5f));
+      }
+      vec3<F> stored_p[SSAO_K];
+      for (int i = 0; i < SSAO_K; i++) stored_p[i] = raster::texture(u.ssao_g_worldpos, suv[i]).xyz();
+
+      F occ = F(0.0f);
+      for (int i = 0; i < SSAO_K; i++) {
+        const F stored_vz = (u.u_view * vec4<F>(stored_p[i], F(1.0f))).z;
+        const F sample_vz = (u.u_view * vec4<F>(sp[i], F(1.0f))).z;
         const F range_check = smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / max(abs(cur_vz - stored_vz), F(0.0001f)));
         // view looks down -Z: a stored surface closer to the camera (greater z) occludes
-        const auto in_front = (clip.w > F(0.0f)) & (suv.x >= F(0.0f)) & (suv.x <= F(1.0f)) & (suv.y >= F(0.0f)) &
-                              (suv.y <= F(1.0f)) & (stored_vz >= sample_vz + F(SSAO_BIAS));
+        const auto in_front = (clip[i].w > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
+                              (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) & (stored_vz >= sample_vz + F(SSAO_BIAS));
         // stored_n only decides lanes that pass every other test, so only those read it
         // (textureWhere); GLSL reads it everywhere, and the sum is the same.
-        const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv).xyz();
+        const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv[i]).xyz();
         const auto occludes = in_front & (dot(stored_n, stored_n) > F(0.01f));
         occ = select(occludes, occ + range_check, occ);
       }

@@ -318,6 +318,68 @@ template <class F>
                                          state.depthFunc == DepthFunc::Lequal, state.depthWrite);
 }
 
+#if RASTER_ZMM_PAIRS
+// Four rows of 4 lanes as one register (row r in lanes 4r..4r + 3), and back.
+inline __m512i joinRows(const __m128i (&rows)[4]) {
+  const __m512i low = _mm512_inserti32x4(_mm512_castsi128_si512(rows[0]), rows[1], 1);
+  return _mm512_inserti32x4(_mm512_inserti32x4(low, rows[2], 2), rows[3], 3);
+}
+inline void splitRows(__m512i v, __m128i (&rows)[4]) {
+  rows[0] = _mm512_castsi512_si128(v);
+  rows[1] = _mm512_extracti32x4_epi32(v, 1);
+  rows[2] = _mm512_extracti32x4_epi32(v, 2);
+  rows[3] = _mm512_extracti32x4_epi32(v, 3);
+}
+
+// The depth test of one 4x4 block in memory-row order (lane row * 4 + col) instead of two
+// lane groups: each pixel gets the z, clamp and quantization depthTestGroup gives it, is
+// tested against its stored code and written where it passes, so the same bits land.
+// Returns the pixels that pass (bit row * 4 + col). For the tests that shade nothing and so
+// need no quads: the visibility pass's, and depth-only draws'.
+uint32_t depthTestBlock(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, int blockX, int blockY,
+                        uint32_t coverage) {
+  const Framebuffer& fb = *job.framebuffer;
+  const RasterState& state = draw.state;
+  if (!state.depthTest || !fb.depth) return coverage;
+  using simd::Float8x2;
+  const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
+  const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
+  const Float8x2 z = simd::min(simd::max(fragmentDepth(tri, px, py), Float8x2(0.0f)), Float8x2(1.0f));
+  // output_merge::depthCodes, 16 lanes at once.
+  const __m512i code =
+      fb.depth->format == TexelFormat::Depth24
+          ? _mm512_cvtps_epi32(_mm512_mul_ps(z.v, _mm512_set1_ps(16777215.0f)))
+          : _mm512_and_si512(_mm512_castps_si512(_mm512_add_ps(_mm512_mul_ps(z.v, _mm512_set1_ps(65535.0f / 65536.0f)),
+                                                               _mm512_set1_ps(128.0f))),
+                             _mm512_set1_epi32(0xFFFF));
+  // The block's four memory rows. Where the block sticks out of the framebuffer, rows and
+  // pixels outside it (never covered) are neither read nor written; otherwise whole rows
+  // are read and written back blended, as masked stores are slow.
+  const bool whole = blockX + 4 <= fb.width && blockY + 4 <= fb.height;
+  uint32_t* rows[4];
+  __m128i rowCodes[4];
+  for (int r = 0; r < 4; ++r) {
+    const __mmask8 covered = __mmask8(coverage >> (4 * r) & 0xFu);
+    rows[r] = whole || covered ? fb.depth->depth.data() + size_t(blockY + r) * size_t(fb.width) + size_t(blockX) : nullptr;
+    rowCodes[r] = whole ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(rows[r]))
+                        : covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
+  }
+  const __m512i stored = joinRows(rowCodes);
+  // output_merge::depthPasses: LEQUAL as stored + 1 > code (codes stay below 2^24).
+  const __mmask16 pass = state.depthFunc == DepthFunc::Lequal
+                             ? _mm512_mask_cmpgt_epi32_mask(__mmask16(coverage), _mm512_add_epi32(stored, _mm512_set1_epi32(1)), code)
+                             : _mm512_mask_cmpgt_epi32_mask(__mmask16(coverage), stored, code);
+  if (state.depthWrite && pass) {
+    splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
+    for (int r = 0; r < 4; ++r) {
+      if (whole) _mm_storeu_si128(reinterpret_cast<__m128i*>(rows[r]), rowCodes[r]);
+      else if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
+    }
+  }
+  return pass;
+}
+#endif
+
 // Fragment inputs of lanes at pixels (px, py) with window z: perspective-correct varyings
 // and gl_FragCoord, for a group or a pair of groups (the same operations per lane).
 template <class F>
@@ -529,12 +591,13 @@ class GroupShader {
   int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
 };
 
-// The lane groups of one triangle inside one tile, in walk order: visit(gx, gy, laneMask)
-// for every group with a covered lane. Depth-only draws fill the 16x16 regions wholly inside
-// the triangle themselves (depthOnlyRegion) and visit only the rest.
-template <class F, class Visit>
-void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
-                  int tileX0, int tileY0, int tileX1, int tileY1, Visit&& visit) {
+// The 4x4 blocks of one triangle inside one tile, in walk order: visitBlock(blockX, blockY,
+// coverage) for every block with a covered pixel (bit row * 4 + col). Depth-only draws fill
+// the 16x16 regions wholly inside the triangle themselves (depthOnlyRegion) and visit only
+// the rest.
+template <class F, class VisitBlock>
+void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, int tileX0, int tileY0,
+                        int tileX1, int tileY1, VisitBlock&& visitBlock) {
   const Framebuffer& fb = *job.framebuffer;
   const int x0 = std::max(tileX0, tri.minX), x1 = std::min(tileX1, tri.maxX);
   const int y0 = std::max(tileY0, tri.minY), y1 = std::min(tileY1, tri.maxY);
@@ -576,16 +639,26 @@ void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDr
 #endif
                                              : blockCoverage(edges, blockX, blockY);
         const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
-        if (!coverage) continue;
-        for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
-          const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
-          const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[fb.flipY][(coverage >> (8 * g)) & 0xFFu]
-                                                   : layout.laneMask(coverage, g);
-          if (laneMask) visit(gx, gy, laneMask);
-        }
+        if (coverage) visitBlock(blockX, blockY, coverage);
       }
     }
   }
+}
+
+// The lane groups of one triangle inside one tile, in walk order: visit(gx, gy, laneMask)
+// for every group with a covered lane.
+template <class F, class Visit>
+void walkTriangle(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, const LaneLayout<F>& layout,
+                  int tileX0, int tileY0, int tileX1, int tileY1, Visit&& visit) {
+  const bool flipY = job.framebuffer->flipY;
+  walkTriangleBlocks<F>(job, tri, draw, tileX0, tileY0, tileX1, tileY1, [&](int blockX, int blockY, uint32_t coverage) {
+    for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
+      const int gx = blockX + LaneLayout<F>::originX(g), gy = blockY + LaneLayout<F>::originY(g);
+      const unsigned laneMask = F::kCount == 8 ? kRowPairLanes.lanes[flipY][(coverage >> (8 * g)) & 0xFFu]
+                                               : layout.laneMask(coverage, g);
+      if (laneMask) visit(gx, gy, laneMask);
+    }
+  });
 }
 
 // Walks the bin's triangles in order through the depth test, calling
@@ -599,6 +672,13 @@ template <class F, class Passed>
     const SetupTriangle& tri = job.triangles[index];
     const RecordedDraw& draw = job.draws[tri.drawIndex];
     const bool writesColor = colorOutputsWritten(draw, *job.framebuffer) > 0;
+#if RASTER_ZMM_PAIRS
+    if (std::is_same_v<F, simd::Float8> && !writesColor) {   // depth only: no quads needed
+      walkTriangleBlocks<F>(job, tri, draw, tileX0, tileY0, tileX1, tileY1,
+                            [&](int blockX, int blockY, uint32_t coverage) { depthTestBlock(job, tri, draw, blockX, blockY, coverage); });
+      continue;
+    }
+#endif
     walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {
       F z;
       const unsigned lanes = depthTestGroup(job, tri, draw, layout, gx, gy, laneMask, z);
@@ -645,6 +725,28 @@ class TileTriangles {
       for (int i = 0; i < kLanes; ++i) at[local_.texel[i]] = kNone;
     for (; passed; passed &= passed - 1) at[local_.texel[__builtin_ctz(passed)]] = index;
   }
+
+#if RASTER_ZMM_PAIRS
+  // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
+  // triangle `index`: mark() for the block's upper group and its lower one, in memory rows.
+  void markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
+    for (int half = 0; half < 2; ++half) {
+      const uint32_t bits = passed >> (8 * half) & 0xFFu;
+      if (!bits) continue;
+      uint32_t& rowBits = marked_[ly / 2 + half];
+      const uint32_t bit = 1u << (lx / kGroupWidth);
+      const bool first = !(rowBits & bit);
+      rowBits |= bit;
+      for (int r = 0; r < 2; ++r) {
+        uint32_t* at = entries_ + (ly + 2 * half + r) * kTileSize + lx;
+        const __mmask8 row = __mmask8(bits >> (4 * r) & 0xFu);
+        // A row the tile owns whole: read, blended and written back (masked stores are slow).
+        const __m128i before = first ? _mm_set1_epi32(-1) : _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_mask_blend_epi32(row, before, _mm_set1_epi32(int(index))));
+      }
+    }
+  }
+#endif
 
   // Calls shade(lx, ly, index, laneMask) once per triangle that marked group (lx, ly).
   template <class Shade>
@@ -720,6 +822,20 @@ void rasterizeVisibleFirst(const TileJob& job, int tileX0, int tileY0, int tileX
   thread_local TileTriangles<F> visibleFlip(true), visible(false);
   TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
   shown.reset();
+#if RASTER_ZMM_PAIRS
+  if constexpr (std::is_same_v<F, simd::Float8>) {
+    // The visibility pass needs no quads: its depth tests run a whole block at a time.
+    for (uint32_t index : bin) {
+      const SetupTriangle& tri = job.triangles[index];
+      const RecordedDraw& draw = job.draws[tri.drawIndex];
+      const bool writesColor = colorOutputsWritten(draw, *job.framebuffer) > 0;
+      walkTriangleBlocks<F>(job, tri, draw, tileX0, tileY0, tileX1, tileY1, [&](int blockX, int blockY, uint32_t coverage) {
+        const uint32_t passed = depthTestBlock(job, tri, draw, blockX, blockY, coverage);
+        if (passed && writesColor) shown.markBlock(blockX - tileX0, blockY - tileY0, passed, index);
+      });
+    }
+  } else
+#endif
   depthTestBin<F>(job, tileX0, tileY0, tileX1, tileY1, bin, layout,
                   [&](uint32_t index, const SetupTriangle&, const RecordedDraw&, int gx, int gy, unsigned passed, F) {
                     shown.mark(gx - tileX0, gy - tileY0, passed, index);

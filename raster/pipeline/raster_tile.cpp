@@ -336,8 +336,8 @@ inline void splitRows(__m512i v, __m128i (&rows)[4]) {
 // tested against its stored code and written where it passes, so the same bits land.
 // Returns the pixels that pass (bit row * 4 + col). For the tests that shade nothing and so
 // need no quads: the visibility pass's, and depth-only draws'.
-uint32_t depthTestBlock(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw, int blockX, int blockY,
-                        uint32_t coverage) {
+[[gnu::always_inline]] inline uint32_t depthTestBlock(const TileJob& job, const SetupTriangle& tri, const RecordedDraw& draw,
+                                                    int blockX, int blockY, uint32_t coverage) {
   const Framebuffer& fb = *job.framebuffer;
   const RasterState& state = draw.state;
   if (!state.depthTest || !fb.depth) return coverage;

@@ -545,11 +545,19 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
 }
 #endif
 
-// Shades a tile's ready groups in order. Programs that read textures are shaded two groups
-// per call (Float8x2): a group waits in its slot until the next ready group joins it, or
-// until one that cannot join (another draw or facing) or the end of the tile sends it alone.
+// Shades a tile's ready groups in order, two groups per call (Float8x2) where that pays:
+// for programs that read textures (one group's lookups overlap the other's), and with
+// AVX-512 for every program (a pair's arithmetic is one 512-bit operation instead of two
+// 256-bit ones). A group waits in its slot until the next ready group joins it, or until
+// one that cannot join (another draw or facing) or the end of the tile sends it alone.
 // Each group passed its depth test before it became ready, and colours are written in the
 // order the groups became ready, so the framebuffer ends as if each were shaded alone.
+#if RASTER_ZMM_PAIRS
+constexpr bool kPairEveryProgram = true;
+#else
+constexpr bool kPairEveryProgram = false;
+#endif
+
 template <class F>
 class GroupShader {
  public:
@@ -562,7 +570,7 @@ class GroupShader {
     ReadyGroup<F>& ready = slots_[index];
 #if RASTER_AVX2
     if constexpr (std::is_same_v<F, simd::Float8>) {
-      if (ready.draw->samplesTextures) {
+      if (kPairEveryProgram || ready.draw->samplesTextures) {
         if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
           shadeGroupPair(job_, slots_[waiting_], ready, counters_);
           waiting_ = -1;

@@ -1,5 +1,6 @@
 // C++ port of post.vert / down.frag (11 - HDR + Bloom, pass 3: the 5-tap downsample), line
-// by line. The offsets -o.x, -o.y negate a uniform: exact, wherever it is computed.
+// by line, its five lookups made as one 3x3 grid (see fragment()). The offsets -o.x, -o.y
+// negate a uniform: exact, wherever it is computed.
 // lt + rt + lb + rb: Mesa's compiler rebalances the chain ((lt + rt) + lb) + rb into
 // (lt + rt) + (lb + rb) (most likely GLSL IR's opt_rebalance_tree), so the port adds in that
 // order. Measured: a + b + c + d of four varyings is (a + b) + (c + d) in 4096 of 4096 cases.
@@ -28,11 +29,16 @@ struct DownPass : PostProgram {
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
     const glm::vec2 o = u.u_src_rcp;
-    const vec3<F> c = raster::texture(u.src0, in.v_uv).xyz();
-    const vec3<F> lt = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, -o.y)).xyz();
-    const vec3<F> rt = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, -o.y)).xyz();
-    const vec3<F> lb = raster::texture(u.src0, in.v_uv + glm::vec2(-o.x, o.y)).xyz();
-    const vec3<F> rb = raster::texture(u.src0, in.v_uv + glm::vec2(o.x, o.y)).xyz();
+    // The five texture() calls are the centre and corners of the 3x3 grid of lookups one
+    // offset apart, made at once so the sampler can share their texels (as the upsample
+    // does): grid[j + 1][i + 1] is texture(src0, v_uv + vec2(i * o.x, j * o.y)), bit for bit.
+    vec4<F> grid[3][3];
+    raster::textureGrid3x3(u.src0, in.v_uv, o, grid);
+    const vec3<F> c = grid[1][1].xyz();    // texture(src0, v_uv)
+    const vec3<F> lt = grid[0][0].xyz();   // texture(src0, v_uv + vec2(-o.x, -o.y))
+    const vec3<F> rt = grid[0][2].xyz();   // texture(src0, v_uv + vec2(o.x, -o.y))
+    const vec3<F> lb = grid[2][0].xyz();   // texture(src0, v_uv + vec2(-o.x, o.y))
+    const vec3<F> rb = grid[2][2].xyz();   // texture(src0, v_uv + vec2(o.x, o.y))
     const vec3<F> sum = c * F(0.5f) + ((lt + rt) + (lb + rb)) * F(0.125f);
     out.color[0] = vec4<F>(sum, F(1.0f));
   }

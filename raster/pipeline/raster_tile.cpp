@@ -681,10 +681,13 @@ template <class F, class Passed>
     const RecordedDraw& draw = job.draws[tri.drawIndex];
     const bool writesColor = colorOutputsWritten(draw, *job.framebuffer) > 0;
 #if RASTER_ZMM_PAIRS
-    if (std::is_same_v<F, simd::Float8> && !writesColor) {   // depth only: no quads needed
-      walkTriangleBlocks<F>(job, tri, draw, tileX0, tileY0, tileX1, tileY1,
-                            [&](int blockX, int blockY, uint32_t coverage) { depthTestBlock(job, tri, draw, blockX, blockY, coverage); });
-      continue;
+    if constexpr (std::is_same_v<F, simd::Float8>) {
+      if (!writesColor) {   // depth only: no quads needed
+        walkTriangleBlocks<F>(job, tri, draw, tileX0, tileY0, tileX1, tileY1, [&](int blockX, int blockY, uint32_t coverage) {
+          depthTestBlock(job, tri, draw, blockX, blockY, coverage);
+        });
+        continue;
+      }
     }
 #endif
     walkTriangle<F>(job, tri, draw, layout, tileX0, tileY0, tileX1, tileY1, [&](int gx, int gy, unsigned laneMask) {

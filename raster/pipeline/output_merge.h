@@ -164,6 +164,20 @@ inline void depthCodes<simd::Float8>(simd::Float8 z, TexelFormat format, uint32_
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(codes), result);
 }
 
+#if RASTER_ZMM_PAIRS
+// depthCodes<Float8> and depthPasses for 16 lanes in one 512-bit register (a 4x4 block's
+// depth test): the same operations per lane; the passing lanes among `covered` as a mask.
+inline __m512i depthCodes16(simd::Float8x2 z, TexelFormat format) {
+  if (format == TexelFormat::Depth24) return _mm512_cvtps_epi32(_mm512_mul_ps(z.v, _mm512_set1_ps(16777215.0f)));
+  const __m512 t = _mm512_add_ps(_mm512_mul_ps(z.v, _mm512_set1_ps(65535.0f / 65536.0f)), _mm512_set1_ps(128.0f));
+  return _mm512_and_si512(_mm512_castps_si512(t), _mm512_set1_epi32(0xFFFF));
+}
+inline __mmask16 depthPasses16(__mmask16 covered, __m512i code, __m512i stored, bool lessEqual) {
+  return lessEqual ? _mm512_mask_cmpgt_epi32_mask(covered, _mm512_add_epi32(stored, _mm512_set1_epi32(1)), code)
+                   : _mm512_mask_cmpgt_epi32_mask(covered, stored, code);
+}
+#endif
+
 // packRgba8 for 8 lanes, in a register.
 inline __m256i packRgba8Lanes(const glsl::vec4<simd::Float8>& color) {
   // min(1, x) keeps NaN (minps returns its second operand), * 255, cvtps2dq (NaN -> INT_MIN),

@@ -71,6 +71,9 @@ struct WalkEdge {
   // Bits (row * 4 + col) of a straddled block whose first pixel has value c00, set where
   // c00 - dcdx * col + dcdy * row > 0.
   uint32_t straddledCoverage(int64_t c00) const {
+#if RASTER_ZMM_PAIRS
+    if (smallSteps) return _mm512_cmpgt_epi32_mask(pixel16, _mm512_set1_epi32(int32_t(-c00)));
+#endif
 #if RASTER_AVX2
     if (smallSteps) {   // straddling: |c00| < 3 * 2^28, so -c00 fits 32 bits too
       const __m256i threshold = _mm256_set1_epi32(int32_t(-c00));
@@ -121,17 +124,7 @@ uint32_t blockCoverage(const WalkEdge (&edges)[3], int blockX, int blockY) {
 [[gnu::always_inline]] inline uint32_t blockCoverageSmallSteps(const WalkEdge (&edges)[3], int blockX, int blockY) {
   constexpr int64_t kLimit = int64_t(1) << 30;
   uint32_t mask = 0xFFFFu;
-  for (const WalkEdge& e : edges) {
-    const int32_t threshold = int32_t(-std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit));
-#if RASTER_ZMM_PAIRS
-    mask &= _mm512_cmpgt_epi32_mask(e.pixel16, _mm512_set1_epi32(threshold));
-#else
-    auto rows = [&](int half) {
-      return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(e.pixel[half], _mm256_set1_epi32(threshold)))));
-    };
-    mask &= rows(0) | rows(1) << 8;
-#endif
-  }
+  for (const WalkEdge& e : edges) mask &= e.straddledCoverage(std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit));
   return mask;
 }
 #endif
@@ -345,13 +338,7 @@ inline void splitRows(__m512i v, __m128i (&rows)[4]) {
   const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
   const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
   const Float8x2 z = simd::min(simd::max(fragmentDepth(tri, px, py), Float8x2(0.0f)), Float8x2(1.0f));
-  // output_merge::depthCodes, 16 lanes at once.
-  const __m512i code =
-      fb.depth->format == TexelFormat::Depth24
-          ? _mm512_cvtps_epi32(_mm512_mul_ps(z.v, _mm512_set1_ps(16777215.0f)))
-          : _mm512_and_si512(_mm512_castps_si512(_mm512_add_ps(_mm512_mul_ps(z.v, _mm512_set1_ps(65535.0f / 65536.0f)),
-                                                               _mm512_set1_ps(128.0f))),
-                             _mm512_set1_epi32(0xFFFF));
+  const __m512i code = output_merge::depthCodes16(z, fb.depth->format);
   // The block's four memory rows. Where the block sticks out of the framebuffer, rows and
   // pixels outside it (never covered) are neither read nor written; otherwise whole rows
   // are read and written back blended, as masked stores are slow.
@@ -365,10 +352,8 @@ inline void splitRows(__m512i v, __m128i (&rows)[4]) {
                         : covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
   }
   const __m512i stored = joinRows(rowCodes);
-  // output_merge::depthPasses: LEQUAL as stored + 1 > code (codes stay below 2^24).
-  const __mmask16 pass = state.depthFunc == DepthFunc::Lequal
-                             ? _mm512_mask_cmpgt_epi32_mask(__mmask16(coverage), _mm512_add_epi32(stored, _mm512_set1_epi32(1)), code)
-                             : _mm512_mask_cmpgt_epi32_mask(__mmask16(coverage), stored, code);
+  const __mmask16 pass =
+      output_merge::depthPasses16(__mmask16(coverage), code, stored, state.depthFunc == DepthFunc::Lequal);
   if (state.depthWrite && pass) {
     splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
     for (int r = 0; r < 4; ++r) {

@@ -463,6 +463,19 @@ void shadeGroupPair(const TileJob& job, const ReadyGroup<simd::Float8>& a, const
 #endif
 
 #if RASTER_AVX2
+#if RASTER_AVX2
+// Whether a draw's lane groups are shaded two per call (Float8x2): for programs that read
+// textures (one group's lookups overlap the other's), and with AVX-512 for every program
+// (a pair's arithmetic is one 512-bit operation instead of two 256-bit ones).
+bool shadedInPairs(const RecordedDraw& draw) {
+#if RASTER_ZMM_PAIRS
+  return true;
+#else
+  return draw.samplesTextures;
+#endif
+}
+#endif
+
 // A tile that one triangle covers whole, the fullscreen triangle of a post-processing pass
 // being the common case: no lane is left out and no fragment can fail, so the tile is
 // shaded block by block, each 4x4 block's two groups as one pair, straight from the planes.
@@ -478,8 +491,8 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
   const SetupTriangle& tri = job.triangles[bin.front()];
   const RecordedDraw& draw = job.draws[tri.drawIndex];
   const Framebuffer& fb = *job.framebuffer;
-  // Pairs are for programs that read textures (GroupShader); a depth test could fail lanes.
-  if (!draw.samplesTextures || (draw.state.depthTest && fb.depth)) return false;
+  // Pairs only where GroupShader forms them; a depth test could fail lanes.
+  if (!shadedInPairs(draw) || (draw.state.depthTest && fb.depth)) return false;
   if ((tileX1 + 1 - tileX0) % kBlock || (tileY1 + 1 - tileY0) % kBlock) return false;   // partial blocks
   if (!triangleCoversRect(tri, tileX0, tileY0, tileX1 + 1, tileY1 + 1)) return false;
 
@@ -530,19 +543,11 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
 }
 #endif
 
-// Shades a tile's ready groups in order, two groups per call (Float8x2) where that pays:
-// for programs that read textures (one group's lookups overlap the other's), and with
-// AVX-512 for every program (a pair's arithmetic is one 512-bit operation instead of two
-// 256-bit ones). A group waits in its slot until the next ready group joins it, or until
+// Shades a tile's ready groups in order, two groups per call (Float8x2) where
+// shadedInPairs: a group waits in its slot until the next ready group joins it, or until
 // one that cannot join (another draw or facing) or the end of the tile sends it alone.
 // Each group passed its depth test before it became ready, and colours are written in the
 // order the groups became ready, so the framebuffer ends as if each were shaded alone.
-#if RASTER_ZMM_PAIRS
-constexpr bool kPairEveryProgram = true;
-#else
-constexpr bool kPairEveryProgram = false;
-#endif
-
 template <class F>
 class GroupShader {
  public:
@@ -555,7 +560,7 @@ class GroupShader {
     ReadyGroup<F>& ready = slots_[index];
 #if RASTER_AVX2
     if constexpr (std::is_same_v<F, simd::Float8>) {
-      if (kPairEveryProgram || ready.draw->samplesTextures) {
+      if (shadedInPairs(*ready.draw)) {
         if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
           shadeGroupPair(job_, slots_[waiting_], ready, counters_);
           waiting_ = -1;

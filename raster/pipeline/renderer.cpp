@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -163,6 +164,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
                     std::span<const uint32_t> indices, const RasterState& state, int instanceCount) {
   if (framebuffer_.width <= 0) throw std::logic_error("Renderer::draw before beginPass");
   const int varyingFloats = shader->varyingFloats();
+  // The vertex stage addresses the buffer with 32-bit float offsets (its gathers).
+  if (size_t(vertices.vertexCount) * size_t(vertices.strideFloats) > size_t(std::numeric_limits<int32_t>::max()))
+    throw std::length_error("vertex buffer of " + std::to_string(vertices.vertexCount) + " vertices is too large");
   for (uint32_t index : indices)
     if (index >= uint32_t(vertices.vertexCount))
       throw std::out_of_range("index " + std::to_string(index) + " past the vertex buffer (" +
@@ -174,7 +178,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   shaded.varyingFloats = varyingFloats;
   shaded.stride = vertex_stage::kVaryingOffset + varyingFloats;
   const size_t records = size_t(vertices.vertexCount) * size_t(instanceCount);
-  shaded.data.resize(records * size_t(shaded.stride));
+  // Grown, never shrunk: a resize back up after a small draw (a fullscreen pass between
+  // two scenes) would zero the whole buffer again, which every record overwrites anyway.
+  if (shaded.data.size() < records * size_t(shaded.stride)) shaded.data.resize(records * size_t(shaded.stride));
   shaded.clipMask.resize(records);
   pool_.parallelFor(instanceCount, [&](int instance) {
     shader->shadeVertices(vertices, instance, instance * vertices.vertexCount, viewport_, shaded);

@@ -68,26 +68,22 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
                       int instance, int recordBase, const ViewportTransform& vp, ShadedVertices& out) {
   constexpr int kLanes = F::kCount;
   constexpr int kVaryings = varyingFloatCount<Program>();
-  // Attribute planes, fetched straight into lanes: locations and components the streams
-  // do not feed read (0, 0, 0, 1); per-instance values are the same in every lane. Lanes
-  // past `count` repeat the group's first vertex.
-  alignas(32) float in[kMaxVertexAttributes][4][kLanes];
-  for (int a = 0; a < kMaxVertexAttributes; ++a)
-    for (int c = 0; c < 4; ++c) std::fill_n(in[a][c], kLanes, c == 3 ? 1.0f : 0.0f);
-  for (const AttributeLayout& attr : stream.attributes) {
-    for (int lane = 0; lane < kLanes; ++lane) {
-      const float* src = stream.vertices + size_t(first + (lane < count ? lane : 0)) * size_t(stream.strideFloats);
-      for (int c = 0; c < attr.components; ++c) in[attr.location][c][lane] = src[attr.offsetFloats + c];
-    }
-  }
+  // Attribute planes, built in registers: locations and components the streams do not feed
+  // read (0, 0, 0, 1); per-vertex components are gathered lane by lane (lanes past `count`
+  // repeat the group's first vertex); per-instance values are the same in every lane.
+  VertexInput<F> input;
+  for (int a = 0; a < kMaxVertexAttributes; ++a) input.attribute[a] = glsl::vec4<F>(F(0.0f), F(0.0f), F(0.0f), F(1.0f));
+  auto component = [](glsl::vec4<F>& v, int c) -> F& { return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w; };
+  alignas(32) int vertexOffset[kLanes];
+  for (int lane = 0; lane < kLanes; ++lane) vertexOffset[lane] = (first + (lane < count ? lane : 0)) * stream.strideFloats;
+  for (const AttributeLayout& attr : stream.attributes)
+    for (int c = 0; c < attr.components; ++c)
+      component(input.attribute[attr.location], c) = F::gather(stream.vertices + attr.offsetFloats + c, vertexOffset);
   if (stream.instances) {
     const float* src = stream.instances + size_t(instance) * size_t(stream.instanceStrideFloats);
     for (const AttributeLayout& attr : stream.instanceAttributes)
-      for (int c = 0; c < attr.components; ++c) std::fill_n(in[attr.location][c], kLanes, src[attr.offsetFloats + c]);
+      for (int c = 0; c < attr.components; ++c) component(input.attribute[attr.location], c) = F(src[attr.offsetFloats + c]);
   }
-  VertexInput<F> input;
-  for (int a = 0; a < kMaxVertexAttributes; ++a)
-    input.attribute[a] = glsl::vec4<F>(F::load(in[a][0]), F::load(in[a][1]), F::load(in[a][2]), F::load(in[a][3]));
   input.gl_InstanceID = F(float(instance));
 
   glsl::vec4<F> position;

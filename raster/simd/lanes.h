@@ -46,6 +46,8 @@ struct Lanes {
   Lanes() = default;
   Lanes(float s) { for (int i = 0; i < N; ++i) lane[i] = s; }  // NOLINT: broadcast, as GLSL scalars
   static Lanes load(const float* p) { Lanes r; std::memcpy(r.lane, p, sizeof r.lane); return r; }
+  // Lane i reads base[index[i]].
+  static Lanes gather(const float* base, const int* index) { Lanes r; for (int i = 0; i < N; ++i) r.lane[i] = base[index[i]]; return r; }
   void store(float* p) const { std::memcpy(p, lane, sizeof lane); }
   float operator[](int i) const { return lane[i]; }
   float& operator[](int i) { return lane[i]; }
@@ -134,6 +136,9 @@ struct Float8 {
   Float8(float s) : v(_mm256_set1_ps(s)) {}  // NOLINT: broadcast, as GLSL scalars
   explicit Float8(__m256 x) : v(x) {}
   static Float8 load(const float* p) { return Float8(_mm256_loadu_ps(p)); }
+  static Float8 gather(const float* base, const int* index) {   // lane i reads base[index[i]]
+    return Float8(_mm256_i32gather_ps(base, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(index)), 4));
+  }
   void store(float* p) const { _mm256_storeu_ps(p, v); }
   float operator[](int i) const { alignas(32) float t[8]; _mm256_store_ps(t, v); return t[i]; }
 

@@ -207,14 +207,20 @@ inline void writeRgba8Rows(const glsl::vec4<simd::Float8>& color, uint8_t* texel
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[0] * 4), _mm256_castsi256_si128(rows));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[2] * 4), _mm256_extracti128_si256(rows, 1));
 }
-inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel) {
+// With `additive`, each texel gets writeHalfTexels' blend: its stored value plus the colour.
+inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texels, const size_t* texel,
+                          bool additive = false) {
   __m256 v[4];
   lanesToTexels(color, v);
+  auto write = [&](size_t at, __m256 value) {
+    __m128i* dst = reinterpret_cast<__m128i*>(texels + at * 4);
+    if (additive) value = _mm256_add_ps(_mm256_cvtph_ps(_mm_loadu_si128(dst)), value);
+    _mm_storeu_si128(dst, _mm256_cvtps_ph(value, _MM_FROUND_TO_ZERO));
+  };
   // Lanes k, k + 1 (k = 0, 2) and k + 4, k + 5: neighbouring texels.
   for (int k = 0; k < 4; k += 2) {
-    const __m256 left = _mm256_permute2f128_ps(v[k], v[k + 1], 0x20), right = _mm256_permute2f128_ps(v[k], v[k + 1], 0x31);
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[k] * 4), _mm256_cvtps_ph(left, _MM_FROUND_TO_ZERO));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[k + 4] * 4), _mm256_cvtps_ph(right, _MM_FROUND_TO_ZERO));
+    write(texel[k], _mm256_permute2f128_ps(v[k], v[k + 1], 0x20));
+    write(texel[k + 4], _mm256_permute2f128_ps(v[k], v[k + 1], 0x31));
   }
 }
 
@@ -253,9 +259,9 @@ inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t*
 #endif
 }
 inline void writeHalfRowsPair(const glsl::vec4<simd::Float8x2>& color, uint16_t* texels, const size_t* first,
-                              const size_t* second) {
-  writeHalfRows(lowGroup(color), texels, first);
-  writeHalfRows(highGroup(color), texels, second);
+                              const size_t* second, bool additive = false) {
+  writeHalfRows(lowGroup(color), texels, first, additive);
+  writeHalfRows(highGroup(color), texels, second, additive);
 }
 #endif
 

@@ -94,7 +94,7 @@ TEST_SUITE("format") {
     CHECK(compared == 2000);
   }
 #if RASTER_AVX2
-  TEST_CASE("whole groups stored a row at a time, alone or as a pair, equal the per-lane writes") {
+  TEST_CASE("whole groups stored or blended a row at a time, alone or as a pair, equal the per-lane writes") {
     using raster::simd::Float8;
     using raster::simd::Float8x2;
     const std::vector<float> values = interestingValues();
@@ -141,6 +141,15 @@ TEST_SUITE("format") {
       raster::output_merge::writeHalfRows(group(0), rows16.data(), first);
       raster::output_merge::writeHalfRows(group(1), rows16.data(), second);
       raster::output_merge::writeHalfRowsPair(pair, pair16.data(), first, second);
+      CHECK(rows16 == expected16);
+      CHECK(pair16 == expected16);
+
+      // Additive blending onto those texels: each its stored value plus the colour again.
+      raster::output_merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, true);
+      raster::output_merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, true);
+      raster::output_merge::writeHalfRows(group(0), rows16.data(), first, true);
+      raster::output_merge::writeHalfRows(group(1), rows16.data(), second, true);
+      raster::output_merge::writeHalfRowsPair(pair, pair16.data(), first, second, true);
       CHECK(rows16 == expected16);
       CHECK(pair16 == expected16);
     }

@@ -235,9 +235,11 @@ void writeColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t*
                       bool blendAdditive) {
 #if RASTER_AVX2
   if constexpr (std::is_same_v<F, simd::Float8>) {
-    if (laneMask == 0xFFu && !blendAdditive) {
-      if (target.format == TexelFormat::RGBA8) return output_merge::writeRgba8Rows(color, target.rgba8.data(), texel);
-      if (target.format == TexelFormat::RGBA16F) return output_merge::writeHalfRows(color, target.half.data(), texel);
+    if (laneMask == 0xFFu) {
+      if (target.format == TexelFormat::RGBA8 && !blendAdditive)
+        return output_merge::writeRgba8Rows(color, target.rgba8.data(), texel);
+      if (target.format == TexelFormat::RGBA16F)
+        return output_merge::writeHalfRows(color, target.half.data(), texel, blendAdditive);
     }
   }
 #endif
@@ -522,8 +524,8 @@ bool shadeCoveredTile(const TileJob& job, int tileX0, int tileY0, int tileX1, in
         const glsl::vec4<Float8x2>& c = out.color[k];
         if (!additive && target.format == TexelFormat::RGBA8) {
           output_merge::writeRgba8RowsPair(c, target.rgba8.data(), upper, lower);
-        } else if (!additive && target.format == TexelFormat::RGBA16F) {
-          output_merge::writeHalfRowsPair(c, target.half.data(), upper, lower);
+        } else if (target.format == TexelFormat::RGBA16F) {
+          output_merge::writeHalfRowsPair(c, target.half.data(), upper, lower, additive);
         } else {
           writeColorOutput(target, output_merge::lowGroup(c), upper, 0xFFu, additive);
           writeColorOutput(target, output_merge::highGroup(c), lower, 0xFFu, additive);

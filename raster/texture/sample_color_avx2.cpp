@@ -410,35 +410,88 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
   }
 }
 
-// The 3x3 grid for RGBA16F with LINEAR and CLAMP_TO_EDGE, when every tap of every lane
-// lands one texel after its neighbour and none is clamped: the grid's 2x2 footprints then
-// cover 4x4 texels, loaded once. Returns false (nothing written) otherwise.
+// Where a grid's three taps along one axis find their two texels in each lane's window of
+// four (window texel 0 at the lane's start): lane masks of the taps whose first (second)
+// texel is window texel 1, 2 or 3. A lane in none of them reads window texel 0.
+struct WindowTaps {
+  __m256 first[3][4], second[3][4];   // [tap][window texel], [.][0] unused
+};
+
+// Fills `out`; false when some tap of some lane has a texel outside its window.
+bool tapsInWindow(const LinearTaps8* taps, __m256i start, WindowTaps& out) {
+  __m256i outside = _mm256_setzero_si256();
+  for (int k = 0; k < 3; ++k) {
+    const __m256i at[2] = {_mm256_sub_epi32(taps[k].i0, start), _mm256_sub_epi32(taps[k].i1, start)};
+    for (int side = 0; side < 2; ++side) {
+      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(_mm256_setzero_si256(), at[side]));
+      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(at[side], splat(3)));
+      for (int v = 1; v < 4; ++v)
+        (side ? out.second : out.first)[k][v] = _mm256_castsi256_ps(_mm256_cmpeq_epi32(at[side], splat(v)));
+    }
+  }
+  return _mm256_testz_si256(outside, outside);
+}
+
+// Per lane, the one of w0..w3 that `is` names (is[v]: the lanes that take w_v, v = 1..3).
+[[gnu::always_inline]] inline __m256 pickTexel(const __m256 (&is)[4], __m256 w0, __m256 w1, __m256 w2, __m256 w3) {
+  return _mm256_blendv_ps(_mm256_blendv_ps(_mm256_blendv_ps(w0, w1, is[1]), w2, is[2]), w3, is[3]);
+}
+
+// blendFootprint for each tap of the grid, from the lanes' 4x4 windows, its row blends
+// shared: tap (j, i) blends its two texel rows with x[i]'s weight, and each row of the
+// window is blended once per tap column. With kInPlace, tap k spans window texels k and
+// k + 1 along both axes in every lane; otherwise `wx` and `wy` say which texels it spans.
+template <bool kInPlace>
+[[gnu::always_inline]] inline void blendGridWindow(const __m256 (&texel)[4][4][4], const LinearTaps8* x,
+                                                   const LinearTaps8* y, const WindowTaps* wx, const WindowTaps* wy,
+                                                   simd::Float8 (*taps)[4]) {
+  __m256 row[4][3][4];   // [window row][tap column][channel]
+  for (int r = 0; r < 4; ++r)
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const __m256(&w)[4][4] = texel[r];
+        const __m256 left = kInPlace ? w[i][c] : pickTexel(wx->first[i], w[0][c], w[1][c], w[2][c], w[3][c]);
+        const __m256 right = kInPlace ? w[i + 1][c] : pickTexel(wx->second[i], w[0][c], w[1][c], w[2][c], w[3][c]);
+        row[r][i][c] = _mm256_fmadd_ps(x[i].weight, _mm256_sub_ps(right, left), left);
+      }
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 4; ++c) {
+        const __m256 top = kInPlace ? row[j][i][c] : pickTexel(wy->first[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
+        const __m256 bottom =
+            kInPlace ? row[j + 1][i][c] : pickTexel(wy->second[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
+        taps[j * 3 + i][c] = simd::Float8(_mm256_fmadd_ps(y[j].weight, _mm256_sub_ps(bottom, top), top));
+      }
+}
+
+// The 3x3 grid for RGBA16F with LINEAR and CLAMP_TO_EDGE, when every lane's nine 2x2
+// footprints lie in one 4x4 window of texels, loaded once: the window starts at tap 0's
+// first texel, moved in from the right and bottom edges so it stays inside. Usually tap k
+// then spans window texels k and k + 1; near an edge, where clamping piles taps onto the
+// same texels, each lane picks the texels its taps span. Returns false (nothing written)
+// when some footprint leaves the window (a step that is not one texel) or the texture is
+// smaller than 4x4.
 bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, float stepT, simd::Float8 (*taps)[4]) {
+  if (t.width < 4 || t.height < 4) return false;
   LinearTaps8 x[3], y[3];
   for (int k = 0; k < 3; ++k) {
     x[k] = wrapLinearClampToEdge8(_mm256_add_ps(s, splat(float(k - 1) * stepS)), t.width);
     y[k] = wrapLinearClampToEdge8(_mm256_add_ps(tc, splat(float(k - 1) * stepT)), t.height);
   }
-  if (!tapsAreConsecutive(x, y, 3)) return false;
-  alignas(32) int start[8];   // each lane's top-left texel of the 4x4 neighbourhood
-  _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(y[0].i0, splat(t.width)), x[0].i0));
+  const __m256i startX = _mm256_min_epi32(x[0].i0, splat(t.width - 4));
+  const __m256i startY = _mm256_min_epi32(y[0].i0, splat(t.height - 4));
+  const bool inPlace = tapsAreConsecutive(x, y, 3);   // then start = tap 0's first texel
+  WindowTaps wx, wy;
+  if (!inPlace && !(tapsInWindow(x, startX, wx) && tapsInWindow(y, startY, wy))) return false;
+  alignas(32) int start[8];   // each lane's top-left texel of its window
+  _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(startY, splat(t.width)), startX));
   __m256 texel[4][4][4];   // [row][column][channel]
   for (int r = 0; r < 4; ++r) {
     loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[r][0], texel[r][1]);
     loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, texel[r][2], texel[r][3]);
   }
-  // blendFootprint for each tap, its row blends shared: tap (j, i) blends texel rows j and
-  // j + 1 at columns i, i + 1 with x[i]'s weight, and tap (j + 1, i) blends the same row
-  // j + 1 the same way, so each row's three blends are made once.
-  __m256 row[4][3][4];   // [texel row][tap column][channel]
-  for (int r = 0; r < 4; ++r)
-    for (int i = 0; i < 3; ++i)
-      for (int c = 0; c < 4; ++c)
-        row[r][i][c] = _mm256_fmadd_ps(x[i].weight, _mm256_sub_ps(texel[r][i + 1][c], texel[r][i][c]), texel[r][i][c]);
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      for (int c = 0; c < 4; ++c)
-        taps[j * 3 + i][c] = simd::Float8(_mm256_fmadd_ps(y[j].weight, _mm256_sub_ps(row[j + 1][i][c], row[j][i][c]), row[j][i][c]));
+  if (inPlace) blendGridWindow<true>(texel, x, y, nullptr, nullptr, taps);
+  else blendGridWindow<false>(texel, x, y, &wx, &wy, taps);
   return true;
 }
 

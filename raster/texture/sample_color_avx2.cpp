@@ -437,29 +437,53 @@ bool tapsInWindow(const LinearTaps8* taps, __m256i start, WindowTaps& out) {
   return _mm256_blendv_ps(_mm256_blendv_ps(_mm256_blendv_ps(w0, w1, is[1]), w2, is[2]), w3, is[3]);
 }
 
-// blendFootprint for each tap of the grid, from the lanes' 4x4 windows, its row blends
-// shared: tap (j, i) blends its two texel rows with x[i]'s weight, and each row of the
-// window is blended once per tap column. With kInPlace, tap k spans window texels k and
-// k + 1 along both axes in every lane; otherwise `wx` and `wy` say which texels it spans.
-template <bool kInPlace>
-[[gnu::always_inline]] inline void blendGridWindow(const __m256 (&texel)[4][4][4], const LinearTaps8* x,
-                                                   const LinearTaps8* y, const WindowTaps* wx, const WindowTaps* wy,
-                                                   simd::Float8 (*taps)[4]) {
+// The grid's taps when tap k spans window texels k and k + 1 along both axes in every lane:
+// blendFootprint for each, row by row. A window row's texels give its three row blends (one
+// per tap column, with x[i]'s weight), which with the previous row's make the tap row
+// between them; each row is blended once, and only two rows' blends are live at a time
+// (holding the whole window spilled it to memory: 10% slower).
+[[gnu::always_inline]] inline void blendGridInPlace(const Texture& t, const int* start, const LinearTaps8* x,
+                                                    const LinearTaps8* y, simd::Float8 (*taps)[4]) {
+  __m256 above[3][4];   // the previous window row's blends: [tap column][channel]
+  for (int r = 0; r < 4; ++r) {
+    __m256 texel[4][4];   // window row r: [column][channel]
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[0], texel[1]);
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, texel[2], texel[3]);
+    __m256 row[3][4];
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 4; ++c)
+        row[i][c] = _mm256_fmadd_ps(x[i].weight, _mm256_sub_ps(texel[i + 1][c], texel[i][c]), texel[i][c]);
+    if (r > 0)
+      for (int i = 0; i < 3; ++i)
+        for (int c = 0; c < 4; ++c)
+          taps[(r - 1) * 3 + i][c] =
+              simd::Float8(_mm256_fmadd_ps(y[r - 1].weight, _mm256_sub_ps(row[i][c], above[i][c]), above[i][c]));
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 4; ++c) above[i][c] = row[i][c];
+  }
+}
+
+// The grid's taps near an edge, where `wx` and `wy` say which window texels each tap spans
+// in each lane: the same blends, from the texels each lane picks.
+void blendGridPicked(const Texture& t, const int* start, const LinearTaps8* x, const LinearTaps8* y,
+                     const WindowTaps& wx, const WindowTaps& wy, simd::Float8 (*taps)[4]) {
   __m256 row[4][3][4];   // [window row][tap column][channel]
-  for (int r = 0; r < 4; ++r)
+  for (int r = 0; r < 4; ++r) {
+    __m256 w[4][4];   // window row r: [column][channel]
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width), w[0], w[1]);
+    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, w[2], w[3]);
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c) {
-        const __m256(&w)[4][4] = texel[r];
-        const __m256 left = kInPlace ? w[i][c] : pickTexel(wx->first[i], w[0][c], w[1][c], w[2][c], w[3][c]);
-        const __m256 right = kInPlace ? w[i + 1][c] : pickTexel(wx->second[i], w[0][c], w[1][c], w[2][c], w[3][c]);
+        const __m256 left = pickTexel(wx.first[i], w[0][c], w[1][c], w[2][c], w[3][c]);
+        const __m256 right = pickTexel(wx.second[i], w[0][c], w[1][c], w[2][c], w[3][c]);
         row[r][i][c] = _mm256_fmadd_ps(x[i].weight, _mm256_sub_ps(right, left), left);
       }
+  }
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c) {
-        const __m256 top = kInPlace ? row[j][i][c] : pickTexel(wy->first[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
-        const __m256 bottom =
-            kInPlace ? row[j + 1][i][c] : pickTexel(wy->second[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
+        const __m256 top = pickTexel(wy.first[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
+        const __m256 bottom = pickTexel(wy.second[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
         taps[j * 3 + i][c] = simd::Float8(_mm256_fmadd_ps(y[j].weight, _mm256_sub_ps(bottom, top), top));
       }
 }
@@ -485,13 +509,8 @@ bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, fl
   if (!inPlace && !(tapsInWindow(x, startX, wx) && tapsInWindow(y, startY, wy))) return false;
   alignas(32) int start[8];   // each lane's top-left texel of its window
   _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(startY, splat(t.width)), startX));
-  __m256 texel[4][4][4];   // [row][column][channel]
-  for (int r = 0; r < 4; ++r) {
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[r][0], texel[r][1]);
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, texel[r][2], texel[r][3]);
-  }
-  if (inPlace) blendGridWindow<true>(texel, x, y, nullptr, nullptr, taps);
-  else blendGridWindow<false>(texel, x, y, &wx, &wy, taps);
+  if (inPlace) blendGridInPlace(t, start, x, y, taps);
+  else blendGridPicked(t, start, x, y, wx, wy, taps);
   return true;
 }
 

@@ -48,6 +48,48 @@ inline bool tapsAreConsecutive(const LinearTaps8* x, const LinearTaps8* y, int c
   return _mm256_movemask_ps(_mm256_castsi256_ps(consecutive)) == 0xFF;
 }
 
+// Near an edge, clamping piles a grid's taps onto the same texels, so they are no longer one
+// texel apart; each lane's footprints still lie in a window of count + 1 texels along each
+// axis, started at tap 0's first texel and moved in from the far edge so it stays inside
+// (windowStart). WindowTaps says, per tap and lane, which window texels the tap spans: lane
+// masks of the taps whose first (second) texel is window texel v >= 1 (a lane in none of
+// them takes window texel 0).
+template <int kTaps>
+struct WindowTaps {
+  static constexpr int kWindow = kTaps + 1;
+  __m256 first[kTaps][kWindow], second[kTaps][kWindow];   // [tap][window texel], [.][0] unused
+};
+
+inline __m256i windowStart(const LinearTaps8& tap0, int size, int window) {
+  return _mm256_min_epi32(tap0.i0, _mm256_set1_epi32(size - window));
+}
+
+// Fills `out`; false when some tap of some lane has a texel outside its window.
+template <int kTaps>
+bool tapsInWindow(const LinearTaps8* taps, __m256i start, WindowTaps<kTaps>& out) {
+  constexpr int kWindow = WindowTaps<kTaps>::kWindow;
+  __m256i outside = _mm256_setzero_si256();
+  for (int k = 0; k < kTaps; ++k) {
+    const __m256i at[2] = {_mm256_sub_epi32(taps[k].i0, start), _mm256_sub_epi32(taps[k].i1, start)};
+    for (int side = 0; side < 2; ++side) {
+      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(_mm256_setzero_si256(), at[side]));
+      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(at[side], _mm256_set1_epi32(kWindow - 1)));
+      for (int v = 1; v < kWindow; ++v)
+        (side ? out.second : out.first)[k][v] = _mm256_castsi256_ps(_mm256_cmpeq_epi32(at[side], _mm256_set1_epi32(v)));
+    }
+  }
+  return _mm256_testz_si256(outside, outside);
+}
+
+// Per lane, value(v) of the window texel v that `is` names (a row of WindowTaps::first or
+// ::second).
+template <int kWindow, class Value>
+[[gnu::always_inline]] inline __m256 pickInWindow(const __m256 (&is)[kWindow], Value&& value) {
+  __m256 picked = value(0);
+  for (int v = 1; v < kWindow; ++v) picked = _mm256_blendv_ps(picked, value(v), is[v]);
+  return picked;
+}
+
 // Texels index and index + 1 of each lane, 32 bits each (index + 1 in the same array): one
 // 64-bit gather element per lane (32-bit indices into a 64-bit-element view are byte
 // offsets / 8: scale 4), lanes 0-3 then 4-7, split into the left texels and the right ones

@@ -410,33 +410,6 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
   }
 }
 
-// Where a grid's three taps along one axis find their two texels in each lane's window of
-// four (window texel 0 at the lane's start): lane masks of the taps whose first (second)
-// texel is window texel 1, 2 or 3. A lane in none of them reads window texel 0.
-struct WindowTaps {
-  __m256 first[3][4], second[3][4];   // [tap][window texel], [.][0] unused
-};
-
-// Fills `out`; false when some tap of some lane has a texel outside its window.
-bool tapsInWindow(const LinearTaps8* taps, __m256i start, WindowTaps& out) {
-  __m256i outside = _mm256_setzero_si256();
-  for (int k = 0; k < 3; ++k) {
-    const __m256i at[2] = {_mm256_sub_epi32(taps[k].i0, start), _mm256_sub_epi32(taps[k].i1, start)};
-    for (int side = 0; side < 2; ++side) {
-      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(_mm256_setzero_si256(), at[side]));
-      outside = _mm256_or_si256(outside, _mm256_cmpgt_epi32(at[side], splat(3)));
-      for (int v = 1; v < 4; ++v)
-        (side ? out.second : out.first)[k][v] = _mm256_castsi256_ps(_mm256_cmpeq_epi32(at[side], splat(v)));
-    }
-  }
-  return _mm256_testz_si256(outside, outside);
-}
-
-// Per lane, the one of w0..w3 that `is` names (is[v]: the lanes that take w_v, v = 1..3).
-[[gnu::always_inline]] inline __m256 pickTexel(const __m256 (&is)[4], __m256 w0, __m256 w1, __m256 w2, __m256 w3) {
-  return _mm256_blendv_ps(_mm256_blendv_ps(_mm256_blendv_ps(w0, w1, is[1]), w2, is[2]), w3, is[3]);
-}
-
 // The grid's taps when tap k spans window texels k and k + 1 along both axes in every lane:
 // blendFootprint for each, row by row. A window row's texels give its three row blends (one
 // per tap column, with x[i]'s weight), which with the previous row's make the tap row
@@ -466,7 +439,7 @@ bool tapsInWindow(const LinearTaps8* taps, __m256i start, WindowTaps& out) {
 // The grid's taps near an edge, where `wx` and `wy` say which window texels each tap spans
 // in each lane: the same blends, from the texels each lane picks.
 void blendGridPicked(const Texture& t, const int* start, const LinearTaps8* x, const LinearTaps8* y,
-                     const WindowTaps& wx, const WindowTaps& wy, simd::Float8 (*taps)[4]) {
+                     const WindowTaps<3>& wx, const WindowTaps<3>& wy, simd::Float8 (*taps)[4]) {
   __m256 row[4][3][4];   // [window row][tap column][channel]
   for (int r = 0; r < 4; ++r) {
     __m256 w[4][4];   // window row r: [column][channel]
@@ -474,16 +447,16 @@ void blendGridPicked(const Texture& t, const int* start, const LinearTaps8* x, c
     loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, w[2], w[3]);
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c) {
-        const __m256 left = pickTexel(wx.first[i], w[0][c], w[1][c], w[2][c], w[3][c]);
-        const __m256 right = pickTexel(wx.second[i], w[0][c], w[1][c], w[2][c], w[3][c]);
+        const __m256 left = pickInWindow(wx.first[i], [&](int v) { return w[v][c]; });
+        const __m256 right = pickInWindow(wx.second[i], [&](int v) { return w[v][c]; });
         row[r][i][c] = _mm256_fmadd_ps(x[i].weight, _mm256_sub_ps(right, left), left);
       }
   }
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c) {
-        const __m256 top = pickTexel(wy.first[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
-        const __m256 bottom = pickTexel(wy.second[j], row[0][i][c], row[1][i][c], row[2][i][c], row[3][i][c]);
+        const __m256 top = pickInWindow(wy.first[j], [&](int v) { return row[v][i][c]; });
+        const __m256 bottom = pickInWindow(wy.second[j], [&](int v) { return row[v][i][c]; });
         taps[j * 3 + i][c] = simd::Float8(_mm256_fmadd_ps(y[j].weight, _mm256_sub_ps(bottom, top), top));
       }
 }
@@ -502,10 +475,9 @@ bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, fl
     x[k] = wrapLinearClampToEdge8(_mm256_add_ps(s, splat(float(k - 1) * stepS)), t.width);
     y[k] = wrapLinearClampToEdge8(_mm256_add_ps(tc, splat(float(k - 1) * stepT)), t.height);
   }
-  const __m256i startX = _mm256_min_epi32(x[0].i0, splat(t.width - 4));
-  const __m256i startY = _mm256_min_epi32(y[0].i0, splat(t.height - 4));
+  const __m256i startX = windowStart(x[0], t.width, 4), startY = windowStart(y[0], t.height, 4);
   const bool inPlace = tapsAreConsecutive(x, y, 3);   // then start = tap 0's first texel
-  WindowTaps wx, wy;
+  WindowTaps<3> wx, wy;
   if (!inPlace && !(tapsInWindow(x, startX, wx) && tapsInWindow(y, startY, wy))) return false;
   alignas(32) int start[8];   // each lane's top-left texel of its window
   _mm256_store_si256(reinterpret_cast<__m256i*>(start), _mm256_add_epi32(_mm256_mullo_epi32(startY, splat(t.width)), startX));

@@ -112,21 +112,25 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
 namespace {
 
 // The grid of PCF taps at once, for N lane groups. Each tap's coordinate and weights are
-// computed as a lone lookup computes them; when every tap of every lane of a group lands on
-// the next texel of its neighbour and none is clamped at an edge, its taps share one
-// (2R + 2)^2 texel neighbourhood: loaded once, compared once per texel, and each tap
-// blends its own 2x2 of those compare results with its own weights, as compareLinearClamp8
-// would. Otherwise (an edge, or rounding that moves a tap) every tap of that group is a
-// lone lookup. With N = 2 both groups' rows are loaded before either blends, so their
-// cache misses overlap. The radius is a template argument so that the arrays below are
-// exactly the grid's size and its loops unroll (a 3x3 grid's compare results stay in
-// registers instead of a 6x6 array on the stack).
+// computed as a lone lookup computes them, and each group's taps share one (2R + 2)^2 texel
+// window per lane: loaded once, compared once per texel, and each tap blends its own 2x2 of
+// those compare results with its own weights, as compareLinearClamp8 would. Usually every
+// tap lands on the next texel of its neighbour; near an edge, where clamping piles taps onto
+// the same texels (a shadow coordinate outside the map clamps them all), each lane picks the
+// compare results of the texels its taps span. Only a group whose footprints leave the
+// window (rounding that moves a tap) or a map smaller than the window takes lone lookups.
+// With N = 2 both groups' rows are loaded before either blends, so their cache misses
+// overlap. The radius is a template argument so that the arrays below are exactly the
+// grid's size and its loops unroll (a 3x3 grid's compare results stay in registers instead
+// of a 6x6 array on the stack).
 template <int N, int R>
 void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float8* t, float step, const simd::Float8* ref8,
                   simd::Float8* const* taps) {
   constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
   LinearTaps8 x[N][count], y[N][count];
-  bool shared[N];
+  __m256i startX[N], startY[N];
+  bool shared[N], picked[N];
+  WindowTaps<count> wx[N], wy[N];
   for (int h = 0; h < N; ++h) {
     for (int k = 0; k < count; ++k) {
       // uv + vec2(i, j) * step: the offset is exact, the sum rounds as the shader's does.
@@ -134,8 +138,12 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
       x[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(s[h].v, offset), depth.width);
       y[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(t[h].v, offset), depth.height);
     }
+    startX[h] = windowStart(x[h][0], depth.width, texels);   // tap 0's first texel where shared
+    startY[h] = windowStart(y[h][0], depth.height, texels);
     shared[h] = tapsAreConsecutive(x[h], y[h], count);
-    if (shared[h]) continue;
+    picked[h] = !shared[h] && depth.width >= texels && depth.height >= texels &&
+                tapsInWindow<count>(x[h], startX[h], wx[h]) && tapsInWindow<count>(y[h], startY[h], wy[h]);
+    if (shared[h] || picked[h]) continue;
     for (int j = 0; j < count; ++j)
       for (int i = 0; i < count; ++i)
         taps[h][j * count + i] =
@@ -150,16 +158,16 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
   for (int h = 0; h < N; ++h) {
     ref[h] = clampRef(ref8[h].v);
     _mm256_store_si256(reinterpret_cast<__m256i*>(start[h]),
-                       _mm256_add_epi32(_mm256_mullo_epi32(y[h][0].i0, _mm256_set1_epi32(depth.width)), x[h][0].i0));
+                       _mm256_add_epi32(_mm256_mullo_epi32(startY[h], _mm256_set1_epi32(depth.width)), startX[h]));
   }
   // passes[h][r][c]: ref <= texel (r, c) of group h's neighbourhood, per lane.
   __m256 passes[N][texels][texels];
   for (int r = 0; r < texels; ++r) {
     const size_t rowOffset = size_t(r) * size_t(depth.width);
     for (int h = 0; h < N; ++h) {
-      if (!shared[h]) continue;
+      if (!shared[h] && !picked[h]) continue;
       // Columns 0-3 of the row, then (for 6 texels) columns 2-5: two 16-byte loads per lane
-      // that stay inside the row, since the last tap was not clamped.
+      // that stay inside the row, as the window does.
       for (int first = 0; first < texels; first += 2) {
         if (first + 4 > texels) break;
         __m256i v[4];   // v[k]: lane k's four codes low, lane k + 4's high
@@ -176,6 +184,25 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
     }
   }
   for (int h = 0; h < N; ++h) {
+    if (picked[h]) {
+      // The same blends from each lane's picks: a window row's blend for tap column i from
+      // the compare results of the two columns the tap spans, then a tap from the two rows.
+      __m256 rowBlend[texels][count];
+      for (int r = 0; r < texels; ++r)
+        for (int i = 0; i < count; ++i) {
+          const __m256 w = x[h][i].weight, oneMinusW = _mm256_sub_ps(_mm256_set1_ps(1.0f), w);
+          const __m256 left = pickInWindow(wx[h].first[i], [&](int v) { return passes[h][r][v]; });
+          const __m256 right = pickInWindow(wx[h].second[i], [&](int v) { return passes[h][r][v]; });
+          rowBlend[r][i] = _mm256_add_ps(_mm256_and_ps(w, right), _mm256_and_ps(oneMinusW, left));
+        }
+      for (int j = 0; j < count; ++j)
+        for (int i = 0; i < count; ++i) {
+          const __m256 r0 = pickInWindow(wy[h].first[j], [&](int v) { return rowBlend[v][i]; });
+          const __m256 r1 = pickInWindow(wy[h].second[j], [&](int v) { return rowBlend[v][i]; });
+          taps[h][j * count + i] = simd::Float8(_mm256_fmadd_ps(y[h][j].weight, _mm256_sub_ps(r1, r0), r0));
+        }
+      continue;
+    }
     if (!shared[h]) continue;
     for (int j = 0; j < count; ++j) {
       for (int i = 0; i < count; ++i) {

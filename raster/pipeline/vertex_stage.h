@@ -75,14 +75,16 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
   for (int a = 0; a < kMaxVertexAttributes; ++a) input.attribute[a] = glsl::vec4<F>(F(0.0f), F(0.0f), F(0.0f), F(1.0f));
   auto component = [](glsl::vec4<F>& v, int c) -> F& { return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w; };
   alignas(32) int vertexOffset[kLanes];
-  for (int lane = 0; lane < kLanes; ++lane) vertexOffset[lane] = (first + (lane < count ? lane : 0)) * stream.strideFloats;
+  for (int lane = 0; lane < kLanes; ++lane)
+    vertexOffset[lane] = (first + (lane < count ? lane : 0)) * stream.strideFloats;   // Renderer::draw bounds it
   for (const AttributeLayout& attr : stream.attributes)
     for (int c = 0; c < attr.components; ++c)
       component(input.attribute[attr.location], c) = F::gather(stream.vertices + attr.offsetFloats + c, vertexOffset);
   if (stream.instances) {
     const float* src = stream.instances + size_t(instance) * size_t(stream.instanceStrideFloats);
     for (const AttributeLayout& attr : stream.instanceAttributes)
-      for (int c = 0; c < attr.components; ++c) component(input.attribute[attr.location], c) = F(src[attr.offsetFloats + c]);
+      for (int c = 0; c < attr.components; ++c)
+        component(input.attribute[attr.location], c) = F(src[attr.offsetFloats + c]);
   }
   input.gl_InstanceID = F(float(instance));
 

@@ -46,8 +46,11 @@ struct Lanes {
   Lanes() = default;
   Lanes(float s) { for (int i = 0; i < N; ++i) lane[i] = s; }  // NOLINT: broadcast, as GLSL scalars
   static Lanes load(const float* p) { Lanes r; std::memcpy(r.lane, p, sizeof r.lane); return r; }
-  // Lane i reads base[index[i]].
-  static Lanes gather(const float* base, const int* index) { Lanes r; for (int i = 0; i < N; ++i) r.lane[i] = base[index[i]]; return r; }
+  static Lanes gather(const float* base, const int* index) {   // lane i reads base[index[i]]
+    Lanes r;
+    for (int i = 0; i < N; ++i) r.lane[i] = base[index[i]];
+    return r;
+  }
   void store(float* p) const { std::memcpy(p, lane, sizeof lane); }
   float operator[](int i) const { return lane[i]; }
   float& operator[](int i) { return lane[i]; }

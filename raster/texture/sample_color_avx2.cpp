@@ -410,6 +410,12 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
   }
 }
 
+// Row r of each lane's 4x4 texel window (from texel start[lane]), as planes: [column][channel].
+[[gnu::always_inline]] inline void loadWindowRow(const Texture& t, const int* start, int r, __m256 (&row)[4][4]) {
+  loadHalfPairs(t, start, size_t(r) * size_t(t.width), row[0], row[1]);
+  loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, row[2], row[3]);
+}
+
 // The grid's taps when tap k spans window texels k and k + 1 along both axes in every lane:
 // blendFootprint for each, row by row. A window row's texels give its three row blends (one
 // per tap column, with x[i]'s weight), which with the previous row's make the tap row
@@ -420,8 +426,7 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
   __m256 above[3][4];   // the previous window row's blends: [tap column][channel]
   for (int r = 0; r < 4; ++r) {
     __m256 texel[4][4];   // window row r: [column][channel]
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width), texel[0], texel[1]);
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, texel[2], texel[3]);
+    loadWindowRow(t, start, r, texel);
     __m256 row[3][4];
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c)
@@ -443,8 +448,7 @@ void blendGridPicked(const Texture& t, const int* start, const LinearTaps8* x, c
   __m256 row[4][3][4];   // [window row][tap column][channel]
   for (int r = 0; r < 4; ++r) {
     __m256 w[4][4];   // window row r: [column][channel]
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width), w[0], w[1]);
-    loadHalfPairs(t, start, size_t(r) * size_t(t.width) + 2, w[2], w[3]);
+    loadWindowRow(t, start, r, w);
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < 4; ++c) {
         const __m256 left = pickInWindow(wx.first[i], [&](int v) { return w[v][c]; });

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "raster/format/conversions.h"
-#include "raster/pipeline/renderer.h"
+#include "raster/texture/format.h"
+#include "raster/renderer.h"
 #include "scenes/backends.h"
 #include "scenes/program_registry.h"
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "tests/gl_compare_helpers.h"
 
 namespace {

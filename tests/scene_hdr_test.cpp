@@ -28,7 +28,7 @@
 
 #include "compare/image_io.h"
 #include "compare/metrics.h"
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "tests/gl_compare_helpers.h"
 #include "tests/scene_test_helpers.h"
 

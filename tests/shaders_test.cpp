@@ -7,7 +7,7 @@
 #include <cstring>
 #include <random>
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "raster/texture/sampler.h"
 #include "tests/gl_compare_helpers.h"
 

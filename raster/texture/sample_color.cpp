@@ -17,7 +17,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {

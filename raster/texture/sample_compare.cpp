@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/sampler.h"
 

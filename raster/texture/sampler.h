@@ -4,7 +4,7 @@
 
 #include <type_traits>
 
-#include "raster/framebuffer/texture.h"
+#include "raster/texture/texture.h"
 #include "raster/simd/glsl.h"
 
 namespace raster {

@@ -2,7 +2,7 @@
 // line. The material branch is on a uniform, so it is a plain `if`.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::deferred {
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/deferred/post.h"
 
 namespace shaders::deferred {

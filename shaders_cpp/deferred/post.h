@@ -1,7 +1,7 @@
 // C++ port of post.vert, the fullscreen pass vertex shader the SSAO and lighting passes share.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::deferred {
 

@@ -4,7 +4,7 @@
 // GLSL would take, which gives the same values lane by lane.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/deferred/post.h"
 
 namespace shaders::deferred {

@@ -2,7 +2,7 @@
 // line. 1.0 / (1.0 + luma) is GLSL IR's rcp, which llvmpipe computes as a true division.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {

@@ -3,7 +3,7 @@
 // float32, so pow(mapped, vec3(g)) has a constant exponent: pow<g> (gl_math.h).
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {

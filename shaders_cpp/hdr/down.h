@@ -6,7 +6,7 @@
 // order. Measured: a + b + c + d of four varyings is (a + b) + (c + d) in 4096 of 4096 cases.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {

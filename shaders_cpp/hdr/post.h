@@ -3,7 +3,7 @@
 
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::hdr {
 

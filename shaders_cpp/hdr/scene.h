@@ -16,7 +16,7 @@
 
 #include <cmath>
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::hdr {
 

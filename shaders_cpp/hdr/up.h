@@ -4,7 +4,7 @@
 // (see down.h), so the port adds in that order.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {

@@ -4,7 +4,7 @@
 // u_proj * u_view * world is (u_proj * u_view) * world, as written.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::shadow {
 

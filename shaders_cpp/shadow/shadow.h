@@ -1,7 +1,7 @@
 // C++ port of shadow.vert / shadow.frag (08 - The Shadow Map, shadow pass), line by line.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::shadow {
 

@@ -2,7 +2,7 @@
 // fragment at an interpolated (u, v).
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

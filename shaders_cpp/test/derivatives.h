@@ -5,7 +5,7 @@
 // bit-exact against a literal port.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

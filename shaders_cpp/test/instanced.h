@@ -2,7 +2,7 @@
 // gl_InstanceID. Used by the instancing test (tests/hdr_test.cpp).
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

@@ -4,7 +4,7 @@
 // to x * x, see raster/simd/gl_math.h); a varying exponent is the run-time pow.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

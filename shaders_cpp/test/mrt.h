@@ -1,7 +1,7 @@
 // C++ port of mrt.vert / mrt.frag: one draw, three colour outputs (MRT).
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

@@ -2,7 +2,7 @@
 // Used by the GL-comparison tests of coverage, depth and interpolation.
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

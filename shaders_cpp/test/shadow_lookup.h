@@ -2,7 +2,7 @@
 // lookup per fragment at an interpolated (u, v, ref).
 #pragma once
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace shaders::test {
 

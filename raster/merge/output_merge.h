@@ -8,8 +8,8 @@
 
 #include <cstdint>
 
-#include "raster/format/conversions.h"
-#include "raster/framebuffer/texture.h"
+#include "raster/texture/format.h"
+#include "raster/texture/texture.h"
 #include "raster/simd/glsl.h"
 
 namespace raster::output_merge {

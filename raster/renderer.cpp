@@ -1,5 +1,5 @@
 // Passes, draws and binning; rasterization of the binned tiles in parallel (renderer.h).
-#include "raster/pipeline/renderer.h"
+#include "raster/renderer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "raster/format/conversions.h"
-#include "raster/pipeline/clip.h"
-#include "raster/pipeline/raster_tile.h"
+#include "raster/texture/format.h"
+#include "raster/geometry/clip.h"
+#include "raster/tile/rasterize_tile.h"
 #include "raster/util/cycles.h"
 
 namespace raster {

@@ -1,13 +1,13 @@
 // Triangle setup: snapping, orientation, culling, edge functions, planes, polygon offset.
 // Sources: llvmpipe lp_setup_tri.c (calc_fixed_position, triangle_both, do_triangle_ccw)
 // and lp_state_setup.c (init_args, calc_coef4, lp_do_offset_tri). See setup.h.
-#include "raster/pipeline/setup.h"
+#include "raster/geometry/setup.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "raster/format/conversions.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/texture/format.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster {
 namespace {

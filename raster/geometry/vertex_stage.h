@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/pipeline/program.h"
+#include "raster/shader/program.h"
 
 namespace raster {
 

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster::clip {
 

@@ -1,4 +1,4 @@
-// Unit tests of raster/format/conversions.h at every rounding boundary, against independent
+// Unit tests of raster/texture/format.h at every rounding boundary, against independent
 // models (double-precision arithmetic that is exact where it is used, and the CPU's F16C
 // conversions), plus confirmations against GL (llvmpipe) for the render-target writes.
 //
@@ -18,7 +18,7 @@
 #include "raster/simd/intrinsics.h"
 #endif
 
-#include "raster/format/conversions.h"
+#include "raster/texture/format.h"
 #include "tests/gl_compare_helpers.h"
 
 namespace {

@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "raster/pipeline/program.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/shader/program.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster {
 

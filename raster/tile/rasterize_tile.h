@@ -25,7 +25,7 @@
 
 #include <span>
 
-#include "raster/pipeline/renderer.h"
+#include "raster/renderer.h"
 
 namespace raster {
 

@@ -18,10 +18,10 @@
 #include <span>
 #include <vector>
 
-#include "raster/framebuffer/texture.h"
-#include "raster/pipeline/setup.h"
-#include "raster/pipeline/shader_instance.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/texture/texture.h"
+#include "raster/geometry/setup.h"
+#include "raster/shader/shader_instance.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/util/parallel.h"
 
 namespace raster {

@@ -1,5 +1,5 @@
 // Homogeneous triangle clipping, ported from Mesa draw_pipe_clip.c (see clip.h).
-#include "raster/pipeline/clip.h"
+#include "raster/geometry/clip.h"
 
 #include <cmath>
 #include <utility>

@@ -2,7 +2,7 @@
 // Sources: llvmpipe lp_rast_tri_tmp.h (block coverage), lp_bld_interp.c (plane evaluation:
 // fmuladd(dady, y, fmuladd(dadx, x, a0)), perspective via an exact 1/w), lp_state_fs.c
 // (depth clamp, early depth test), lp_bld_conv.c / lp_bld_blend.c (output conversion).
-#include "raster/pipeline/raster_tile.h"
+#include "raster/tile/rasterize_tile.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -14,8 +14,8 @@
 #include "raster/simd/intrinsics.h"
 #endif
 
-#include "raster/format/conversions.h"
-#include "raster/pipeline/output_merge.h"
+#include "raster/texture/format.h"
+#include "raster/merge/output_merge.h"
 #include "raster/util/cycles.h"
 
 namespace raster {

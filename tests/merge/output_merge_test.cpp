@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "raster/pipeline/output_merge.h"
+#include "raster/merge/output_merge.h"
 
 namespace {
 

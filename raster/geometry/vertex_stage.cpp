@@ -1,5 +1,5 @@
 // Clip flags of shaded vertices (see vertex_stage.h).
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 
 #include <cmath>
 

@@ -37,7 +37,7 @@ void checkVertexAgrees(const typename Program::Uniforms& u, std::mt19937& rng) {
   std::uniform_real_distribution<float> value(-3.0f, 3.0f);
   raster::VertexInput<Fast> fastIn;
   raster::VertexInput<Plain> plainIn;
-  for (int a = 0; a < raster::kMaxVertexAttributes; ++a) {
+  for (int a = 0; a < raster::limits::kMaxVertexAttributes; ++a) {
     float comps[4][8];
     for (auto& c : comps)
       for (float& x : c) x = value(rng);
@@ -80,7 +80,7 @@ void checkFragmentAgrees(const typename Program::Uniforms& u, std::mt19937& rng,
   for (auto& group : lanes)
     for (int i = 0; i < n; ++i)
       for (float& x : group[i]) x = value(rng);
-  float plain[2][raster::kMaxColorOutputs][4][8];
+  float plain[2][raster::limits::kMaxColorOutputs][4][8];
   for (int g = 0; g < 2; ++g) {
     Plain pv[n > 0 ? n : 1];
     for (int i = 0; i < n; ++i) pv[i] = lanesFrom<Plain>(lanes[g][i]);

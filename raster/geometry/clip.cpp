@@ -7,9 +7,13 @@
 namespace raster::clip {
 namespace {
 
-using vertex_stage::kClipOffset;
-using vertex_stage::kVaryingOffset;
-using vertex_stage::kWindowOffset;
+using vertex_record::kClip;
+using vertex_record::kVaryings;
+using vertex_record::kWindow;
+
+
+
+
 
 // draw_context.c: the six view-volume planes, in clip-mask bit order.
 constexpr float kPlanes[6][4] = {
@@ -18,7 +22,7 @@ constexpr float kPlanes[6][4] = {
 
 // draw_pipe_clip.c dot4: left to right, in float.
 float planeDistance(const float* record, int plane) {
-  const float* p = record + kClipOffset;
+  const float* p = record + kClip;
   const float* n = kPlanes[plane];
   return p[0] * n[0] + p[1] * n[1] + p[2] * n[2] + p[3] * n[3];
 }
@@ -28,19 +32,19 @@ bool isInfOrNan(float x) { return !std::isfinite(x); }
 }  // namespace
 
 Clipper::Clipper(int varyingFloats, const ViewportTransform& viewport)
-    : stride_(kVaryingOffset + varyingFloats), viewport_(viewport) {
-  scratch_.resize(size_t(kMaxPolygonVertices + 1) * size_t(stride_));
+    : stride_(kVaryings + varyingFloats), viewport_(viewport) {
+  scratch_.resize(size_t(limits::kMaxClippedVertices + 1) * size_t(stride_));
 }
 
 // draw_pipe_clip.c interp(): LINTERP(t, out, in) = out + t * (in - out) on every float.
 const float* Clipper::interpolate(float t, const float* out, const float* in) {
   float* dst = scratch_.data() + size_t(scratchUsed_++) * size_t(stride_);
-  for (int c = 0; c < 4; ++c) dst[kClipOffset + c] = out[kClipOffset + c] + t * (in[kClipOffset + c] - out[kClipOffset + c]);
-  const float* pos = dst + kClipOffset;
+  for (int c = 0; c < 4; ++c) dst[kClip + c] = out[kClip + c] + t * (in[kClip + c] - out[kClip + c]);
+  const float* pos = dst + kClip;
   const float oow = 1.0f / pos[3];
-  for (int c = 0; c < 3; ++c) dst[kWindowOffset + c] = pos[c] * oow * viewport_.scale[c] + viewport_.translate[c];
-  dst[kWindowOffset + 3] = oow;
-  for (int v = kVaryingOffset; v < stride_; ++v) dst[v] = out[v] + t * (in[v] - out[v]);
+  for (int c = 0; c < 3; ++c) dst[kWindow + c] = pos[c] * oow * viewport_.scale[c] + viewport_.translate[c];
+  dst[kWindow + 3] = oow;
+  for (int v = kVaryings; v < stride_; ++v) dst[v] = out[v] + t * (in[v] - out[v]);
   return dst;
 }
 

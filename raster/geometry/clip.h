@@ -16,16 +16,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/geometry/vertex_stage.h"
+#include "raster/contract.h"
 
 namespace raster::clip {
 
-// Up to 2 * 6 + 1 vertices (MAX_CLIPPED_VERTICES) can be made for one triangle.
-constexpr int kMaxPolygonVertices = 2 * 6 + 1;
-
 struct Polygon {
   int count = 0;
-  const float* vertex[kMaxPolygonVertices + 1];  // records (ShadedVertices layout)
+  const float* vertex[limits::kMaxClippedVertices + 1];  // records (ShadedVertices layout)
 };
 
 class Clipper {

@@ -7,13 +7,14 @@
 #include <cmath>
 
 #include "raster/texture/format.h"
-#include "raster/geometry/vertex_stage.h"
 
 namespace raster {
 namespace {
 
-constexpr int kFixedOrder = 8;                 // FIXED_ORDER: 8 sub-pixel bits
-constexpr float kFixedOne = float(1 << kFixedOrder);
+using vertex_record::kVaryings;
+using vertex_record::kWindow;
+constexpr int kFixedOrder = limits::kSubPixelBits;   // FIXED_ORDER
+constexpr float kFixedOne = float(limits::kSubPixelOne);
 
 struct FixedTriangle {
   int32_t x[3], y[3];
@@ -58,17 +59,14 @@ float polygonOffsetUnits(float units, int depthBits) {
   return float(double(units) * mrd * 2.0);
 }
 
-bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, uint32_t drawIndex,
-                   std::vector<SetupTriangle>& triangles, std::vector<Plane>& varyingPlanes) {
-  using vertex_stage::kVaryingOffset;
-  using vertex_stage::kWindowOffset;
+bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, SetupLists out) {
   const float* vert[3] = {v0, v1, v2};
 
   // Snap, and orient by the exact area sign (triangle_both).
   FixedTriangle fixed;
   for (int i = 0; i < 3; ++i) {
-    fixed.x[i] = snap(vert[i][kWindowOffset + 0]);
-    fixed.y[i] = snap(vert[i][kWindowOffset + 1]);
+    fixed.x[i] = snap(vert[i][kWindow + 0]);
+    fixed.y[i] = snap(vert[i][kWindow + 1]);
   }
   const int64_t dx01 = fixed.x[0] - fixed.x[1], dy01 = fixed.y[0] - fixed.y[1];
   const int64_t dx20 = fixed.x[2] - fixed.x[0], dy20 = fixed.y[2] - fixed.y[0];
@@ -110,9 +108,9 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   }
 
   // Planes from the unsnapped float window positions (init_args), in the rotated order.
-  const float* p0 = vert[0] + kWindowOffset;
-  const float* p1 = vert[1] + kWindowOffset;
-  const float* p2 = vert[2] + kWindowOffset;
+  const float* p0 = vert[0] + kWindow;
+  const float* p1 = vert[1] + kWindow;
+  const float* p2 = vert[2] + kWindow;
   const float fdx01 = p0[0] - p1[0], fdy01 = p0[1] - p1[1];
   const float fdx20 = p2[0] - p0[0], fdy20 = p2[1] - p0[1];
   const float e = fdx01 * fdy20;
@@ -131,16 +129,16 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   tri.w = planeOf(s, p0[3], p1[3], p2[3]);
 
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
-  tri.varyingBase = uint32_t(varyingPlanes.size());
+  tri.varyingBase = uint32_t(out.varyingPlanes.size());
   for (int v = 0; v < state.varyingFloats; ++v) {
-    const float a0 = vert[0][kVaryingOffset + v] * p0[3];
-    const float a1 = vert[1][kVaryingOffset + v] * p1[3];
-    const float a2 = vert[2][kVaryingOffset + v] * p2[3];
-    varyingPlanes.push_back(planeOf(s, a0, a1, a2));
+    const float a0 = vert[0][kVaryings + v] * p0[3];
+    const float a1 = vert[1][kVaryings + v] * p1[3];
+    const float a2 = vert[2][kVaryings + v] * p2[3];
+    out.varyingPlanes.push_back(planeOf(s, a0, a1, a2));
   }
-  tri.drawIndex = drawIndex;
+  tri.drawIndex = state.drawIndex;
   tri.frontFacing = frontFacing;
-  triangles.push_back(tri);
+  out.triangles.push_back(tri);
   return true;
 }
 

@@ -26,30 +26,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "raster/contract.h"
+
 namespace raster {
-
-struct EdgeFunction {
-  int64_t c;       // value at pixel (0, 0), fill-rule bias included
-  int64_t dcdx;    // step per pixel in x (already scaled by 256), subtracted
-  int64_t dcdy;    // step per pixel in y (already scaled by 256), added
-  int64_t at(int px, int py) const { return c - dcdx * px + dcdy * py; }
-};
-
-struct Plane {
-  float a0, dadx, dady;
-};
-
-// A triangle ready for rasterization. Varying planes live in the owning TriangleStore.
-struct SetupTriangle {
-  EdgeFunction edge[3];
-  int minX, minY, maxX, maxY;   // inclusive pixel bounds, already inside the framebuffer
-  Plane z;                      // window z
-  Plane w;                      // 1/w (the position's fourth component)
-  float depthOffset;            // polygon offset, added after interpolation
-  uint32_t varyingBase;         // index of the first varying Plane in the store
-  uint32_t drawIndex;           // which draw of the pass
-  bool frontFacing;
-};
 
 struct SetupState {
   int framebufferWidth = 0;
@@ -60,15 +39,22 @@ struct SetupState {
   float offsetFactor = 0.0f;
   float offsetUnitsScaled = 0.0f;    // units * 2 * mrd, as llvmpipe 22.3 computes it
   int varyingFloats = 0;
+  uint32_t drawIndex = 0;            // which draw of the pass the triangles belong to
+};
+
+// Where set-up triangles are appended: the triangle and, for each, its varying planes.
+struct SetupLists {
+  std::vector<SetupTriangle>& triangles;
+  std::vector<Plane>& varyingPlanes;
 };
 
 // Polygon offset units in depth-buffer terms: (float)(units * mrd * 2) computed in double,
 // mrd = 1 / (2^bits - 1) (lp_state_setup.c of Mesa 22.3; measured in the reference notes).
 float polygonOffsetUnits(float units, int depthBits);
 
-// Sets up one triangle of window-space vertex records (window xyzw at offset 4, varyings
-// at offset 8). Appends it and its varying planes unless culled; returns whether it did.
-bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, uint32_t drawIndex,
-                   std::vector<SetupTriangle>& triangles, std::vector<Plane>& varyingPlanes);
+// Sets up one triangle of shaded vertex records (contract.h, vertex_record). Appends it and
+// its varying planes to `out` unless it is culled, has no area or covers no pixel centre
+// inside the framebuffer's bounds; returns whether it did.
+bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, SetupLists out);
 
 }  // namespace raster

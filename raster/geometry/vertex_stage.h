@@ -2,11 +2,8 @@
 //
 // Input:  a VertexStream (interleaved float vertices, an attribute layout, and optionally
 //         a per-instance stream with divisor 1).
-// Output: ShadedVertices, one record per (instance, vertex):
-//           [0..3]  clip-space position (x, y, z, w) from gl_Position
-//           [4..7]  window position (x, y, z, 1/w), llvmpipe's viewport transform
-//           [8..]   the program's varyings (N floats)
-//         plus a 6-bit clip mask per record.
+// Output: ShadedVertices (contract.h), one record per (instance, vertex): clip position,
+//         window position and varyings (vertex_record), plus a 6-bit clip mask.
 // Every vertex of the buffer is shaded once per instance, a lane group at a time; a vertex's
 // result does not depend on which lane or group computed it.
 #pragma once
@@ -15,68 +12,45 @@
 #include <cstdint>
 #include <vector>
 
+#include "raster/contract.h"
 #include "raster/shader/program.h"
 
 namespace raster {
 
-struct AttributeLayout {
-  int location = 0;
-  int components = 3;
-  int offsetFloats = 0;
-};
-
-struct VertexStream {
-  const float* vertices = nullptr;       // per-vertex data
-  int strideFloats = 0;
-  int vertexCount = 0;
-  std::vector<AttributeLayout> attributes;
-  const float* instances = nullptr;      // per-instance data (divisor 1), may be null
-  int instanceStrideFloats = 0;
-  std::vector<AttributeLayout> instanceAttributes;
-};
-
-// GL viewport mapping, with llvmpipe's orientation for window-system buffers folded in.
-struct ViewportTransform {
-  float scale[3];
-  float translate[3];
-};
-
-struct ShadedVertices {
-  int varyingFloats = 0;
-  int stride = 0;                        // 8 + varyingFloats
-  std::vector<float> data;
-  std::vector<uint8_t> clipMask;
-
-  int count() const { return int(clipMask.size()); }
-  const float* record(int i) const { return data.data() + size_t(i) * size_t(stride); }
-  float* record(int i) { return data.data() + size_t(i) * size_t(stride); }
+// One instance's vertices to shade: every vertex of the stream, into records
+// [recordBase, recordBase + stream.vertexCount).
+struct VertexBatch {
+  const VertexStream& stream;
+  const ViewportTransform& viewport;
+  int instance;
+  int recordBase;
 };
 
 namespace vertex_stage {
-
-constexpr int kClipOffset = 0;
-constexpr int kWindowOffset = 4;
-constexpr int kVaryingOffset = 8;
 
 // Clip flags as llvmpipe's draw JIT computes them (draw_llvm.c generate_clipmask):
 // bit 0: x > w, 1: x + w < 0, 2: y > w, 3: y + w < 0, 4: z + w < 0, 5: z > w.
 uint8_t clipMask(const float clip[4]);
 
-// Shades `count` vertices of one instance starting at `first` into out (records already sized).
+// Shades `count` vertices of one instance, from vertex `first` of the batch on, into its
+// records (already sized): one lane group.
 template <class Program, class F>
-void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexStream& stream, int first, int count,
-                      int instance, int recordBase, const ViewportTransform& vp, ShadedVertices& out) {
+void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexBatch& batch, int first, int count,
+                      ShadedVertices& out) {
   constexpr int kLanes = F::kCount;
   constexpr int kVaryings = varyingFloatCount<Program>();
+  const VertexStream& stream = batch.stream;
+  const ViewportTransform& vp = batch.viewport;
+  const int instance = batch.instance;
   // Attribute planes, built in registers: locations and components the streams do not feed
   // read (0, 0, 0, 1); per-vertex components are gathered lane by lane (lanes past `count`
   // repeat the group's first vertex); per-instance values are the same in every lane.
   VertexInput<F> input;
-  for (int a = 0; a < kMaxVertexAttributes; ++a) input.attribute[a] = glsl::vec4<F>(F(0.0f), F(0.0f), F(0.0f), F(1.0f));
+  for (int a = 0; a < limits::kMaxVertexAttributes; ++a) input.attribute[a] = glsl::vec4<F>(F(0.0f), F(0.0f), F(0.0f), F(1.0f));
   auto component = [](glsl::vec4<F>& v, int c) -> F& { return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w; };
   alignas(32) int vertexOffset[kLanes];
   for (int lane = 0; lane < kLanes; ++lane)
-    vertexOffset[lane] = (first + (lane < count ? lane : 0)) * stream.strideFloats;   // Renderer::draw bounds it
+    vertexOffset[lane] = (first + (lane < count ? lane : 0)) * stream.strideFloats;   // limits::kMaxVertexBufferFloats
   for (const AttributeLayout& attr : stream.attributes)
     for (int c = 0; c < attr.components; ++c)
       component(input.attribute[attr.location], c) = F::gather(stream.vertices + attr.offsetFloats + c, vertexOffset);
@@ -107,12 +81,12 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexSt
   for (int v = 0; v < kVaryings; ++v) flat[v].store(vary[v]);
 
   for (int lane = 0; lane < count; ++lane) {
-    const int r = recordBase + lane;
+    const int r = batch.recordBase + first + lane;
     float* rec = out.record(r);
-    for (int c = 0; c < 4; ++c) rec[kClipOffset + c] = pos[c][lane];
-    for (int c = 0; c < 4; ++c) rec[kWindowOffset + c] = win[c][lane];
-    for (int v = 0; v < kVaryings; ++v) rec[kVaryingOffset + v] = vary[v][lane];
-    out.clipMask[size_t(r)] = clipMask(rec + kClipOffset);
+    for (int c = 0; c < 4; ++c) rec[vertex_record::kClip + c] = pos[c][lane];
+    for (int c = 0; c < 4; ++c) rec[vertex_record::kWindow + c] = win[c][lane];
+    for (int v = 0; v < kVaryings; ++v) rec[vertex_record::kVaryings + v] = vary[v][lane];
+    out.clipMask[size_t(r)] = clipMask(rec + vertex_record::kClip);
   }
 }
 

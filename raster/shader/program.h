@@ -33,31 +33,11 @@
 #include <type_traits>
 #include <utility>
 
+#include "raster/contract.h"
 #include "raster/simd/glsl.h"
 #include "raster/texture/sampler.h"
 
 namespace raster {
-
-constexpr int kMaxVertexAttributes = 8;   // locations 0..7: the scenes use at most 6
-constexpr int kMaxVaryingFloats = 32;     // GL 3.3 guarantees 64 components; scenes use <= 16
-constexpr int kMaxColorOutputs = 4;       // the deferred G-buffer writes 3
-
-template <class F>
-struct VertexInput {
-  glsl::vec4<F> attribute[kMaxVertexAttributes];  // missing components read (0, 0, 0, 1)
-  F gl_InstanceID;                                 // as float lanes: exact for any count used
-};
-
-template <class F>
-struct FragmentInput {
-  glsl::vec4<F> gl_FragCoord;   // (x + 0.5, y + 0.5, z, 1/w) in window coordinates
-  bool gl_FrontFacing = true;
-};
-
-template <class F>
-struct FragmentOutput {
-  glsl::vec4<F> color[kMaxColorOutputs];
-};
 
 // Derivatives: GLSL dFdx / dFdy over the lanes of each 2x2 quad (fine, as llvmpipe).
 template <class F> F dFdx(F a) { return simd::quadDdx(a); }
@@ -72,7 +52,7 @@ template <class Program>
 constexpr int varyingFloatCount() {
   using V = typename Program::template Varyings<float>;
   constexpr size_t bytes = std::is_empty_v<V> ? 0 : sizeof(V);
-  static_assert(bytes % sizeof(float) == 0 && bytes / sizeof(float) <= kMaxVaryingFloats);
+  static_assert(bytes % sizeof(float) == 0 && bytes / sizeof(float) <= limits::kMaxVaryingFloats);
   return int(bytes / sizeof(float));
 }
 

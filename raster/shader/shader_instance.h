@@ -10,14 +10,6 @@
 
 namespace raster {
 
-// The lane type the reference path shades with: one 2x2 quad in plain loops.
-using ScalarLanes = simd::Lanes<4>;
-using simd::FastLanes;
-#if RASTER_AVX2
-// Two FastLanes groups shaded in one call (raster_tile.cpp pairs them).
-using PairedLanes = simd::Float8x2;
-#endif
-
 class ShaderInstance {
  public:
   virtual ~ShaderInstance() = default;
@@ -26,10 +18,9 @@ class ShaderInstance {
   // Whether its fragment shader reads textures: the pipeline then shades lane groups two
   // at a time (raster_tile.cpp), so one group's texel loads overlap the other's.
   virtual bool samplesTextures() const = 0;
-  // Shades vertices [0, stream.vertexCount) of one instance into records
-  // [recordBase, recordBase + vertexCount) of `out`.
-  virtual void shadeVertices(const VertexStream& stream, int instance, int recordBase, const ViewportTransform& viewport,
-                             ShadedVertices& out) const = 0;
+  // Shades one instance's vertices into their records of `out`, with the plain-C++ lanes
+  // when `scalarLanes` (the same bits either way).
+  virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;
   // Shades one lane group; `varyings` holds varyingFloats() interpolated values.
   virtual void shadeFragments(const FragmentInput<FastLanes>& in, const FastLanes* varyings,
                               FragmentOutput<FastLanes>& out) const = 0;
@@ -50,14 +41,9 @@ class ProgramInstance final : public ShaderInstance {
   int colorOutputs() const override { return Program::kColorOutputs; }
   bool samplesTextures() const override { return raster::samplesTextures<Program>(); }
 
-  void shadeVertices(const VertexStream& stream, int instance, int recordBase, const ViewportTransform& viewport,
-                     ShadedVertices& out) const override {
-    constexpr int kLanes = FastLanes::kCount;
-    for (int first = 0; first < stream.vertexCount; first += kLanes) {
-      const int count = stream.vertexCount - first < kLanes ? stream.vertexCount - first : kLanes;
-      vertex_stage::shadeVertexGroup<Program, FastLanes>(uniforms_, stream, first, count, instance, recordBase + first,
-                                                         viewport, out);
-    }
+  void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {
+    if (scalarLanes) shadeVerticesWith<ScalarLanes>(batch, out);
+    else shadeVerticesWith<FastLanes>(batch, out);
   }
   void shadeFragments(const FragmentInput<FastLanes>& in, const FastLanes* varyings,
                       FragmentOutput<FastLanes>& out) const override {
@@ -75,6 +61,14 @@ class ProgramInstance final : public ShaderInstance {
 #endif
 
  private:
+  template <class F>
+  void shadeVerticesWith(const VertexBatch& batch, ShadedVertices& out) const {
+    const int vertexCount = batch.stream.vertexCount;
+    for (int first = 0; first < vertexCount; first += F::kCount) {
+      const int count = vertexCount - first < F::kCount ? vertexCount - first : F::kCount;
+      vertex_stage::shadeVertexGroup<Program, F>(uniforms_, batch, first, count, out);
+    }
+  }
   template <class F>
   void shade(const FragmentInput<F>& in, const F* varyings, FragmentOutput<F>& out) const {
     Program::fragment(uniforms_, in, varyingsFromArray<Program, F>(varyings), out);

@@ -44,7 +44,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "raster/simd/lanes.h"
+#include "raster/simd/isa.h"
 
 namespace raster::glsl {
 namespace detail {

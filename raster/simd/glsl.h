@@ -13,7 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/simd/gl_math.h"
-#include "raster/simd/lanes.h"
+#include "raster/simd/isa.h"
 
 namespace raster::glsl {
 

@@ -1,4 +1,5 @@
-// The output merge's SIMD conversions equal the scalar reference on every class of input.
+// The output merge's SIMD colour conversions and writes equal the scalar reference on every
+// class of input (merge/color_write.h and its AVX2 sibling).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -7,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "raster/merge/output_merge.h"
+#include "raster/merge/color_write.h"
 
 namespace {
 
@@ -40,31 +41,13 @@ TEST_SUITE("format") {
       for (int c = 0; c < 4; ++c)
         for (int l = 0; l < 8; ++l) lanes[c][l] = values[(i + size_t(l) + size_t(c) * 3) % values.size()];
       uint32_t fast[8], plain[8];
-      raster::output_merge::packRgba8(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
+      raster::merge::packRgba8(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
                                                                     FastLanes::load(lanes[2]), FastLanes::load(lanes[3])),
                                       fast);
-      raster::output_merge::packRgba8(
+      raster::merge::packRgba8(
           raster::glsl::vec4<Plain>(Plain::load(lanes[0]), Plain::load(lanes[1]), Plain::load(lanes[2]), Plain::load(lanes[3])),
           plain);
       CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
-    }
-  }
-
-  TEST_CASE("depth quantization: SIMD lanes equal the scalar conversion") {
-    std::vector<float> values;
-    std::mt19937 rng(4);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int i = 0; i < 80000; ++i) values.push_back(unit(rng));
-    for (uint32_t k = 0; k < 70000; k += 7) values.push_back((float(k) + 0.5f) / 65535.0f);
-    values.insert(values.end(), {0.0f, 1.0f, 0.5f, 1.0f / 16777215.0f});
-    while (values.size() % 8) values.push_back(0.25f);
-    for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
-      for (size_t i = 0; i < values.size(); i += 8) {
-        uint32_t fast[8], plain[8];
-        raster::output_merge::depthCodes(FastLanes::load(&values[i]), format, fast);
-        raster::output_merge::depthCodes(Plain::load(&values[i]), format, plain);
-        CHECK(std::memcmp(fast, plain, sizeof fast) == 0);
-      }
     }
   }
 
@@ -82,10 +65,10 @@ TEST_SUITE("format") {
       for (size_t i = 0; i < fast.size(); ++i) fast[i] = plain[i] = raster::format::halfFromFloatTowardZero(values[rng() % values.size()] * 70000.0f);
       const size_t texel[8] = {3, 0, 7, 1, 6, 2, 5, 4};
       const unsigned laneMask = unsigned(rng()) & 0xFFu;
-      raster::output_merge::writeHalfTexels(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
+      raster::merge::writeHalfTexels(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
                                                                           FastLanes::load(lanes[2]), FastLanes::load(lanes[3])),
                                             fast.data(), texel, laneMask, blend);
-      raster::output_merge::writeHalfTexels(raster::glsl::vec4<Plain>(Plain::load(lanes[0]), Plain::load(lanes[1]),
+      raster::merge::writeHalfTexels(raster::glsl::vec4<Plain>(Plain::load(lanes[0]), Plain::load(lanes[1]),
                                                                       Plain::load(lanes[2]), Plain::load(lanes[3])),
                                             plain.data(), texel, laneMask, blend);
       CHECK(fast == plain);
@@ -126,56 +109,34 @@ TEST_SUITE("format") {
       uint8_t expected8[16 * 4], rows8[16 * 4], pair8[16 * 4];
       for (int g = 0; g < 2; ++g) {
         uint32_t packed[8];
-        raster::output_merge::packRgba8(plainGroup(g), packed);
+        raster::merge::packRgba8(plainGroup(g), packed);
         for (int i = 0; i < 8; ++i) std::memcpy(expected8 + (g ? second : first)[i] * 4, &packed[i], 4);
       }
-      raster::output_merge::writeRgba8Rows(group(0), rows8, first);
-      raster::output_merge::writeRgba8Rows(group(1), rows8, second);
-      raster::output_merge::writeRgba8RowsPair(pair, pair8, first, second);
+      raster::merge::writeRgba8Rows(group(0), rows8, first);
+      raster::merge::writeRgba8Rows(group(1), rows8, second);
+      raster::merge::writeRgba8RowsPair(pair, pair8, first, second);
       CHECK(std::memcmp(rows8, expected8, sizeof expected8) == 0);
       CHECK(std::memcmp(pair8, expected8, sizeof expected8) == 0);
 
       std::vector<uint16_t> expected16(16 * 4), rows16(16 * 4), pair16(16 * 4);
-      raster::output_merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, false);
-      raster::output_merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, false);
-      raster::output_merge::writeHalfRows(group(0), rows16.data(), first);
-      raster::output_merge::writeHalfRows(group(1), rows16.data(), second);
-      raster::output_merge::writeHalfRowsPair(pair, pair16.data(), first, second);
+      raster::merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, false);
+      raster::merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, false);
+      raster::merge::writeHalfRows(group(0), rows16.data(), first);
+      raster::merge::writeHalfRows(group(1), rows16.data(), second);
+      raster::merge::writeHalfRowsPair(pair, pair16.data(), first, second);
       CHECK(rows16 == expected16);
       CHECK(pair16 == expected16);
 
       // Additive blending onto those texels: each its stored value plus the colour again.
-      raster::output_merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, true);
-      raster::output_merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, true);
-      raster::output_merge::writeHalfRows(group(0), rows16.data(), first, true);
-      raster::output_merge::writeHalfRows(group(1), rows16.data(), second, true);
-      raster::output_merge::writeHalfRowsPair(pair, pair16.data(), first, second, true);
+      raster::merge::writeHalfTexels(plainGroup(0), expected16.data(), first, 0xFFu, true);
+      raster::merge::writeHalfTexels(plainGroup(1), expected16.data(), second, 0xFFu, true);
+      raster::merge::writeHalfRows(group(0), rows16.data(), first, true);
+      raster::merge::writeHalfRows(group(1), rows16.data(), second, true);
+      raster::merge::writeHalfRowsPair(pair, pair16.data(), first, second, true);
       CHECK(rows16 == expected16);
       CHECK(pair16 == expected16);
     }
   }
 
-  TEST_CASE("depth test of a lane group: whole-row and masked-edge forms equal the per-lane test") {
-    std::mt19937 rng(6);
-    for (int round = 0; round < 4000; ++round) {
-      const bool flipped = round & 1, lessEqual = round & 2, write = round & 4, wholeRows = round & 8;
-      // Row position of each lane (the inverse of depthTestRows' quad -> row permutation).
-      const int rowOfLane[2][8] = {{0, 1, 4, 5, 2, 3, 6, 7}, {4, 5, 0, 1, 6, 7, 2, 3}};
-      uint32_t codes[8], rows[8];
-      for (int i = 0; i < 8; ++i) {
-        codes[i] = rng() % 6;   // few values: ties between code and stored are common
-        rows[i] = rng() % 6;
-      }
-      uint32_t expected[8];
-      std::memcpy(expected, rows, sizeof rows);
-      size_t texel[8];
-      for (int i = 0; i < 8; ++i) texel[i] = size_t(rowOfLane[flipped][i]);
-      const unsigned laneMask = unsigned(rng()) & 0xFFu;
-      const unsigned expectedPass = raster::output_merge::depthTest<8>(codes, expected, texel, laneMask, lessEqual, write);
-      const unsigned pass = raster::output_merge::depthTestRows(codes, rows, rows + 4, laneMask, flipped, lessEqual, write, wholeRows);
-      CHECK(pass == expectedPass);
-      CHECK(std::memcmp(rows, expected, sizeof rows) == 0);
-    }
-  }
 #endif
 }

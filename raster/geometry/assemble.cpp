@@ -1,0 +1,34 @@
+// Primitive assembly, trivial rejection, clipping and setup of a run of primitives (see assemble.h).
+#include "raster/geometry/assemble.h"
+
+#include "raster/geometry/clip.h"
+
+namespace raster {
+
+void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, SetupLists out, PipelineCounters& counters) {
+  const size_t perInstance = in.indices.size() / 3;
+  clip::Clipper clipper(in.setup.varyingFloats, in.viewport);
+  for (size_t p = first; p < end; ++p) {
+    const int base = int(p / perInstance) * in.vertexCount;
+    const size_t t = (p % perInstance) * 3;
+    const int r0 = base + int(in.indices[t]), r1 = base + int(in.indices[t + 1]), r2 = base + int(in.indices[t + 2]);
+    const unsigned m0 = in.shaded.clipMask[size_t(r0)], m1 = in.shaded.clipMask[size_t(r1)], m2 = in.shaded.clipMask[size_t(r2)];
+    counters.trianglesIn++;
+    if (m0 & m1 & m2) {   // all three outside one plane
+      counters.trianglesRejected++;
+      continue;
+    }
+    if ((m0 | m1 | m2) == 0) {
+      counters.trianglesSetUp += setupTriangle(in.setup, in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), out);
+      continue;
+    }
+    counters.trianglesClipped++;
+    const clip::Polygon& polygon =
+        clipper.clipTriangle(in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), m0 | m1 | m2);
+    // The fan (p[i-1], p[i], p[0]) keeps GL's last-vertex convention.
+    for (int i = 2; i < polygon.count; ++i)
+      counters.trianglesSetUp += setupTriangle(in.setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0], out);
+  }
+}
+
+}  // namespace raster

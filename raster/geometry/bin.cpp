@@ -1,0 +1,51 @@
+// Binning of set-up triangles into screen tiles (see bin.h).
+#include "raster/geometry/bin.h"
+
+#include <algorithm>
+
+namespace raster {
+
+using limits::kTileSize;
+
+void TileBins::reset(int width, int height) {
+  width_ = width;
+  height_ = height;
+  tilesX_ = (width + kTileSize - 1) / kTileSize;
+  tilesY_ = (height + kTileSize - 1) / kTileSize;
+  // Bins keep their capacity from pass to pass (clear() empties them).
+  if (bins_.size() != size_t(tilesX_) * size_t(tilesY_)) bins_.assign(size_t(tilesX_) * size_t(tilesY_), {});
+  clear();
+}
+
+TileBounds TileBins::bounds(int tile) const {
+  const int x0 = (tile % tilesX_) * kTileSize, y0 = (tile / tilesX_) * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, width_) - 1, std::min(y0 + kTileSize, height_) - 1};
+}
+
+uint64_t TileBins::binRows(std::span<const SetupTriangle> triangles, uint32_t first, int tileY0, int tileY1) {
+  uint64_t binned = 0;
+  for (uint32_t t = first; t < triangles.size(); ++t) {
+    const SetupTriangle& tri = triangles[t];
+    const int rowFirst = std::max(tri.minY / kTileSize, tileY0), rowLast = std::min(tri.maxY / kTileSize, tileY1);
+    for (int tileY = rowFirst; tileY <= rowLast; ++tileY) {
+      for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
+        // The overlap of the tile and the triangle's bounds.
+        const int x0 = std::max(tileX * kTileSize, tri.minX), x1 = std::min(tileX * kTileSize + kTileSize - 1, tri.maxX);
+        const int y0 = std::max(tileY * kTileSize, tri.minY), y1 = std::min(tileY * kTileSize + kTileSize - 1, tri.maxY);
+        bool outside = false;
+        for (const EdgeFunction& e : tri.edge)
+          outside = outside || std::max({e.at(x0, y0), e.at(x1, y0), e.at(x0, y1), e.at(x1, y1)}) <= 0;
+        if (outside) continue;
+        bins_[size_t(tileY) * size_t(tilesX_) + size_t(tileX)].push_back(t);
+        ++binned;
+      }
+    }
+  }
+  return binned;
+}
+
+void TileBins::clear() {
+  for (auto& b : bins_) b.clear();
+}
+
+}  // namespace raster

@@ -1,0 +1,45 @@
+// Stage 4, binning: set-up triangles in, per-tile lists of triangle indices out.
+//
+// The framebuffer is cut into kTileSize tiles (limits.h). A triangle goes into every tile
+// that its pixel bounds touch, unless one of its edge functions rejects the whole overlap of
+// tile and bounds at all four corners (the function is linear, so the corners decide).
+// Triangles are appended in API order, so each tile sees its triangles in that order, and
+// the tile stage owes the output's independence of thread count to nothing else.
+//
+// Binning is split into bands of tile rows: a band's bins are written by one caller, so
+// the renderer bins bands in parallel with the same result as one pass through them.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "raster/contract.h"
+
+namespace raster {
+
+class TileBins {
+ public:
+  // Tiles covering a width x height framebuffer, every bin empty (capacity is kept).
+  void reset(int width, int height);
+  int tilesX() const { return tilesX_; }
+  int tilesY() const { return tilesY_; }
+  int tileCount() const { return tilesX_ * tilesY_; }
+  // The triangle indices binned into tile (tileX, tileY) = tile index tileY * tilesX + tileX.
+  std::span<const uint32_t> bin(int tile) const { return bins_[size_t(tile)]; }
+  // The pixel rectangle of a tile, clipped to the framebuffer.
+  TileBounds bounds(int tile) const;
+
+  // Bins triangles[first, end) into the tiles of tile rows [tileY0, tileY1]; returns the
+  // (triangle, tile) pairs added. Calls for disjoint row ranges may run at once.
+  uint64_t binRows(std::span<const SetupTriangle> triangles, uint32_t first, int tileY0, int tileY1);
+  // Empties every bin, keeping the tiles.
+  void clear();
+
+ private:
+  std::vector<std::vector<uint32_t>> bins_;
+  int width_ = 0, height_ = 0;
+  int tilesX_ = 0, tilesY_ = 0;
+};
+
+}  // namespace raster

@@ -1,0 +1,16 @@
+// glClear, carried out one tile rectangle at a time inside the tiles' tasks (so it runs in
+// parallel, and the tile's pixels are then in cache for its triangles).
+//
+// Colour clear values are converted once, as llvmpipe converts them: unorm8 rounded from
+// the clamped value, half-floats truncated toward zero (format.h); depth to its code.
+#pragma once
+
+#include "raster/contract.h"
+
+namespace raster::merge {
+
+// Clears the rectangle `rect` (inclusive) of the framebuffer's depth buffer, when `values`
+// asks for it, and of its colour attachments when `values` asks and `colorToo` is set.
+void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const TileBounds& rect, bool colorToo);
+
+}  // namespace raster::merge

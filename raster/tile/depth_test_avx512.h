@@ -1,0 +1,78 @@
+// The early depth test of a whole 4x4 block in one 512-bit register (AVX-512), for the tests
+// that shade nothing and so need no quads: depth-only draws and the visibility pass. Each
+// pixel gets the z, clamp and quantization depthTestGroup gives it, is tested against its
+// stored code and written where it passes, so the same bits land.
+#pragma once
+
+#include "raster/simd/isa.h"
+#if RASTER_ZMM_PAIRS
+#include "raster/simd/intrinsics.h"
+#include "raster/tile/depth_test.h"
+
+namespace raster {
+
+template <>
+inline constexpr bool kDepthTestsInBlocks<simd::Float8> = true;
+
+// depthCodes<Float8> and depthPasses for 16 lanes in one register: the same operations per
+// lane; the passing lanes among `covered` as a mask.
+inline __m512i depthCodes16(simd::Float8x2 z, TexelFormat format) {
+  if (format == TexelFormat::Depth24) return _mm512_cvtps_epi32(_mm512_mul_ps(z.v, _mm512_set1_ps(16777215.0f)));
+  const __m512 t = _mm512_add_ps(_mm512_mul_ps(z.v, _mm512_set1_ps(65535.0f / 65536.0f)), _mm512_set1_ps(128.0f));
+  return _mm512_and_si512(_mm512_castps_si512(t), _mm512_set1_epi32(0xFFFF));
+}
+inline __mmask16 depthPasses16(__mmask16 covered, __m512i code, __m512i stored, bool lessEqual) {
+  return lessEqual ? _mm512_mask_cmpgt_epi32_mask(covered, _mm512_add_epi32(stored, _mm512_set1_epi32(1)), code)
+                   : _mm512_mask_cmpgt_epi32_mask(covered, stored, code);
+}
+
+// Four rows of 4 lanes as one register (row r in lanes 4r..4r + 3), and back.
+inline __m512i joinRows(const __m128i (&rows)[4]) {
+  const __m512i low = _mm512_inserti32x4(_mm512_castsi128_si512(rows[0]), rows[1], 1);
+  return _mm512_inserti32x4(_mm512_inserti32x4(low, rows[2], 2), rows[3], 3);
+}
+inline void splitRows(__m512i v, __m128i (&rows)[4]) {
+  rows[0] = _mm512_castsi512_si128(v);
+  rows[1] = _mm512_extracti32x4_epi32(v, 1);
+  rows[2] = _mm512_extracti32x4_epi32(v, 2);
+  rows[3] = _mm512_extracti32x4_epi32(v, 3);
+}
+
+// The depth test of one 4x4 block in memory-row order (lane row * 4 + col) instead of two
+// lane groups. Returns the pixels that pass (bit row * 4 + col).
+template <>
+[[gnu::always_inline]] inline uint32_t depthTestBlock<simd::Float8>(const TileJob& job, const SetupTriangle& tri,
+                                                                  int blockX, int blockY, uint32_t coverage) {
+  const Framebuffer& fb = *job.framebuffer;
+  const RasterState& state = job.draws[tri.drawIndex].state;
+  if (!state.depthTest || !fb.depth) return coverage;
+  using simd::Float8x2;
+  const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
+  const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
+  const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, py)), fb.depth->format);
+  // The block's four memory rows. Where the block sticks out of the framebuffer, rows and
+  // pixels outside it (never covered) are neither read nor written; otherwise whole rows
+  // are read and written back blended, as masked stores are slow.
+  const bool whole = blockX + 4 <= fb.width && blockY + 4 <= fb.height;
+  uint32_t* rows[4];
+  __m128i rowCodes[4];
+  for (int r = 0; r < 4; ++r) {
+    const __mmask8 covered = __mmask8(coverage >> (4 * r) & 0xFu);
+    rows[r] = whole || covered ? fb.depth->depth.data() + size_t(blockY + r) * size_t(fb.width) + size_t(blockX) : nullptr;
+    rowCodes[r] = whole ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(rows[r]))
+                        : covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
+  }
+  const __m512i stored = joinRows(rowCodes);
+  const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, state.depthFunc == DepthFunc::Lequal);
+  if (state.depthWrite && pass) {
+    splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
+    for (int r = 0; r < 4; ++r) {
+      if (whole) _mm_storeu_si128(reinterpret_cast<__m128i*>(rows[r]), rowCodes[r]);
+      else if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
+    }
+  }
+  return pass;
+}
+
+}  // namespace raster
+#endif

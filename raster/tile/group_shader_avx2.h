@@ -1,0 +1,101 @@
+// Float8 groups shaded two per call (Float8x2), for programs that read textures (one
+// group's lookups overlap the other's memory waits) and, with AVX-512, for every program
+// (a pair's arithmetic is one 512-bit operation instead of two 256-bit ones).
+#pragma once
+
+#include "raster/simd/isa.h"
+#if RASTER_AVX2
+#include "raster/tile/group_shader.h"
+
+namespace raster {
+
+// Whether a draw's Float8 groups are shaded in pairs.
+inline bool shadedInPairs(const DrawRecord& draw) {
+#if RASTER_ZMM_PAIRS
+  return true;
+#else
+  return draw.samplesTextures;
+#endif
+}
+
+// Two groups of the same draw and facing can share one shader call. They may cover the same
+// pixels (overlapping triangles), but the later group was depth-tested after the earlier
+// one's depth write, and a's colours are written before b's, so the framebuffer ends the
+// same as shading each alone.
+inline bool canPair(const FragmentGroup<simd::Float8>& a, const FragmentGroup<simd::Float8>& b) {
+  return a.draw == b.draw && a.in.gl_FrontFacing == b.in.gl_FrontFacing;
+}
+
+// Shades two ready groups in one Float8x2 call, then writes a's outputs and b's.
+inline void shadeGroupPair(const TileJob& job, const FragmentGroup<simd::Float8>& a, const FragmentGroup<simd::Float8>& b,
+                           PipelineCounters& counters) {
+  using simd::Float8x2;
+  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
+  FragmentInput<Float8x2> in;
+  const glsl::vec4<simd::Float8>& ca = a.in.gl_FragCoord;
+  const glsl::vec4<simd::Float8>& cb = b.in.gl_FragCoord;
+  in.gl_FragCoord = {{ca.x, cb.x}, {ca.y, cb.y}, {ca.z, cb.z}, {ca.w, cb.w}};
+  in.gl_FrontFacing = a.in.gl_FrontFacing;
+  Float8x2 varyings[limits::kMaxVaryingFloats];
+  const int varyingCount = a.draw->varyingFloats;
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = {a.varyings[v], b.varyings[v]};
+  FragmentOutput<Float8x2> out;
+  a.draw->shader->shadeFragments(in, varyings, out);
+  const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
+  counters.shadeCycles += mergeStart - shadeStart;
+  counters.laneGroupsShaded += 2;
+  counters.lanesShaded += Float8x2::kCount;
+
+  const Framebuffer& fb = *job.framebuffer;
+  const bool additive = a.draw->state.blendAdditive;
+  for (int k = 0; k < a.outputs; ++k) {
+    const glsl::vec4<Float8x2>& c = out.color[k];
+    merge::writeColorOutput(*fb.colors[k], merge::lowGroup(c), a.texel, a.laneMask, additive);
+    merge::writeColorOutput(*fb.colors[k], merge::highGroup(c), b.texel, b.laneMask, additive);
+  }
+  if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
+}
+
+// GroupShader for Float8 groups: a group of a paired draw waits in its slot until the next
+// ready group joins it, or until one that cannot join (another draw or facing) or the end
+// of the tile sends it alone. Each group passed its depth test before it became ready, and
+// colours are written in the order the groups became ready, so the framebuffer ends as if
+// each were shaded alone.
+template <>
+class GroupShader<simd::Float8> {
+ public:
+  GroupShader(const TileJob& job, PipelineCounters& counters) : job_(job), counters_(counters) {}
+  // Where the next group is prepared: never the waiting group's slot.
+  FragmentGroup<simd::Float8>& next() { return slots_[nextIndex()]; }
+  void push() {
+    const int index = nextIndex();
+    FragmentGroup<simd::Float8>& ready = slots_[index];
+    if (shadedInPairs(*ready.draw)) {
+      if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
+        shadeGroupPair(job_, slots_[waiting_], ready, counters_);
+        waiting_ = -1;
+        return;
+      }
+      flush();
+      waiting_ = index;
+      return;
+    }
+    flush();
+    shadeGroup(job_, ready, counters_);
+  }
+  // Shades the waiting group alone.
+  void flush() {
+    if (waiting_ >= 0) shadeGroup(job_, slots_[waiting_], counters_);
+    waiting_ = -1;
+  }
+
+ private:
+  int nextIndex() const { return waiting_ == 0 ? 1 : 0; }
+  const TileJob& job_;
+  PipelineCounters& counters_;
+  FragmentGroup<simd::Float8> slots_[2];
+  int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
+};
+
+}  // namespace raster
+#endif

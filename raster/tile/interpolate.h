@@ -1,0 +1,64 @@
+// Interpolation: the values a fragment's lanes see, from the triangle's planes.
+//
+// As llvmpipe's lp_bld_interp.c: a plane is evaluated at pixel centres as
+// fma(dady, y, fma(dadx, x, a0)), planes referenced to pixel (0, 0)'s centre, so lanes at
+// small integer pixel coordinates are exact; varyings are perspective-correct through an
+// exact 1/w, w itself interpolated from the 1/w plane; window z is the z plane plus the
+// polygon offset (clamped only for the depth test).
+#pragma once
+
+#include <cstddef>
+
+#include "raster/contract.h"
+#include "raster/tile/lane_layout.h"
+
+namespace raster {
+
+template <class F>
+F evaluatePlane(const Plane& p, F px, F py) {
+  return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
+}
+
+// A fragment's window z: the z plane plus the polygon offset.
+template <class F>
+F fragmentDepth(const SetupTriangle& tri, F px, F py) {
+  return evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+}
+
+// Fragment inputs of lanes at pixels (px, py) with window z: perspective-correct varyings
+// and gl_FragCoord, for a group or a pair of groups (the same operations per lane).
+template <class F>
+[[gnu::always_inline]] inline void interpolateFragment(const TileJob& job, const SetupTriangle& tri, F px, F py, F z,
+                                                       FragmentInput<F>& in, F* varyings) {
+  const Framebuffer& fb = *job.framebuffer;
+  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
+  const F w = evaluatePlane(tri.w, px, py);
+  const F oow = F(1.0f) / w;
+  const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
+
+  // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
+  const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);
+  in.gl_FragCoord = glsl::vec4<F>(px + F(0.5f), fragY, z, w);
+  in.gl_FrontFacing = tri.frontFacing;
+}
+
+// Makes `group` ready to shade: the lane group `at` whose covered lanes passed their depth
+// test (z as the test computed it): pixel indices, perspective-correct varyings (helper
+// lanes too, so dFdx / dFdy see whole quads) and gl_FragCoord.
+template <class F>
+[[gnu::always_inline]] inline void fillGroup(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout,
+                                             GroupAt at, F z, FragmentGroup<F>& group) {
+  const Framebuffer& fb = *job.framebuffer;
+  const DrawRecord& draw = job.draws[tri.drawIndex];
+  const F px = F(float(at.x)) + layout.dxLanes;
+  const F py = F(float(at.y)) + layout.dyLanes;
+  const size_t origin = size_t(at.y) * size_t(fb.width) + size_t(at.x);
+  for (int i = 0; i < F::kCount; ++i) group.texel[i] = origin + layout.texel[i];
+  group.outputs = colorOutputsWritten(draw, fb);
+  group.draw = &draw;
+  group.laneMask = at.laneMask;
+  interpolateFragment(job, tri, px, py, z, group.in, group.varyings);
+}
+
+}  // namespace raster

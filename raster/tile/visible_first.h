@@ -1,0 +1,133 @@
+// Visibility first, for passes whose colour draws do not blend (TileJob::visibilityFirst).
+//
+// Pass 1 walks every triangle of the bin in order with the depth test alone, and records per
+// pixel the last colour-writing triangle whose fragment passed: the fragment whose colour
+// the pixel would end with. Pass 2 shades, group by group, only those fragments: for each
+// triangle a group's pixels name, the group exactly as the in-order walk prepares it (same
+// origin, planes and helper lanes, so the same bits), with only that triangle's pixels
+// written. Each pixel is written once, so no order is needed between the groups.
+//
+// This file is the reference, lane by lane; visible_first_avx2.h marks and reads a Float8
+// group's two rows at once, and (AVX-512) a whole 4x4 block.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <span>
+
+#include "raster/contract.h"
+#include "raster/tile/group_shader.h"
+#include "raster/tile/interpolate.h"
+#include "raster/tile/lane_layout.h"
+#include "raster/tile/walk.h"
+
+namespace raster {
+
+// Per-pixel triangle indices of one tile, kept per lane group: a group's entries are valid
+// once it is marked (bit: group column, per pair of rows).
+template <class F>
+class TileTriangles {
+ public:
+  static constexpr int kLanes = F::kCount;
+  static constexpr int kTile = limits::kTileSize;
+  static constexpr int kGroupWidth = 2 * LaneLayout<F>::kQuads;   // 4 (8 lanes) or 2 (4 lanes)
+  static constexpr uint32_t kNone = ~0u;
+
+  explicit TileTriangles(bool flipY) : local_(flipY, kTile), flipY_(flipY) {}
+  // Forgets every mark (a new tile).
+  void reset() { std::fill(std::begin(marked_), std::end(marked_), 0u); }
+
+  // Lanes `passed` of the group at tile offset (lx, ly) now show triangle `index`.
+  void mark(int lx, int ly, unsigned passed, uint32_t index) {
+    uint32_t* at = entries_ + ly * kTile + lx;
+    if (markGroup(lx, ly))
+      for (int i = 0; i < kLanes; ++i) at[local_.texel[i]] = kNone;
+    for (; passed; passed &= passed - 1) at[local_.texel[__builtin_ctz(passed)]] = index;
+  }
+
+  // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
+  // triangle `index`, for lane types with kDepthTestsInBlocks (visible_first_avx2.h).
+  void markBlock(int lx, int ly, uint32_t passed, uint32_t index);
+
+  // Calls shade(lx, ly, index, laneMask) once per triangle that marked group (lx, ly).
+  template <class Shade>
+  void forEachVisible(Shade&& shade) const {
+    for (int row = 0; row < kTile / 2; ++row) {
+      for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
+        const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
+        const uint32_t* at = entries_ + ly * kTile + lx;
+        uint32_t lanes[kLanes];
+        unsigned remaining = 0;
+        for (int i = 0; i < kLanes; ++i) {
+          lanes[i] = at[local_.texel[i]];
+          if (lanes[i] != kNone) remaining |= 1u << i;
+        }
+        while (remaining) {
+          const uint32_t index = lanes[__builtin_ctz(remaining)];
+          unsigned laneMask = 0;
+          for (int i = 0; i < kLanes; ++i)
+            if (lanes[i] == index) laneMask |= 1u << i;
+          remaining &= ~laneMask;
+          shade(lx, ly, index, laneMask);
+        }
+      }
+    }
+  }
+
+ private:
+  // Marks the group at (lx, ly) as holding entries; returns whether it was unmarked before
+  // (its entries then hold nothing yet).
+  bool markGroup(int lx, int ly) {
+    uint32_t& rowBits = marked_[ly / 2];
+    const uint32_t bit = 1u << (lx / kGroupWidth);
+    const bool first = !(rowBits & bit);
+    rowBits |= bit;
+    return first;
+  }
+
+  const LaneLayout<F> local_;   // lane offsets within the tile
+  const bool flipY_;
+  alignas(32) uint32_t entries_[kTile * kTile];
+  uint32_t marked_[kTile / 2] = {};
+};
+
+}  // namespace raster
+
+#include "raster/tile/visible_first_avx2.h"
+
+namespace raster {
+
+// Rasterizes one tile visibility first (see the top of this file).
+template <class F>
+void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
+                           const LaneLayout<F>& layout, PipelineCounters& counters, GroupShader<F>& shader) {
+  thread_local TileTriangles<F> visibleFlip(true), visible(false);
+  TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
+  shown.reset();
+  if constexpr (kDepthTestsInBlocks<F>) {
+    // The visibility pass needs no quads: its depth tests run a whole block at a time.
+    for (uint32_t index : bin) {
+      const SetupTriangle& tri = job.triangles[index];
+      const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
+      walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+        const uint32_t passed = depthTestBlock<F>(job, tri, blockX, blockY, coverage);
+        if (passed && writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
+      });
+    }
+  } else {
+    depthTestBin<F>(job, tile, bin, layout, [&](uint32_t index, const SetupTriangle&, GroupAt passed, F) {
+      shown.mark(passed.x - tile.x0, passed.y - tile.y0, passed.laneMask, index);
+    });
+  }
+  shown.forEachVisible([&](int lx, int ly, uint32_t index, unsigned laneMask) {
+    const SetupTriangle& tri = job.triangles[index];
+    const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
+    const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
+    counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+    fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
+    shader.push();
+  });
+}
+
+}  // namespace raster

@@ -1,0 +1,75 @@
+// TileTriangles for Float8 groups (visible_first.h): a group's two rows of 4 entries marked
+// and read in one register each way, and (AVX-512) a 4x4 block's pixels marked from its
+// depth test's mask. Same entries as the reference.
+#pragma once
+
+#include "raster/simd/isa.h"
+#if RASTER_AVX2
+#include "raster/simd/intrinsics.h"
+#include "raster/tile/lane_layout_avx2.h"
+#include "raster/tile/visible_first.h"
+
+namespace raster {
+
+template <>
+inline void TileTriangles<simd::Float8>::mark(int lx, int ly, unsigned passed, uint32_t index) {
+  uint32_t* at = entries_ + ly * kTile + lx;
+  const bool first = markGroup(lx, ly);
+  // The group's two rows of four, read (or kNone when first marked), blended, written.
+  __m128i* top = reinterpret_cast<__m128i*>(at);
+  __m128i* bottom = reinterpret_cast<__m128i*>(at + kTile);
+  const __m256i old = first ? _mm256_set1_epi32(-1) : _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
+  const __m256i lanes = _mm256_castps_si256(simd::Mask8::fromBits(passed).v);
+  const __m256i rows = _mm256_permutevar8x32_epi32(lanes, quadLanesToRows(flipY_));
+  const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
+  _mm_storeu_si128(top, _mm256_castsi256_si128(merged));
+  _mm_storeu_si128(bottom, _mm256_extracti128_si256(merged, 1));
+}
+
+#if RASTER_ZMM_PAIRS
+template <>
+inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
+  // mark() for the block's upper group and its lower one, in memory rows.
+  for (int half = 0; half < 2; ++half) {
+    const uint32_t bits = passed >> (8 * half) & 0xFFu;
+    if (!bits) continue;
+    const bool first = markGroup(lx, ly + 2 * half);
+    for (int r = 0; r < 2; ++r) {
+      uint32_t* at = entries_ + (ly + 2 * half + r) * kTile + lx;
+      const __mmask8 row = __mmask8(bits >> (4 * r) & 0xFu);
+      // A row the tile owns whole: read, blended and written back (masked stores are slow).
+      const __m128i before = first ? _mm_set1_epi32(-1) : _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_mask_blend_epi32(row, before, _mm_set1_epi32(int(index))));
+    }
+  }
+}
+#endif
+
+template <>
+template <class Shade>
+void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
+  const __m256i toLanes = rowsToQuadLanes(flipY_);
+  for (int row = 0; row < kTile / 2; ++row) {
+    for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
+      const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
+      const uint32_t* at = entries_ + ly * kTile + lx;
+      alignas(32) uint32_t lanes[8];
+      const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
+                                             _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)));
+      const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
+      _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+      const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
+      unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
+      while (remaining) {
+        const uint32_t index = lanes[__builtin_ctz(remaining)];
+        const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
+        const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
+        remaining &= ~laneMask;
+        shade(lx, ly, index, laneMask);
+      }
+    }
+  }
+}
+
+}  // namespace raster
+#endif

@@ -1,0 +1,107 @@
+// The walk of one tile's triangles, in API order: for each triangle, its 16x16 regions, then
+// 4x4 blocks, then lane groups, each with its coverage (coverage.h), and each group through
+// the early depth test (depth_test.h).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "raster/contract.h"
+#include "raster/tile/coverage.h"
+#include "raster/tile/depth_test.h"
+#include "raster/tile/lane_layout.h"
+
+namespace raster {
+
+// The 4x4 blocks of one triangle inside one tile, in walk order: visitBlock(blockX, blockY,
+// coverage) for every block with a covered pixel (bit row * 4 + col). Depth-only draws fill
+// the 16x16 regions wholly inside the triangle themselves (depthOnlyRegion) and visit only
+// the rest.
+template <class F, class VisitBlock>
+void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const TileBounds& tile, VisitBlock&& visitBlock) {
+  constexpr int kBlock = limits::kBlockSize, kRegion = limits::kRegionSize;
+  using Edge = typename EdgeWalkOf<F>::type;
+  const Framebuffer& fb = *job.framebuffer;
+  const RasterState& state = job.draws[tri.drawIndex].state;
+  const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
+  const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+  const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
+  const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
+  // Depth test and write, and no colour the shader writes is kept.
+  const bool depthOnly =
+      state.depthTest && state.depthWrite && fb.depth && colorOutputsWritten(job.draws[tri.drawIndex], fb) == 0;
+  // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
+  // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
+  // row of the triangle's extent at a time, so texture reads run along long rows.
+  const int firstRegionX = x0 & ~(kRegion - 1);
+  for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
+    Overlap overlap[limits::kTileSize / kRegion + 1];
+    for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
+      overlap[(regionX - firstRegionX) / kRegion] = regionOverlap(edges, regionX, regionY);
+    // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
+    if (depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
+      for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion) {
+        Overlap& region = overlap[(regionX - firstRegionX) / kRegion];
+        if (region != Overlap::Inside || regionX < x0 || regionX + kRegion - 1 > x1) continue;
+        depthOnlyRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY);
+        region = Overlap::Outside;
+      }
+    }
+    const int bandY1 = std::min(y1, regionY + kRegion - 1);
+    for (int blockY = std::max(y0, regionY) & ~(kBlock - 1); blockY <= bandY1; blockY += kBlock) {
+      for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
+        const Overlap region = overlap[(blockX - firstRegionX) / kRegion];
+        if (region == Overlap::Outside) {   // on to the next region's first block
+          blockX = (blockX | (kRegion - 1)) - (kBlock - 1);
+          continue;
+        }
+        const uint32_t inside = region == Overlap::Inside ? 0xFFFFu
+                                : smallSteps              ? blockCoverageSmallSteps(edges, blockX, blockY)
+                                                          : blockCoverage(edges, blockX, blockY);
+        const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
+        if (coverage) visitBlock(blockX, blockY, coverage);
+      }
+    }
+  }
+}
+
+// The lane groups of one triangle inside one tile, in walk order: visit(GroupAt) for every
+// group with a covered lane.
+template <class F, class Visit>
+void walkTriangle(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout, const TileBounds& tile,
+                  Visit&& visit) {
+  const bool flipY = job.framebuffer->flipY;
+  walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+    for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
+      const unsigned laneMask = groupLaneMask(layout, flipY, coverage, g);
+      if (laneMask) visit(GroupAt{blockX + LaneLayout<F>::originX(g), blockY + LaneLayout<F>::originY(g), laneMask});
+    }
+  });
+}
+
+// Walks the bin's triangles in order through the depth test, calling
+// passed(index, tri, GroupAt of the lanes that passed, z) for every lane group of a
+// colour-writing draw with lanes left (depth-only draws stop at the test and its write).
+template <class F, class Passed>
+[[gnu::always_inline]] inline void depthTestBin(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
+                                                const LaneLayout<F>& layout, Passed&& passed) {
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
+    if constexpr (kDepthTestsInBlocks<F>) {
+      if (!writesColor) {   // depth only: no quads needed
+        walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+          depthTestBlock<F>(job, tri, blockX, blockY, coverage);
+        });
+        continue;
+      }
+    }
+    walkTriangle<F>(job, tri, layout, tile, [&](GroupAt at) {
+      F z;
+      const unsigned lanes = depthTestGroup(job, tri, layout, at, z);
+      if (lanes && writesColor) passed(index, tri, GroupAt{at.x, at.y, lanes}, z);
+    });
+  }
+}
+
+}  // namespace raster

@@ -1,0 +1,153 @@
+// The lookups for Float8 and Float8x2 lanes (AVX2 gathers and F16C; AVX-512 where built):
+// overloads of sampler.h's sampling::lookup*() names, each bit-identical to the reference
+// lane for lane. The 8-lane samplers live in sample_color_avx2.cpp and
+// sample_compare_avx2.cpp; Float8x2 lookups issue both groups' texel loads before either
+// blends, so their cache misses overlap.
+#pragma once
+
+#include "raster/simd/isa.h"
+#if RASTER_AVX2
+#include "raster/texture/sampler.h"
+
+namespace raster::sampling {
+
+// ---- the 8-lane samplers (sample_*_avx2.cpp) -----------------------------------------------
+
+// The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
+simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
+
+// The (2R + 1)^2 lookups at (s + i * step, t + j * step), i and j in -R..R, each
+// bit-identical to compareLinearClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
+// Overlapping taps share their texels. Defined for R = 1 and 2 (sample_compare.cpp).
+template <int R>
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref,
+                  simd::Float8* taps);
+// Two such grids (Float8x2 shading), each bit-identical to compareGrid8: both groups'
+// texel rows are loaded before either blends, so their cache misses overlap.
+template <int R>
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
+                    const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
+
+// The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
+
+// The same lookups where only the lanes in `live` are needed: the others' results are
+// unspecified (zero where their loads are skipped).
+void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]);
+
+// Two independent 8-lane lookups at once (Float8x2 shading), each bit-identical to
+// sampleColor8: every texel load of both is issued before either blends, so their cache
+// misses overlap. The second form takes `live` masks as the masked sampleColor8.
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], simd::Float8 out[2][4]);
+void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
+                    simd::Float8 out[2][4]);
+
+#if RASTER_ZMM_PAIRS
+// The same for Float8x2 in one 512-bit register, with the result in that form too; the
+// second form takes `live` lanes as the masked sampleColor8.
+void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]);
+void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
+#endif
+
+// The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
+// sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
+// CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
+void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,
+                      simd::Float8 (*taps)[4]);
+
+// Float8x2 lookups are two 8-lane lookups, one per half.
+// Two halves' channel planes (r, g, b, a each), as one colour.
+inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&lo)[4], const simd::Float8 (&hi)[4]) {
+  return {{lo[0], hi[0]}, {lo[1], hi[1]}, {lo[2], hi[2]}, {lo[3], hi[3]}};
+}
+// The same for a sampleColor8x2 lookup's planes.
+inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) { return joinHalves(rgba[0], rgba[1]); }
+
+// ---- the lookups of sampler.h, for Float8 and Float8x2 -------------------------------------
+
+[[gnu::always_inline]] inline glsl::vec4<simd::Float8> lookupColor(const Texture& texture, glsl::vec2<simd::Float8> uv) {
+  simd::Float8 rgba[4];
+  sampleColor8(texture, uv.x, uv.y, rgba);
+  return {rgba[0], rgba[1], rgba[2], rgba[3]};
+}
+
+[[gnu::always_inline]] inline glsl::vec4<simd::Float8x2> lookupColor(const Texture& texture,
+                                                                     glsl::vec2<simd::Float8x2> uv) {
+#if RASTER_ZMM_PAIRS
+  simd::Float8x2 rgba[4];
+  sampleColor8x2(texture, uv.x, uv.y, rgba);
+  return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#else
+  const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
+  simd::Float8 rgba[2][4];
+  sampleColor8x2(texture, s, t, rgba);
+  return joinHalves(rgba);
+#endif
+}
+
+[[gnu::always_inline]] inline glsl::vec4<simd::Float8> lookupColorWhere(simd::Mask8 needed, const Texture& texture,
+                                                                        glsl::vec2<simd::Float8> uv) {
+  simd::Float8 rgba[4];
+  sampleColor8(texture, uv.x, uv.y, needed, rgba);
+  return {rgba[0], rgba[1], rgba[2], rgba[3]};
+}
+
+[[gnu::always_inline]] inline glsl::vec4<simd::Float8x2> lookupColorWhere(simd::Mask8x2 needed, const Texture& texture,
+                                                                          glsl::vec2<simd::Float8x2> uv) {
+#if RASTER_ZMM_PAIRS
+  simd::Float8x2 rgba[4];
+  sampleColor8x2(texture, uv.x, uv.y, needed, rgba);
+  return {rgba[0], rgba[1], rgba[2], rgba[3]};
+#else
+  const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
+  const simd::Mask8 live[2] = {needed.low(), needed.high()};
+  simd::Float8 rgba[2][4];
+  sampleColor8x2(texture, s, t, live, rgba);
+  return joinHalves(rgba);
+#endif
+}
+
+[[gnu::always_inline]] inline simd::Float8 lookupCompare(const Texture& depth, glsl::vec2<simd::Float8> uv,
+                                                         simd::Float8 ref) {
+  return compareLinearClamp8(depth, uv.x, uv.y, ref);
+}
+
+[[gnu::always_inline]] inline simd::Float8x2 lookupCompare(const Texture& depth, glsl::vec2<simd::Float8x2> uv,
+                                                           simd::Float8x2 ref) {
+  return {compareLinearClamp8(depth, uv.x.low(), uv.y.low(), ref.low()),
+          compareLinearClamp8(depth, uv.x.high(), uv.y.high(), ref.high())};
+}
+
+[[gnu::always_inline]] inline void lookupColorGrid3x3(const Texture& texture, glsl::vec2<simd::Float8> uv,
+                                                      glm::vec2 step, glsl::vec4<simd::Float8> (&taps)[3][3]) {
+  simd::Float8 planes[9][4];
+  sampleColorGrid8(texture, uv.x, uv.y, step.x, step.y, planes);
+  for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
+}
+
+[[gnu::always_inline]] inline void lookupColorGrid3x3(const Texture& texture, glsl::vec2<simd::Float8x2> uv,
+                                                      glm::vec2 step, glsl::vec4<simd::Float8x2> (&taps)[3][3]) {
+  simd::Float8 lo[9][4], hi[9][4];
+  sampleColorGrid8(texture, uv.x.low(), uv.y.low(), step.x, step.y, lo);
+  sampleColorGrid8(texture, uv.x.high(), uv.y.high(), step.x, step.y, hi);
+  for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = joinHalves(lo[k], hi[k]);
+}
+
+template <int N>
+void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8> uv, float step, simd::Float8 ref,
+                       simd::Float8 (&taps)[N][N]) {
+  compareGrid8<N / 2>(depth, uv.x, uv.y, step, ref, &taps[0][0]);
+}
+
+template <int N>
+void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8x2> uv, float step, simd::Float8x2 ref,
+                       simd::Float8x2 (&taps)[N][N]) {
+  constexpr int R = N / 2, kTaps = N * N;
+  simd::Float8 lo[kTaps], hi[kTaps];
+  const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()}, refs[2] = {ref.low(), ref.high()};
+  compareGrid8x2<R>(depth, s, t, step, refs, lo, hi);
+  for (int k = 0; k < kTaps; ++k) taps[k / N][k % N] = {lo[k], hi[k]};
+}
+
+}  // namespace raster::sampling
+#endif

@@ -99,71 +99,18 @@ simd::Lanes<N> cvt(ULanes<N> u) { simd::Lanes<N> f; for (int i = 0; i < N; ++i) 
 template <int N>
 simd::Mask<N> eq(ULanes<N> a, ULanes<N> b) { simd::Mask<N> m; for (int i = 0; i < N; ++i) m.lane[i] = a.lane[i] == b.lane[i]; return m; }
 
-#if RASTER_AVX2
-struct U8 {
-  __m256i v;
-  U8() = default;
-  U8(uint32_t s) : v(_mm256_set1_epi32(int(s))) {}  // NOLINT: broadcast
-  explicit U8(__m256i x) : v(x) {}
-  friend U8 operator&(U8 a, U8 b) { return U8(_mm256_and_si256(a.v, b.v)); }
-  friend U8 operator|(U8 a, U8 b) { return U8(_mm256_or_si256(a.v, b.v)); }
-  friend U8 operator^(U8 a, U8 b) { return U8(_mm256_xor_si256(a.v, b.v)); }
-  friend U8 operator+(U8 a, U8 b) { return U8(_mm256_add_epi32(a.v, b.v)); }
-  friend U8 operator-(U8 a, U8 b) { return U8(_mm256_sub_epi32(a.v, b.v)); }
-  friend U8 operator~(U8 a) { return U8(_mm256_xor_si256(a.v, _mm256_set1_epi32(-1))); }
-  friend U8 operator<<(U8 a, int n) { return U8(_mm256_slli_epi32(a.v, n)); }
-  friend U8 operator>>(U8 a, int n) { return U8(_mm256_srli_epi32(a.v, n)); }
-};
-inline U8 asBits(simd::Float8 f) { return U8(_mm256_castps_si256(f.v)); }
-inline simd::Float8 asFloat(U8 u) { return simd::Float8(_mm256_castsi256_ps(u.v)); }
-inline U8 cvtt(simd::Float8 f) { return U8(_mm256_cvttps_epi32(f.v)); }
-inline simd::Float8 cvt(U8 u) { return simd::Float8(_mm256_cvtepi32_ps(u.v)); }
-inline simd::Mask8 eq(U8 a, U8 b) { return {_mm256_castsi256_ps(_mm256_cmpeq_epi32(a.v, b.v))}; }
+template <class F> struct IntLanesOf;
+template <> struct IntLanesOf<float> { using type = uint32_t; };
+template <int N> struct IntLanesOf<simd::Lanes<N>> { using type = ULanes<N>; };
 
-#if RASTER_ZMM_PAIRS
-// Float8x2 in one 512-bit register: the same, all 16 lanes at once.
-struct U8x2 {
-  __m512i v;
-  U8x2() = default;
-  U8x2(uint32_t s) : v(_mm512_set1_epi32(int(s))) {}  // NOLINT: broadcast
-  explicit U8x2(__m512i x) : v(x) {}
-  friend U8x2 operator&(U8x2 a, U8x2 b) { return U8x2(_mm512_and_si512(a.v, b.v)); }
-  friend U8x2 operator|(U8x2 a, U8x2 b) { return U8x2(_mm512_or_si512(a.v, b.v)); }
-  friend U8x2 operator^(U8x2 a, U8x2 b) { return U8x2(_mm512_xor_si512(a.v, b.v)); }
-  friend U8x2 operator+(U8x2 a, U8x2 b) { return U8x2(_mm512_add_epi32(a.v, b.v)); }
-  friend U8x2 operator-(U8x2 a, U8x2 b) { return U8x2(_mm512_sub_epi32(a.v, b.v)); }
-  friend U8x2 operator~(U8x2 a) { return U8x2(_mm512_xor_si512(a.v, _mm512_set1_epi32(-1))); }
-  friend U8x2 operator<<(U8x2 a, int n) { return U8x2(_mm512_slli_epi32(a.v, unsigned(n))); }
-  friend U8x2 operator>>(U8x2 a, int n) { return U8x2(_mm512_srli_epi32(a.v, unsigned(n))); }
-};
-inline U8x2 asBits(simd::Float8x2 f) { return U8x2(_mm512_castps_si512(f.v)); }
-inline simd::Float8x2 asFloat(U8x2 u) { return simd::Float8x2(_mm512_castsi512_ps(u.v)); }
-inline U8x2 cvtt(simd::Float8x2 f) { return U8x2(_mm512_cvttps_epi32(f.v)); }
-inline simd::Float8x2 cvt(U8x2 u) { return simd::Float8x2(_mm512_cvtepi32_ps(u.v)); }
-inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
-#else
-// Float8x2: the same, half by half.
-struct U8x2 {
-  U8 lo, hi;
-  U8x2() = default;
-  U8x2(uint32_t s) : lo(s), hi(s) {}  // NOLINT: broadcast
-  U8x2(U8 low, U8 high) : lo(low), hi(high) {}
-  friend U8x2 operator&(U8x2 a, U8x2 b) { return {a.lo & b.lo, a.hi & b.hi}; }
-  friend U8x2 operator|(U8x2 a, U8x2 b) { return {a.lo | b.lo, a.hi | b.hi}; }
-  friend U8x2 operator^(U8x2 a, U8x2 b) { return {a.lo ^ b.lo, a.hi ^ b.hi}; }
-  friend U8x2 operator+(U8x2 a, U8x2 b) { return {a.lo + b.lo, a.hi + b.hi}; }
-  friend U8x2 operator-(U8x2 a, U8x2 b) { return {a.lo - b.lo, a.hi - b.hi}; }
-  friend U8x2 operator~(U8x2 a) { return {~a.lo, ~a.hi}; }
-  friend U8x2 operator<<(U8x2 a, int n) { return {a.lo << n, a.hi << n}; }
-  friend U8x2 operator>>(U8x2 a, int n) { return {a.lo >> n, a.hi >> n}; }
-};
-inline U8x2 asBits(simd::Float8x2 f) { return {asBits(f.lo), asBits(f.hi)}; }
-inline simd::Float8x2 asFloat(U8x2 u) { return {asFloat(u.lo), asFloat(u.hi)}; }
-inline U8x2 cvtt(simd::Float8x2 f) { return {cvtt(f.lo), cvtt(f.hi)}; }
-inline simd::Float8x2 cvt(U8x2 u) { return {cvt(u.lo), cvt(u.hi)}; }
-inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {eq(a.lo, b.lo), eq(a.hi, b.hi)}; }
-#endif
-#endif
+}  // namespace detail
+}  // namespace raster::glsl
+
+// The integer lanes of the vector lane types (simd/isa.h chooses which exist).
+#include "raster/simd/gl_math_avx2.h"
+
+namespace raster::glsl {
+namespace detail {
 
 // Every vector lane type (Lanes<N>, Float8, Float8x2): its own operations from simd/lanes.h.
 template <class F>
@@ -175,13 +122,6 @@ template <VectorLanes F> F sqrtF(F a) { return simd::sqrt(a); }
 template <VectorLanes F> F minps(F a, F b) { return simd::min(a, b); }
 template <VectorLanes F> F maxps(F a, F b) { return simd::max(a, b); }
 
-template <class F> struct IntLanesOf;
-template <> struct IntLanesOf<float> { using type = uint32_t; };
-template <int N> struct IntLanesOf<simd::Lanes<N>> { using type = ULanes<N>; };
-#if RASTER_AVX2
-template <> struct IntLanesOf<simd::Float8> { using type = U8; };
-template <> struct IntLanesOf<simd::Float8x2> { using type = U8x2; };
-#endif
 template <class F> using UOf = typename IntLanesOf<F>::type;
 
 // The lane types these functions accept.

@@ -25,7 +25,7 @@ namespace compare {
 namespace {
 
 using scenes::ImageData;
-using scenes::TextureFormat;
+using scenes::TexelFormat;
 
 constexpr int kMaxPfmSide = 1 << 16;   // far above any target; keeps size arithmetic safe
 
@@ -226,7 +226,7 @@ ImageData readPng(const std::string& path) {
   ImageData image;
   image.width = width;
   image.height = height;
-  image.format = TextureFormat::RGBA8;
+  image.format = TexelFormat::RGBA8;
   image.rgba8.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
   stbi_image_free(pixels);
   return image;
@@ -239,7 +239,7 @@ ImageData readPfmDepth(const std::string& path, int depthBits) {
   image.width = pfm.width;
   image.height = pfm.height;
   image.channels = 1;
-  image.format = depthBits == 16 ? TextureFormat::Depth16 : TextureFormat::Depth24;
+  image.format = depthBits == 16 ? TexelFormat::Depth16 : TexelFormat::Depth24;
   image.depthBits = depthBits;
   // Every value must be an integer code within the depth range.
   const double largest = std::ldexp(1.0, depthBits) - 1.0;
@@ -258,7 +258,7 @@ ImageData readPfmFloat(const std::string& path) {
   ImageData image;
   image.width = pfm.width;
   image.height = pfm.height;
-  image.format = TextureFormat::RGBA16F;
+  image.format = TexelFormat::RGBA16F;
   if (pfm.channels == 1) {
     image.channels = 1;
     image.floats = std::move(pfm.values);

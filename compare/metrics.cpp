@@ -13,24 +13,24 @@ namespace compare {
 namespace {
 
 using scenes::ImageData;
-using scenes::TextureFormat;
+using scenes::TexelFormat;
 
 enum class Kind { Rgba8, Depth, Half };
 
 Kind kindOf(const ImageData& image) {
   const size_t pixels = size_t(image.width) * size_t(image.height);
   switch (image.format) {
-    case TextureFormat::RGBA8:
+    case TexelFormat::RGBA8:
       if (image.rgba8.size() == pixels * 4) return Kind::Rgba8;
       break;
-    case TextureFormat::Depth16:
-    case TextureFormat::Depth24:
+    case TexelFormat::Depth16:
+    case TexelFormat::Depth24:
       if (image.depth.size() == pixels && image.depthBits > 0 && image.depthBits <= 32)
         return Kind::Depth;
       break;
-    case TextureFormat::RGBA16F:
-    case TextureFormat::RGB16F:
-    case TextureFormat::RGBA32F:
+    case TexelFormat::RGBA16F:
+    case TexelFormat::RGB16F:
+    case TexelFormat::RGBA32F:
       if (image.channels > 0 && image.floats.size() == pixels * size_t(image.channels))
         return Kind::Half;
       break;

@@ -22,6 +22,9 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/contract.h"
+#include "raster/texture/texture.h"
+
 namespace scenes {
 
 using Handle = int;                    // 0 means "none" / the default framebuffer
@@ -45,23 +48,17 @@ struct MeshData {
   std::vector<VertexAttribute> instanceAttributes;
 };
 
-// RGB16F is a sampled-only texture uploaded from 3 floats a texel (the HDR environment);
-// RGBA32F is a render target for tests that need exact float results.
-enum class TextureFormat { Depth24, Depth16, RGBA8, RGBA16F, RGB16F, RGBA32F };
-enum class Filter { Nearest, Linear };
-enum class Wrap { Repeat, ClampToEdge };
-
-struct SamplerState {
-  Filter filter = Filter::Linear;        // min and mag alike; no mipmaps
-  Wrap wrapS = Wrap::ClampToEdge;
-  Wrap wrapT = Wrap::ClampToEdge;
-  bool compareLequal = false;            // GL_COMPARE_REF_TO_TEXTURE with GL_LEQUAL
-};
+// Formats, filters, wraps and compare modes are the pipeline's own vocabulary
+// (raster/texture/texture.h), which both backends map to what they run.
+using raster::Filter;
+using raster::SamplerState;
+using raster::TexelFormat;
+using raster::Wrap;
 
 struct TextureDesc {
   int width = 0;
   int height = 0;
-  TextureFormat format = TextureFormat::RGBA8;
+  TexelFormat format = TexelFormat::RGBA8;
   SamplerState sampler;
 };
 
@@ -84,7 +81,7 @@ struct ClearOp {
   float depthValue = 1.0f;
 };
 
-enum class DepthFunc { Less, Lequal };
+using raster::DepthFunc;
 enum class CullMode { None, Back };
 
 struct DrawState {
@@ -109,7 +106,7 @@ struct ImageData {
   int width = 0;
   int height = 0;
   int channels = 4;
-  TextureFormat format = TextureFormat::RGBA8;
+  TexelFormat format = TexelFormat::RGBA8;
   std::vector<uint8_t> rgba8;
   std::vector<float> floats;
   std::vector<uint32_t> depth;

@@ -174,16 +174,16 @@ class GlBackend : public Backend {
   }
 
   Handle createTexture(const TextureDesc& desc, const void* pixels) override {
-    // Upload formats per TextureFormat: {internal format, format, type}.
+    // Upload formats per TexelFormat: {internal format, format, type}.
     GLint internal = GL_RGBA8;
     GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
     switch (desc.format) {
-      case TextureFormat::Depth24: internal = GL_DEPTH_COMPONENT24; format = GL_DEPTH_COMPONENT; type = GL_UNSIGNED_INT; break;
-      case TextureFormat::Depth16: internal = GL_DEPTH_COMPONENT16; format = GL_DEPTH_COMPONENT; type = GL_UNSIGNED_INT; break;
-      case TextureFormat::RGBA8: break;
-      case TextureFormat::RGBA16F: internal = GL_RGBA16F; type = GL_FLOAT; break;
-      case TextureFormat::RGB16F: internal = GL_RGB16F; format = GL_RGB; type = GL_FLOAT; break;
-      case TextureFormat::RGBA32F: internal = GL_RGBA32F; type = GL_FLOAT; break;
+      case TexelFormat::Depth24: internal = GL_DEPTH_COMPONENT24; format = GL_DEPTH_COMPONENT; type = GL_UNSIGNED_INT; break;
+      case TexelFormat::Depth16: internal = GL_DEPTH_COMPONENT16; format = GL_DEPTH_COMPONENT; type = GL_UNSIGNED_INT; break;
+      case TexelFormat::RGBA8: break;
+      case TexelFormat::RGBA16F: internal = GL_RGBA16F; type = GL_FLOAT; break;
+      case TexelFormat::RGB16F: internal = GL_RGB16F; format = GL_RGB; type = GL_FLOAT; break;
+      case TexelFormat::RGBA32F: internal = GL_RGBA32F; type = GL_FLOAT; break;
     }
     // Create through the active unit, leaving its binding as it was.
     GLint previous = 0;
@@ -324,7 +324,7 @@ class GlBackend : public Backend {
   ImageData readColor(Handle framebuffer, int attachment) override {
     // The default framebuffer is RGBA8; an FBO attachment has its texture's format.
     ImageData image;
-    image.format = TextureFormat::RGBA8;
+    image.format = TexelFormat::RGBA8;
     image.width = width_;
     image.height = height_;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(framebuffer));
@@ -339,7 +339,7 @@ class GlBackend : public Backend {
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + attachment));
     }
     size_t rowElements = size_t(image.width) * 4;
-    if (image.format == TextureFormat::RGBA16F || image.format == TextureFormat::RGBA32F) {
+    if (image.format == TexelFormat::RGBA16F || image.format == TexelFormat::RGBA32F) {
       image.floats.resize(rowElements * size_t(image.height));
       glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.floats.data());
       flipRows(image.floats, rowElements);
@@ -354,7 +354,7 @@ class GlBackend : public Backend {
 
   ImageData readDepth(Handle framebuffer) override {
     ImageData image;
-    image.format = TextureFormat::Depth24;
+    image.format = TexelFormat::Depth24;
     image.width = width_;
     image.height = height_;
     if (framebuffer != kDefaultFramebuffer) {
@@ -365,7 +365,7 @@ class GlBackend : public Backend {
       image.width = tex.width;
       image.height = tex.height;
     }
-    image.depthBits = image.format == TextureFormat::Depth16 ? 16 : 24;
+    image.depthBits = image.format == TexelFormat::Depth16 ? 16 : 24;
     image.channels = 1;
 
     // Mesa packs an n-bit depth code d into GL_UNSIGNED_INT by bit replication

@@ -16,27 +16,6 @@
 namespace scenes {
 namespace {
 
-raster::TexelFormat toTexelFormat(TextureFormat f) {
-  switch (f) {
-    case TextureFormat::Depth24: return raster::TexelFormat::Depth24;
-    case TextureFormat::Depth16: return raster::TexelFormat::Depth16;
-    case TextureFormat::RGBA8: return raster::TexelFormat::RGBA8;
-    case TextureFormat::RGBA16F:
-    case TextureFormat::RGB16F: return raster::TexelFormat::RGBA16F;   // stored with alpha 1, as llvmpipe's RGBX
-    case TextureFormat::RGBA32F: return raster::TexelFormat::RGBA32F;
-  }
-  throw std::logic_error("unknown texture format");
-}
-
-raster::SamplerState toSamplerState(const SamplerState& s) {
-  raster::SamplerState r;
-  r.filter = s.filter == Filter::Linear ? raster::Filter::Linear : raster::Filter::Nearest;
-  r.wrapS = s.wrapS == Wrap::Repeat ? raster::Wrap::Repeat : raster::Wrap::ClampToEdge;
-  r.wrapT = s.wrapT == Wrap::Repeat ? raster::Wrap::Repeat : raster::Wrap::ClampToEdge;
-  r.compareLequal = s.compareLequal;
-  return r;
-}
-
 struct Mesh {
   MeshData data;
   raster::VertexStream stream;
@@ -57,8 +36,8 @@ class RasterBackend final : public Backend {
 
   void resizeDefaultFramebuffer(int width, int height) override {
     renderer_.flush();
-    defaultColor_ = raster::Texture(width, height, raster::TexelFormat::RGBA8);
-    defaultDepth_ = raster::Texture(width, height, raster::TexelFormat::Depth24);
+    defaultColor_ = raster::Texture(width, height, TexelFormat::RGBA8);
+    defaultDepth_ = raster::Texture(width, height, TexelFormat::Depth24);
     raster::Framebuffer& fb = framebuffers_[kDefaultFramebuffer];
     fb.colors = {&defaultColor_};
     fb.depth = &defaultDepth_;
@@ -90,10 +69,10 @@ class RasterBackend final : public Backend {
   }
 
   Handle createTexture(const TextureDesc& desc, const void* pixels) override {
-    auto t = std::make_unique<raster::Texture>(desc.width, desc.height, toTexelFormat(desc.format));
-    t->sampler = toSamplerState(desc.sampler);
-    if (pixels) upload(*t, pixels, desc.format == TextureFormat::RGB16F ? 3 : 4);
-    else if (desc.format == TextureFormat::RGB16F) upload(*t, nullptr, 3);
+    auto t = std::make_unique<raster::Texture>(desc.width, desc.height, desc.format);
+    t->sampler = desc.sampler;
+    if (pixels) upload(*t, pixels, desc.format == TexelFormat::RGB16F ? 3 : 4);
+    else if (desc.format == TexelFormat::RGB16F) upload(*t, nullptr, 3);
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
   }
@@ -136,7 +115,7 @@ class RasterBackend final : public Backend {
     const Mesh& m = *meshes_[size_t(mesh)];
     raster::RasterState rs;
     rs.depthTest = state.depthTest;
-    rs.depthFunc = state.depthFunc == DepthFunc::Less ? raster::DepthFunc::Less : raster::DepthFunc::Lequal;
+    rs.depthFunc = state.depthFunc;
     rs.depthWrite = state.depthWrite;
     rs.cullBack = state.cull == CullMode::Back;
     rs.polygonOffset = state.polygonOffset;
@@ -156,9 +135,9 @@ class RasterBackend final : public Backend {
     ImageData image = imageHeader(t);
     for (int row = 0; row < t.height; ++row) {
       const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width) * 4;
-      if (t.format == raster::TexelFormat::RGBA8) {
+      if (t.format == TexelFormat::RGBA8) {
         image.rgba8.insert(image.rgba8.end(), t.rgba8.begin() + long(src), t.rgba8.begin() + long(src + size_t(t.width) * 4));
-      } else if (t.format == raster::TexelFormat::RGBA32F) {
+      } else if (t.format == TexelFormat::RGBA32F) {
         image.floats.insert(image.floats.end(), t.f32.begin() + long(src), t.f32.begin() + long(src + size_t(t.width) * 4));
       } else {
         for (size_t i = 0; i < size_t(t.width) * 4; ++i) image.floats.push_back(raster::format::floatFromHalf(t.half[src + i]));
@@ -202,13 +181,7 @@ class RasterBackend final : public Backend {
     image.height = t.height;
     image.channels = t.isDepth() ? 1 : 4;
     image.depthBits = t.depthBits();
-    switch (t.format) {
-      case raster::TexelFormat::RGBA8: image.format = TextureFormat::RGBA8; break;
-      case raster::TexelFormat::RGBA16F: image.format = TextureFormat::RGBA16F; break;
-      case raster::TexelFormat::RGBA32F: image.format = TextureFormat::RGBA32F; break;
-      case raster::TexelFormat::Depth16: image.format = TextureFormat::Depth16; break;
-      case raster::TexelFormat::Depth24: image.format = TextureFormat::Depth24; break;
-    }
+    image.format = t.format;   // a Texture never holds RGB16F (it stores RGBA16F)
     return image;
   }
 
@@ -218,16 +191,16 @@ class RasterBackend final : public Backend {
   // alpha 1 (null pixels: undefined in GL, zero here).
   static void upload(raster::Texture& t, const void* pixels, int channels) {
     const size_t texels = size_t(t.width) * size_t(t.height);
-    if (t.format == raster::TexelFormat::RGBA8) {
+    if (t.format == TexelFormat::RGBA8) {
       const auto* src = static_cast<const uint8_t*>(pixels);
       if (src) t.rgba8.assign(src, src + texels * 4);
-    } else if (t.format == raster::TexelFormat::RGBA16F) {
+    } else if (t.format == TexelFormat::RGBA16F) {
       const auto* src = static_cast<const float*>(pixels);
       for (size_t i = 0; i < texels; ++i)
         for (int c = 0; c < 4; ++c)
           t.half[i * 4 + size_t(c)] = c < channels ? (src ? raster::format::halfFromFloatTowardZero(src[i * size_t(channels) + size_t(c)]) : 0)
                                                    : raster::format::halfFromFloatTowardZero(1.0f);
-    } else if (t.format == raster::TexelFormat::RGBA32F) {
+    } else if (t.format == TexelFormat::RGBA32F) {
       const auto* src = static_cast<const float*>(pixels);
       if (src) t.f32.assign(src, src + texels * 4);
     } else {

@@ -26,7 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using scenes::ImageData;
-using scenes::TextureFormat;
+using scenes::TexelFormat;
 
 // A fresh temporary folder, removed with its content afterwards.
 struct TempFolder {
@@ -93,7 +93,7 @@ ImageData rgba8Image(int width, int height, uint8_t value) {
   ImageData image;
   image.width = width;
   image.height = height;
-  image.format = TextureFormat::RGBA8;
+  image.format = TexelFormat::RGBA8;
   image.rgba8.assign(size_t(width) * height * 4, value);
   return image;
 }
@@ -102,7 +102,7 @@ ImageData halfImage(std::vector<float> rgba) {
   ImageData image;
   image.width = int(rgba.size() / 4);
   image.height = 1;
-  image.format = TextureFormat::RGBA16F;
+  image.format = TexelFormat::RGBA16F;
   image.floats = std::move(rgba);
   return image;
 }
@@ -112,7 +112,7 @@ ImageData depthImage(int width, int height, std::vector<uint32_t> codes) {
   image.width = width;
   image.height = height;
   image.channels = 1;
-  image.format = TextureFormat::Depth24;
+  image.format = TexelFormat::Depth24;
   image.depthBits = 24;
   image.depth = std::move(codes);
   return image;

@@ -64,7 +64,7 @@ TEST_SUITE("derivatives") {
     BackendPair backends;
     constexpr int kSize = 64;
     constexpr float kScale = 1.0f / 8.0f;   // v = window position / 8
-    const TargetDesc target{kSize, kSize, TextureFormat::RGBA16F, std::nullopt};
+    const TargetDesc target{kSize, kSize, TexelFormat::RGBA16F, std::nullopt};
     const BothRendered r = renderBoth(backends, target, {derivativesDraw(screenAlignedTriangle(kSize, kSize, kScale, kScale))},
                                       clearTo(kClear));
     const FloatComparison cmp = compareFloatBits(*r.raster.color, *r.gl.color);
@@ -128,7 +128,7 @@ TEST_SUITE("derivatives") {
           vertices.push_back({clipFromWindow(p, 0.0f, uniform(rng, 0.5f, 3.0f), width, height), value});
         }
       }
-      const TargetDesc target{width, height, TextureFormat::RGBA16F, std::nullopt};
+      const TargetDesc target{width, height, TexelFormat::RGBA16F, std::nullopt};
       const BothRendered r = renderBoth(backends, target, {derivativesDraw(vertices)}, clearTo(kClear));
       const FloatComparison cmp = compareFloatBits(*r.raster.color, *r.gl.color);
       int covered = 0;

@@ -135,11 +135,11 @@ TEST_SUITE("gl_backend") {
       ImageData image = backend->readColor(kDefaultFramebuffer);
       REQUIRE(image.width == 8);
       REQUIRE(image.height == 4);
-      CHECK(image.format == TextureFormat::RGBA8);
+      CHECK(image.format == TexelFormat::RGBA8);
       for (int i = 0; i < 8 * 4; ++i) CHECK(pixel(image, i % 8, i / 8) == "255,128,0,51");
     }
     SUBCASE("RGBA16F attachment: exact half values, unclamped") {
-      TextureDesc desc{4, 4, TextureFormat::RGBA16F, {}};
+      TextureDesc desc{4, 4, TexelFormat::RGBA16F, {}};
       FramebufferDesc fbDesc;
       fbDesc.colorTextures = {backend->createTexture(desc)};
       Handle fb = backend->createFramebuffer(fbDesc);
@@ -147,7 +147,7 @@ TEST_SUITE("gl_backend") {
       backend->beginPass(fb, {0, 0, 4, 4}, clear);
       ImageData image = backend->readColor(fb);
       REQUIRE(image.floats.size() == 4 * 4 * 4);
-      CHECK(image.format == TextureFormat::RGBA16F);
+      CHECK(image.format == TexelFormat::RGBA16F);
       // 0.1 rounds to the half 1638 / 16384; the others are exact halves.
       for (int i = 0; i < 16; ++i) {
         CHECK(image.floats[size_t(i) * 4 + 0] == 1638.0f / 16384.0f);
@@ -165,8 +165,8 @@ TEST_SUITE("gl_backend") {
     ClearOp clear;
     clear.depth = true;
     for (float z : {0.3f, 0.0f, 1.0f, 0.123456f}) {
-      for (TextureFormat format : {TextureFormat::Depth24, TextureFormat::Depth16}) {
-        int bits = format == TextureFormat::Depth24 ? 24 : 16;
+      for (TexelFormat format : {TexelFormat::Depth24, TexelFormat::Depth16}) {
+        int bits = format == TexelFormat::Depth24 ? 24 : 16;
         CAPTURE(z);
         CAPTURE(bits);
         TextureDesc desc{5, 3, format, {}};
@@ -197,8 +197,8 @@ TEST_SUITE("gl_backend") {
     TempShaderRoot shaders;
     auto backend = makeGlBackend();
     SUBCASE("RGBA8 framebuffer object") {
-      TextureDesc color{16, 16, TextureFormat::RGBA8, {}};
-      TextureDesc depth{16, 16, TextureFormat::Depth24, {}};
+      TextureDesc color{16, 16, TexelFormat::RGBA8, {}};
+      TextureDesc depth{16, 16, TexelFormat::Depth24, {}};
       FramebufferDesc fbDesc;
       fbDesc.colorTextures = {backend->createTexture(color)};
       fbDesc.depthTexture = backend->createTexture(depth);
@@ -213,7 +213,7 @@ TEST_SUITE("gl_backend") {
   TEST_CASE("two instances with additive blending add up; a mistyped uniform throws") {
     TempShaderRoot shaders;
     auto backend = makeGlBackend();
-    TextureDesc color{16, 16, TextureFormat::RGBA8, {}};
+    TextureDesc color{16, 16, TexelFormat::RGBA8, {}};
     FramebufferDesc fbDesc;
     fbDesc.colorTextures = {backend->createTexture(color)};
     Handle fb = backend->createFramebuffer(fbDesc);

@@ -29,7 +29,7 @@ using scenes::DrawState;
 using scenes::Handle;
 using scenes::ImageData;
 using scenes::MeshData;
-using scenes::TextureFormat;
+using scenes::TexelFormat;
 using scenes::UniformValue;
 
 // ---- meshes ---------------------------------------------------------------------------
@@ -60,8 +60,8 @@ MeshData gridMesh(int width, int height, int cell, const std::function<GridCell(
 struct TargetDesc {
   int width = 64;
   int height = 64;
-  std::optional<TextureFormat> color = TextureFormat::RGBA8;   // nullopt: depth-only FBO
-  std::optional<TextureFormat> depth = TextureFormat::Depth24;  // nullopt: no depth buffer
+  std::optional<TexelFormat> color = TexelFormat::RGBA8;   // nullopt: depth-only FBO
+  std::optional<TexelFormat> depth = TexelFormat::Depth24;  // nullopt: no depth buffer
   bool defaultFramebuffer = false;  // handle 0 (RGBA8 + Depth24, window-system orientation)
 };
 

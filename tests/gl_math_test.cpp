@@ -267,7 +267,7 @@ scenes::MeshData probeMesh(const std::vector<Args>& args) {
 // Runs the probe for `func` over `args` (at most kWidth * kHeight) on a backend; returns the
 // RGBA32F image, top row first.
 scenes::ImageData runProbe(scenes::Backend& backend, int func, const std::vector<Args>& args) {
-  const scenes::Handle target = backend.createTexture({kWidth, kHeight, scenes::TextureFormat::RGBA32F, {}});
+  const scenes::Handle target = backend.createTexture({kWidth, kHeight, scenes::TexelFormat::RGBA32F, {}});
   const scenes::Handle framebuffer = backend.createFramebuffer({{target}, 0});
   const scenes::Handle program = backend.createProgram(MathProbe::kName);
   const scenes::Handle mesh = backend.createMesh(probeMesh(args));

@@ -39,8 +39,8 @@ struct Draw {
 
 struct Target {
   int width = 64, height = 64;
-  TextureFormat color = TextureFormat::RGBA8;
-  std::optional<TextureFormat> depth;
+  TexelFormat color = TexelFormat::RGBA8;
+  std::optional<TexelFormat> depth;
   bool defaultFramebuffer = false;   // RGBA8 + Depth24, stored flipped by both backends
 };
 
@@ -110,7 +110,7 @@ TEST_SUITE("hdr_features") {
   TEST_CASE("instancing: per-instance offsets and colours, gl_InstanceID, Depth16 LEQUAL, equal GL bit for bit") {
     BackendPair backends;
     std::mt19937 rng(1101);
-    const Target target{96, 80, TextureFormat::RGBA32F, TextureFormat::Depth16};
+    const Target target{96, 80, TexelFormat::RGBA32F, TexelFormat::Depth16};
     // One small shape of three triangles (a fan and a sliver), perspective w, coloured per vertex.
     std::vector<Vertex> shape;
     for (int v = 0; v < 9; ++v) {
@@ -163,7 +163,7 @@ TEST_SUITE("hdr_features") {
   TEST_CASE("instancing: the scene's 1000 instances of a 36-index cube in one draw equal GL") {
     BackendPair backends;
     std::mt19937 rng(1102);
-    const Target target{128, 96, TextureFormat::RGBA32F, TextureFormat::Depth16};
+    const Target target{128, 96, TexelFormat::RGBA32F, TexelFormat::Depth16};
     // The seed's cube (36 indices of 24 vertices), as clip-space positions at w = 1 scaled
     // small: 1000 instances on a jittered grid, each with its own colour.
     const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
@@ -193,9 +193,9 @@ TEST_SUITE("hdr_features") {
   TEST_CASE("culling: GL_BACK keeps exactly GL's counter-clockwise triangles, FBO and default framebuffer") {
     BackendPair backends;
     const Target targets[] = {
-        {96, 96, TextureFormat::RGBA8, std::nullopt, false},
-        {71, 53, TextureFormat::RGBA8, std::nullopt, false},
-        {96, 96, TextureFormat::RGBA8, std::nullopt, true},
+        {96, 96, TexelFormat::RGBA8, std::nullopt, false},
+        {71, 53, TexelFormat::RGBA8, std::nullopt, false},
+        {96, 96, TexelFormat::RGBA8, std::nullopt, true},
     };
     uint32_t seed = 1201;
     for (const Target& target : targets) {
@@ -305,7 +305,7 @@ TEST_SUITE("hdr_features") {
       pairs.push_back({dst, src});
     }
 
-    const Target target{64, 64, TextureFormat::RGBA16F, std::nullopt};
+    const Target target{64, 64, TexelFormat::RGBA16F, std::nullopt};
     const int cell = 2, columns = target.width / cell;
     REQUIRE(pairs.size() / 4 <= size_t(columns * (target.height / cell)));
     auto cellValues = [&](bool source) {
@@ -364,10 +364,10 @@ TEST_SUITE("hdr_features") {
       Viewport viewport;
     };
     const Case cases[] = {
-        {{64, 48, TextureFormat::RGBA32F, std::nullopt}, {0, 0, 20, 15}},     // a bloom-mip-like corner
-        {{64, 48, TextureFormat::RGBA32F, std::nullopt}, {5, 7, 33, 21}},     // offset, odd size
-        {{53, 61, TextureFormat::RGBA16F, std::nullopt}, {11, 3, 17, 40}},
-        {{64, 48, TextureFormat::RGBA8, std::nullopt, true}, {9, 4, 31, 27}}, // flipped default framebuffer
+        {{64, 48, TexelFormat::RGBA32F, std::nullopt}, {0, 0, 20, 15}},     // a bloom-mip-like corner
+        {{64, 48, TexelFormat::RGBA32F, std::nullopt}, {5, 7, 33, 21}},     // offset, odd size
+        {{53, 61, TexelFormat::RGBA16F, std::nullopt}, {11, 3, 17, 40}},
+        {{64, 48, TexelFormat::RGBA8, std::nullopt, true}, {9, 4, 31, 27}}, // flipped default framebuffer
     };
     for (const Case& k : cases) {
       const Viewport& vp = k.viewport;
@@ -403,7 +403,7 @@ TEST_SUITE("hdr_features") {
           const size_t at = (size_t(row) * size_t(ours.width) + size_t(x)) * 4;
           bool oursTouched = false, glTouched = false;
           for (int c = 0; c < 4; ++c) {
-            if (ours.format == TextureFormat::RGBA8) {
+            if (ours.format == TexelFormat::RGBA8) {
               oursTouched |= ours.rgba8[at + size_t(c)] != 0;
               glTouched |= gl.rgba8[at + size_t(c)] != 0;
             } else {
@@ -426,7 +426,7 @@ TEST_SUITE("hdr_features") {
       CHECK(outsideOurs == 0);
       CHECK(outsideGl == 0);
       CHECK(insideCovered == vp.width * vp.height);   // the fullscreen triangle fills the viewport
-      if (ours.format == TextureFormat::RGBA8) {
+      if (ours.format == TexelFormat::RGBA8) {
         const uint8_t clearBytes[4] = {0, 0, 0, 0};
         const Rgba8Comparison cmp = compareRgba8(ours, gl, clearBytes);
         CHECK_MESSAGE(cmp.coverageDiffs == 0, cmp.firstCoverageDiff);

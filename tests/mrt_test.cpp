@@ -28,10 +28,10 @@ TEST_SUITE("raster_vs_gl") {
     for (int k = 0; k < 2; ++k) {
       Backend& b = *sides[k];
       const scenes::SamplerState nearest{scenes::Filter::Nearest, scenes::Wrap::ClampToEdge, scenes::Wrap::ClampToEdge, false};
-      const Handle c0 = b.createTexture({kW, kH, TextureFormat::RGBA8, nearest});
-      const Handle c1 = b.createTexture({kW, kH, TextureFormat::RGBA16F, nearest});
-      const Handle c2 = b.createTexture({kW, kH, TextureFormat::RGBA16F, nearest});
-      const Handle depth = b.createTexture({kW, kH, TextureFormat::Depth16, nearest});
+      const Handle c0 = b.createTexture({kW, kH, TexelFormat::RGBA8, nearest});
+      const Handle c1 = b.createTexture({kW, kH, TexelFormat::RGBA16F, nearest});
+      const Handle c2 = b.createTexture({kW, kH, TexelFormat::RGBA16F, nearest});
+      const Handle depth = b.createTexture({kW, kH, TexelFormat::Depth16, nearest});
       const Handle fb = b.createFramebuffer({{c0, c1, c2}, depth});
       const Handle program = b.createProgram("test/mrt");
       const Handle m = b.createMesh(mesh);

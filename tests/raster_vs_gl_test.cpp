@@ -135,7 +135,7 @@ std::string targetName(const TargetDesc& t) {
   std::ostringstream s;
   s << t.width << "x" << t.height;
   if (t.defaultFramebuffer) s << " default framebuffer";
-  else s << (t.depth == TextureFormat::Depth16 ? " Depth16" : " Depth24");
+  else s << (t.depth == TexelFormat::Depth16 ? " Depth16" : " Depth24");
   return s.str();
 }
 
@@ -327,9 +327,9 @@ TEST_SUITE("raster_vs_gl") {
   TEST_CASE("(a) random triangles: slivers, sub-pixel, half-pixel-grid vertices, perspective w") {
     BackendPair backends;
     const TargetDesc targets[] = {
-        {64, 64, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {100, 75, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {64, 64, TextureFormat::RGBA8, TextureFormat::Depth16},
+        {64, 64, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {100, 75, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {64, 64, TexelFormat::RGBA8, TexelFormat::Depth16},
         {80, 60, std::nullopt, std::nullopt, true},
     };
     uint32_t seed = 1001;
@@ -343,9 +343,9 @@ TEST_SUITE("raster_vs_gl") {
     BackendPair backends;
     std::mt19937 rng(2002);
     const TargetDesc targets[] = {
-        {64, 64, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {67, 131, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {96, 40, TextureFormat::RGBA8, TextureFormat::Depth16},
+        {64, 64, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {67, 131, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {96, 40, TexelFormat::RGBA8, TexelFormat::Depth16},
         {72, 56, std::nullopt, std::nullopt, true},
     };
     for (const TargetDesc& target : targets) {
@@ -361,8 +361,8 @@ TEST_SUITE("raster_vs_gl") {
     BackendPair backends;
     std::mt19937 rng(3003);
     const TargetDesc targets[] = {
-        {64, 64, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {50, 70, TextureFormat::RGBA8, TextureFormat::Depth16},
+        {64, 64, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {50, 70, TexelFormat::RGBA8, TexelFormat::Depth16},
     };
     for (const TargetDesc& target : targets) {
       for (int run = 0; run < 3; ++run) {
@@ -376,8 +376,8 @@ TEST_SUITE("raster_vs_gl") {
     BackendPair backends;
     std::mt19937 rng(4004);
     const TargetDesc targets[] = {
-        {64, 64, TextureFormat::RGBA8, TextureFormat::Depth24},
-        {130, 70, TextureFormat::RGBA8, TextureFormat::Depth16},
+        {64, 64, TexelFormat::RGBA8, TexelFormat::Depth24},
+        {130, 70, TexelFormat::RGBA8, TexelFormat::Depth16},
         {40, 24, std::nullopt, std::nullopt, true},
     };
     for (const TargetDesc& target : targets) {
@@ -394,8 +394,8 @@ TEST_SUITE("raster_vs_gl") {
     std::mt19937 rng(5005);
     const int sizes[][2] = {{1, 1}, {7, 5}, {33, 17}, {67, 131}, {257, 3}};
     for (const auto& size : sizes) {
-      for (TextureFormat depth : {TextureFormat::Depth24, TextureFormat::Depth16}) {
-        const TargetDesc target{size[0], size[1], TextureFormat::RGBA8, depth};
+      for (TexelFormat depth : {TexelFormat::Depth24, TexelFormat::Depth16}) {
+        const TargetDesc target{size[0], size[1], TexelFormat::RGBA8, depth};
         compareCase(backends, "(e) 120 random triangles", target, randomTriangleMesh(rng(), 120, size[0], size[1]));
         const CaseResult r = compareCase(backends, "(e) fullscreen triangle", target, fullscreenTriangle(rng, true));
         checkEveryPixelOnce(r, target);
@@ -410,8 +410,8 @@ TEST_SUITE("raster_vs_gl") {
     BackendPair backends;
     std::mt19937 rng(6006);
     const TargetDesc targets[] = {
-        {160, 144, std::nullopt, TextureFormat::Depth24},
-        {99, 67, std::nullopt, TextureFormat::Depth16},
+        {160, 144, std::nullopt, TexelFormat::Depth24},
+        {99, 67, std::nullopt, TexelFormat::Depth16},
     };
     for (const TargetDesc& target : targets) {
       for (scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
@@ -450,8 +450,8 @@ TEST_SUITE("raster_vs_gl") {
     clear.depth = true;
     clear.depthValue = 0.5f;   // the first triangle (window z 0.625) fails LESS wherever there is depth
     const TargetDesc targets[] = {
-        {150, 100, TextureFormat::RGBA8, std::nullopt},
-        {150, 100, TextureFormat::RGBA8, TextureFormat::Depth24},
+        {150, 100, TexelFormat::RGBA8, std::nullopt},
+        {150, 100, TexelFormat::RGBA8, TexelFormat::Depth24},
         {130, 70, std::nullopt, std::nullopt, true},
     };
     // Window-space corners of a triangle whose long edge is x + y = c: pixels whose centres

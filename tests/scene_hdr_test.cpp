@@ -76,9 +76,9 @@ scenes::ImageData runPost(scenes::Backend& b, const PostCase& c, uint32_t seed) 
   const std::vector<float> src = randomHdrTexels(rng, c.srcW, c.srcH);
   const int bloomW = std::max(c.dstW / 2, 1), bloomH = std::max(c.dstH / 2, 1);
   const std::vector<float> bloom = randomHdrTexels(rng, bloomW, bloomH);
-  const scenes::Handle tex0 = b.createTexture({c.srcW, c.srcH, scenes::TextureFormat::RGBA16F, linear}, src.data());
-  const scenes::Handle tex1 = b.createTexture({bloomW, bloomH, scenes::TextureFormat::RGBA16F, linear}, bloom.data());
-  const scenes::Handle target = b.createTexture({c.dstW, c.dstH, scenes::TextureFormat::RGBA32F, linear});
+  const scenes::Handle tex0 = b.createTexture({c.srcW, c.srcH, scenes::TexelFormat::RGBA16F, linear}, src.data());
+  const scenes::Handle tex1 = b.createTexture({bloomW, bloomH, scenes::TexelFormat::RGBA16F, linear}, bloom.data());
+  const scenes::Handle target = b.createTexture({c.dstW, c.dstH, scenes::TexelFormat::RGBA32F, linear});
   const scenes::Handle fbo = b.createFramebuffer({{target}, 0});
   scenes::MeshData quad;
   quad.vertices = {-1, -1, 3, -1, -1, 3};

@@ -66,8 +66,8 @@ inline std::vector<scenes::Target> renderWithSoftpipe(const std::string& scene, 
   if (std::system(command.c_str()) != 0) throw std::runtime_error("softpipe render of " + scene + " failed");
   std::vector<scenes::Target> targets;
   for (const scenes::Target& t : like) {
-    const fs::path file = dir / (t.name + (t.image.format == scenes::TextureFormat::RGBA8 ? ".png" : ".pfm"));
-    if (t.image.format == scenes::TextureFormat::RGBA8) targets.push_back({t.name, compare::readPng(file.string())});
+    const fs::path file = dir / (t.name + (t.image.format == scenes::TexelFormat::RGBA8 ? ".png" : ".pfm"));
+    if (t.image.format == scenes::TexelFormat::RGBA8) targets.push_back({t.name, compare::readPng(file.string())});
     else if (t.image.depthBits > 0) targets.push_back({t.name, compare::readPfmDepth(file.string(), t.image.depthBits)});
     else targets.push_back({t.name, compare::readPfmFloat(file.string())});
   }

@@ -102,7 +102,7 @@ TEST_SUITE("shadow_compare") {
     };
     auto run = [&](Backend& backend) {
       Result result;
-      scenes::TextureDesc mapDesc{kMapWidth, kMapHeight, TextureFormat::Depth24, {}};
+      scenes::TextureDesc mapDesc{kMapWidth, kMapHeight, TexelFormat::Depth24, {}};
       mapDesc.sampler.filter = scenes::Filter::Linear;
       mapDesc.sampler.wrapS = mapDesc.sampler.wrapT = scenes::Wrap::ClampToEdge;
       mapDesc.sampler.compareLequal = true;
@@ -124,7 +124,7 @@ TEST_SUITE("shadow_compare") {
       backend.bindTexture(0, map);
       backend.setUniform(program, "shadow_map", 0);
       scenes::FramebufferDesc colorOnly;
-      colorOnly.colorTextures = {backend.createTexture({kTarget, kTarget, TextureFormat::RGBA16F, {}})};
+      colorOnly.colorTextures = {backend.createTexture({kTarget, kTarget, TexelFormat::RGBA16F, {}})};
       const Handle target = backend.createFramebuffer(colorOnly);
       for (const auto& in : inputs) {
         const MeshData grid = gridMesh(kTarget, kTarget, kCell, [&](int column, int row) {

@@ -23,7 +23,7 @@ using namespace gltest;
 
 struct TextureCase {
   int width, height;
-  TextureFormat format;
+  TexelFormat format;
   scenes::Filter filter;
   scenes::Wrap wrapS, wrapT;
 };
@@ -55,7 +55,7 @@ void checkLookups(const TextureCase& c, unsigned seed) {
   desc.height = c.height;
   desc.format = c.format;
   desc.sampler = {c.filter, c.wrapS, c.wrapT, false};
-  const void* pixels = c.format == TextureFormat::RGBA8 ? static_cast<const void*>(bytes.data()) : floats.data();
+  const void* pixels = c.format == TexelFormat::RGBA8 ? static_cast<const void*>(bytes.data()) : floats.data();
 
   constexpr int kSize = 128, kCell = 2;
   const MeshData mesh = gridMesh(kSize, kSize, kCell, [&](int, int) {
@@ -71,7 +71,7 @@ void checkLookups(const TextureCase& c, unsigned seed) {
     Backend& b = *sides[k];
     scenes::TextureDesc targetDesc;
     targetDesc.width = targetDesc.height = kSize;
-    targetDesc.format = TextureFormat::RGBA32F;
+    targetDesc.format = TexelFormat::RGBA32F;
     const Handle target = b.createTexture(targetDesc);
     const Handle fb = b.createFramebuffer({{target}, 0});
     const Handle texture = b.createTexture(desc, pixels);
@@ -87,7 +87,7 @@ void checkLookups(const TextureCase& c, unsigned seed) {
   }
   const FloatComparison cmp = compareFloatBits(images[0], images[1]);
   const std::string name = std::to_string(c.width) + "x" + std::to_string(c.height) +
-                           (c.format == TextureFormat::RGBA8 ? " RGBA8" : " RGBA16F") +
+                           (c.format == TexelFormat::RGBA8 ? " RGBA8" : " RGBA16F") +
                            (c.filter == scenes::Filter::Linear ? " linear" : " nearest");
   MESSAGE(name << ": " << cmp.diffs << " of " << kSize * kSize << " pixels differ " << cmp.firstDiff);
   CHECK(cmp.diffs == 0);
@@ -107,20 +107,20 @@ TEST_SUITE("texture") {
   using scenes::Filter;
   using scenes::Wrap;
   TEST_CASE("RGBA8 bilinear, repeat and clamp, power-of-two and odd sizes, equals llvmpipe") {
-    checkLookups({16, 8, TextureFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::Repeat}, 1);
-    checkLookups({16, 16, TextureFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge}, 2);
-    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 3);
-    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 4);
+    checkLookups({16, 8, TexelFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::Repeat}, 1);
+    checkLookups({16, 16, TexelFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge}, 2);
+    checkLookups({13, 7, TexelFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 3);
+    checkLookups({13, 7, TexelFormat::RGBA8, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 4);
   }
   TEST_CASE("RGBA8 nearest equals llvmpipe") {
-    checkLookups({16, 8, TextureFormat::RGBA8, Filter::Nearest, Wrap::Repeat, Wrap::ClampToEdge}, 5);
-    checkLookups({13, 7, TextureFormat::RGBA8, Filter::Nearest, Wrap::ClampToEdge, Wrap::Repeat}, 6);
+    checkLookups({16, 8, TexelFormat::RGBA8, Filter::Nearest, Wrap::Repeat, Wrap::ClampToEdge}, 5);
+    checkLookups({13, 7, TexelFormat::RGBA8, Filter::Nearest, Wrap::ClampToEdge, Wrap::Repeat}, 6);
   }
   TEST_CASE("RGBA16F bilinear and nearest equal llvmpipe") {
-    checkLookups({16, 8, TextureFormat::RGBA16F, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 7);
-    checkLookups({13, 7, TextureFormat::RGBA16F, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 8);
-    checkLookups({16, 16, TextureFormat::RGBA16F, Filter::Nearest, Wrap::Repeat, Wrap::Repeat}, 9);
-    checkLookups({13, 7, TextureFormat::RGBA16F, Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge}, 10);
+    checkLookups({16, 8, TexelFormat::RGBA16F, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 7);
+    checkLookups({13, 7, TexelFormat::RGBA16F, Filter::Linear, Wrap::ClampToEdge, Wrap::Repeat}, 8);
+    checkLookups({16, 16, TexelFormat::RGBA16F, Filter::Nearest, Wrap::Repeat, Wrap::Repeat}, 9);
+    checkLookups({13, 7, TexelFormat::RGBA16F, Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge}, 10);
   }
 
 #if RASTER_AVX2

@@ -4,8 +4,8 @@
 // uploads, the bottom of a rendered FBO image). The default framebuffer is the exception,
 // stored with row 0 at the top, as llvmpipe stores window-system buffers (see Framebuffer).
 //
-// Formats: RGBA8 (4 bytes a texel), RGBA16F (4 half-floats), RGBA32F (4 floats), and depth codes
-// (uint32 per texel holding a 16- or 24-bit unsigned-normalized value).
+// This is the vocabulary of formats, filters, wraps and compare modes that scenes, both
+// backends and the pipeline share.
 #pragma once
 
 #include <cstdint>
@@ -15,10 +15,17 @@
 
 namespace raster {
 
-enum class TexelFormat { RGBA8, RGBA16F, RGBA32F, Depth16, Depth24 };
+// The texture formats of the scenes, as GL internal formats:
+//   RGBA8     4 bytes a texel (GL_RGBA8)
+//   RGBA16F   4 half-floats (GL_RGBA16F)
+//   RGB16F    a sampled texture uploaded from 3 floats a texel (GL_RGB16F: the HDR
+//             environment); a Texture stores it as RGBA16F with alpha 1, as llvmpipe's RGBX
+//   RGBA32F   4 floats (GL_RGBA32F), a render target for tests that need exact values
+//   Depth16, Depth24   uint32 codes holding a 16- or 24-bit unsigned-normalized depth
+enum class TexelFormat { RGBA8, RGBA16F, RGB16F, RGBA32F, Depth16, Depth24 };
 
-enum class Filter { Nearest, Linear };
-enum class Wrap { Repeat, ClampToEdge };
+enum class Filter { Nearest, Linear };               // GL_NEAREST, GL_LINEAR (min and mag)
+enum class Wrap { Repeat, ClampToEdge };             // GL_REPEAT, GL_CLAMP_TO_EDGE
 
 // GL sampler state of a texture object (the scenes use no separate sampler objects).
 struct SamplerState {
@@ -39,11 +46,12 @@ struct Texture {
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
 
   Texture() = default;
-  Texture(int w, int h, TexelFormat f) : width(w), height(h), format(f) {
+  Texture(int w, int h, TexelFormat f) : width(w), height(h), format(f == TexelFormat::RGB16F ? TexelFormat::RGBA16F : f) {
     const size_t texels = size_t(w) * size_t(h);
     switch (f) {
       case TexelFormat::RGBA8: rgba8.assign(texels * 4, 0); break;
-      case TexelFormat::RGBA16F: half.assign(texels * 4, 0); break;
+      case TexelFormat::RGBA16F:
+      case TexelFormat::RGB16F: half.assign(texels * 4, 0); break;
       case TexelFormat::RGBA32F: f32.assign(texels * 4, 0.0f); break;
       case TexelFormat::Depth16:
       case TexelFormat::Depth24: depth.assign(texels, 0); break;

@@ -73,16 +73,16 @@ class DeferredScene final : public Scene {
 
     // load_image_from_file: RGBA8, REPEAT, LINEAR, no mipmaps.
     for (size_t i = 0; i < 7; ++i) {
-      const TextureDesc desc{loaded[i].width, loaded[i].height, TextureFormat::RGBA8,
+      const TextureDesc desc{loaded[i].width, loaded[i].height, TexelFormat::RGBA8,
                              {Filter::Linear, Wrap::Repeat, Wrap::Repeat, false}};
       textures_[i] = b.createTexture(desc, loaded[i].pixels.data());
     }
     // load_hdr_texture: RGB16F, REPEAT on s, CLAMP_TO_EDGE on t, LINEAR.
-    tex_env_ = b.createTexture({env.width, env.height, TextureFormat::RGB16F, {Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge, false}},
+    tex_env_ = b.createTexture({env.width, env.height, TexelFormat::RGB16F, {Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge, false}},
                                env.pixels.data());
 
     // create_shadow_target
-    shadow_tex_ = b.createTexture({SHADOW_DIM, SHADOW_DIM, TextureFormat::Depth24,
+    shadow_tex_ = b.createTexture({SHADOW_DIM, SHADOW_DIM, TexelFormat::Depth24,
                                    {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, true}});
     shadow_fbo_ = b.createFramebuffer({{}, shadow_tex_});
 
@@ -90,12 +90,12 @@ class DeferredScene final : public Scene {
     const int w = options_.width, h = options_.height;
     const SamplerState nearest{Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge, false};
     const SamplerState linear{Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, false};
-    g_albedo_ = b.createTexture({w, h, TextureFormat::RGBA8, nearest});
-    g_normal_ = b.createTexture({w, h, TextureFormat::RGBA16F, nearest});
-    g_worldpos_ = b.createTexture({w, h, TextureFormat::RGBA16F, nearest});
-    g_depth_ = b.createTexture({w, h, TextureFormat::Depth16, nearest});
+    g_albedo_ = b.createTexture({w, h, TexelFormat::RGBA8, nearest});
+    g_normal_ = b.createTexture({w, h, TexelFormat::RGBA16F, nearest});
+    g_worldpos_ = b.createTexture({w, h, TexelFormat::RGBA16F, nearest});
+    g_depth_ = b.createTexture({w, h, TexelFormat::Depth16, nearest});
     g_fbo_ = b.createFramebuffer({{g_albedo_, g_normal_, g_worldpos_}, g_depth_});
-    ssao_tex_ = b.createTexture({w, h, TextureFormat::RGBA8, linear});
+    ssao_tex_ = b.createTexture({w, h, TexelFormat::RGBA8, linear});
     ssao_fbo_ = b.createFramebuffer({{ssao_tex_}, 0});
   }
 

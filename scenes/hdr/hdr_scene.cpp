@@ -130,7 +130,7 @@ class HdrScene final : public Scene {
 
     // create_scene_target: RGBA16F colour (LINEAR, CLAMP_TO_EDGE) + 16-bit depth.
     hdr_color_ = makeHdrColor(b, HDR_W, HDR_H);
-    hdr_depth_ = b.createTexture({HDR_W, HDR_H, TextureFormat::Depth16, {Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
+    hdr_depth_ = b.createTexture({HDR_W, HDR_H, TexelFormat::Depth16, {Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
     hdr_fbo_ = b.createFramebuffer({{hdr_color_}, hdr_depth_});
     // create_bloom_chain, and the chain readTargets() re-runs the down passes into.
     bloom_ = makeBloomChain(b);
@@ -214,7 +214,7 @@ class HdrScene final : public Scene {
  private:
   // make_hdr_color: RGBA16F, LINEAR + CLAMP_TO_EDGE so the down/up taps filter and never wrap.
   static Handle makeHdrColor(Backend& b, int w, int h) {
-    return b.createTexture({w, h, TextureFormat::RGBA16F, {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
+    return b.createTexture({w, h, TexelFormat::RGBA16F, {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
   }
 
   BloomChain makeBloomChain(Backend& b) const {

@@ -68,7 +68,7 @@ class ShadowScene final : public Scene {
     // create_shadow_target: DEPTH_COMPONENT24, LINEAR, CLAMP_TO_EDGE, compare LEQUAL.
     TextureDesc depth;
     depth.width = depth.height = SHADOW_DIM;
-    depth.format = TextureFormat::Depth24;
+    depth.format = TexelFormat::Depth24;
     depth.sampler = {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, /*compareLequal=*/true};
     shadow_tex_ = b.createTexture(depth);
     shadow_fbo_ = b.createFramebuffer({{}, shadow_tex_});

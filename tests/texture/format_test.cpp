@@ -337,7 +337,7 @@ TEST_SUITE("format") {
       const std::string who = backend->name();
       CAPTURE(who);
 
-      const Rendered rgba8 = render(*backend, {kSize, kSize, TextureFormat::RGBA8, std::nullopt}, {colorGrid(unorm)}, clearAll());
+      const Rendered rgba8 = render(*backend, {kSize, kSize, TexelFormat::RGBA8, std::nullopt}, {colorGrid(unorm)}, clearAll());
       int rgba8Diffs = 0;
       for (size_t i = 0; i < unorm.size(); ++i) {
         if (rgba8.color->rgba8[i] != unorm8FromFloat(unorm[i]) && rgba8Diffs++ < 3) {
@@ -346,7 +346,7 @@ TEST_SUITE("format") {
         }
       }
 
-      const Rendered half = render(*backend, {kSize, kSize, TextureFormat::RGBA16F, std::nullopt}, {colorGrid(halfValues)}, clearAll());
+      const Rendered half = render(*backend, {kSize, kSize, TexelFormat::RGBA16F, std::nullopt}, {colorGrid(halfValues)}, clearAll());
       int halfDiffs = 0;
       for (size_t i = 0; i < halfValues.size(); ++i) {
         const float expected = floatFromHalf(halfFromFloatTowardZero(halfValues[i]));
@@ -357,12 +357,12 @@ TEST_SUITE("format") {
       }
 
       int depthDiffs = 0;
-      for (TextureFormat format : {TextureFormat::Depth24, TextureFormat::Depth16}) {
-        const std::vector<float>& ndc = format == TextureFormat::Depth24 ? ndc24 : ndc16;
+      for (TexelFormat format : {TexelFormat::Depth24, TexelFormat::Depth16}) {
+        const std::vector<float>& ndc = format == TexelFormat::Depth24 ? ndc24 : ndc16;
         const Rendered depth = render(*backend, {kSize, kSize, std::nullopt, format}, {depthGrid(ndc)}, clearAll());
         for (size_t i = 0; i < ndc.size(); ++i) {
           const float windowZ = std::fma(ndc[i], 0.5f, 0.5f);
-          const uint32_t expected = format == TextureFormat::Depth24 ? depth24FromFloat(windowZ) : depth16FromFloat(windowZ);
+          const uint32_t expected = format == TexelFormat::Depth24 ? depth24FromFloat(windowZ) : depth16FromFloat(windowZ);
           if (depth.depth->depth[i] != expected && depthDiffs++ < 3) {
             CAPTURE(ndc[i]);
             CAPTURE(windowZ);

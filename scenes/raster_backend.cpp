@@ -186,7 +186,7 @@ class RasterBackend final : public Backend {
   }
 
   // glTexImage2D: rows as given (row 0 = t = 0). float -> half TRUNCATES toward zero, as
-  // measured against Mesa 22.3's texture upload (tests/texture_test.cpp), though the
+  // measured against Mesa 22.3's texture upload (tests/texture/sampler_test.cpp), though the
   // reference notes expected round-to-nearest-even. Three-channel float uploads get
   // alpha 1 (null pixels: undefined in GL, zero here).
   static void upload(raster::Texture& t, const void* pixels, int channels) {

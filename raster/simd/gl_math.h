@@ -28,7 +28,7 @@
 // sign (daz() below), and flushes the intermediates where a denormal would change the result
 // (each is marked FTZ).
 //
-// Measured against llvmpipe (tests/gl_math_test.cpp, and a standalone GL probe reading the
+// Measured against llvmpipe (tests/simd/gl_math_test.cpp, and a standalone GL probe reading the
 // arguments with texelFetch): every result bit-identical, NaN payloads included, for all
 // 2^32 arguments of sin, cos and atan(x), every 4th bit pattern (2^30 arguments) of exp2,
 // log2, acos, pow(x, 48.0), pow(x, 2.2) and pow(x, 0.4545), and 31 million arguments each
@@ -36,7 +36,7 @@
 //
 // Lane types: float, simd::Lanes<N> (plain loops: the readable reference), simd::Float8
 // (AVX2) and simd::Float8x2 (two Float8 groups). One generic text per function, over a few
-// bit-level helpers (detail::), so all of them give identical bits; tests/gl_math_test.cpp
+// bit-level helpers (detail::), so all of them give identical bits; tests/simd/gl_math_test.cpp
 // checks it, and checks them against llvmpipe through real GL.
 #pragma once
 

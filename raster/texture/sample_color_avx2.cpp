@@ -1,6 +1,6 @@
 // Colour texture sampling for 8 lanes at once (AVX2 gathers, F16C conversion): the same
 // operations as the scalar reference in sample_color.cpp, lane for lane, so the results
-// are bit-identical (tests/texture_test.cpp holds the two together).
+// are bit-identical (tests/texture/sampler_test.cpp holds the two together).
 #if RASTER_AVX2
 #include "raster/simd/intrinsics.h"
 

@@ -1,5 +1,5 @@
 // C++ port of instanced.vert / instanced.frag: per-vertex and per-instance attributes and
-// gl_InstanceID. Used by the instancing test (tests/hdr_test.cpp).
+// gl_InstanceID. Used by the instancing test (tests/pipeline/hdr_features_test.cpp).
 #pragma once
 
 #include "raster/shader/program.h"

@@ -30,7 +30,7 @@ struct TextureCase {
 
 // A SIMD lookup's channel against the scalar one's: the same bits, or NaN against NaN (which
 // NaN's sign survives an fma of NaNs may differ).
-bool sameLookup(float got, float ref) { return bitsOf(got) == bitsOf(ref) || (std::isnan(got) && std::isnan(ref)); }
+[[maybe_unused]] bool sameLookup(float got, float ref) { return bitsOf(got) == bitsOf(ref) || (std::isnan(got) && std::isnan(ref)); }
 
 // A lookup coordinate: random, far outside, or on a texel centre / edge of the texture.
 float lookupCoordinate(std::mt19937& rng, int size) {
@@ -94,7 +94,7 @@ void checkLookups(const TextureCase& c, unsigned seed) {
 }
 
 // A w x h texture of random texels: any RGBA8 bytes, or halves of values in [-8, 8].
-raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::TexelFormat format) {
+[[maybe_unused]] raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::TexelFormat format) {
   raster::Texture tex(w, h, format);
   for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
   for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));

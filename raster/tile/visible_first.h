@@ -110,13 +110,13 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     for (uint32_t index : bin) {
       const SetupTriangle& tri = job.triangles[index];
       const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
-      walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+      walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
         const uint32_t passed = depthTestBlock<F>(job, tri, blockX, blockY, coverage);
         if (passed && writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
       });
     }
   } else {
-    depthTestBin<F>(job, tile, bin, layout, [&](uint32_t index, const SetupTriangle&, GroupAt passed, F) {
+    depthTestBin<F>(job, tile, bin, layout, [&](uint32_t index, const SetupTriangle&, GroupAt passed, F) __attribute__((always_inline)) {
       shown.mark(passed.x - tile.x0, passed.y - tile.y0, passed.laneMask, index);
     });
   }

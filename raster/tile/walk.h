@@ -1,6 +1,10 @@
 // The walk of one tile's triangles, in API order: for each triangle, its 16x16 regions, then
 // 4x4 blocks, then lane groups, each with its coverage (coverage.h), and each group through
 // the early depth test (depth_test.h).
+//
+// The walk functions are always inlined into the tile loop (rasterize_tile.cpp), as GCC
+// inlines functions of internal linkage called once: outlined, each call and its visitor
+// cost the shadow scene's main pass 14%.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +22,7 @@ namespace raster {
 // the 16x16 regions wholly inside the triangle themselves (depthOnlyRegion) and visit only
 // the rest.
 template <class F, class VisitBlock>
-void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const TileBounds& tile, VisitBlock&& visitBlock) {
+[[gnu::always_inline]] inline void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const TileBounds& tile, VisitBlock&& visitBlock) {
   constexpr int kBlock = limits::kBlockSize, kRegion = limits::kRegionSize;
   using Edge = typename EdgeWalkOf<F>::type;
   const Framebuffer& fb = *job.framebuffer;
@@ -68,10 +72,10 @@ void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const Tile
 // The lane groups of one triangle inside one tile, in walk order: visit(GroupAt) for every
 // group with a covered lane.
 template <class F, class Visit>
-void walkTriangle(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout, const TileBounds& tile,
+[[gnu::always_inline]] inline void walkTriangle(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout, const TileBounds& tile,
                   Visit&& visit) {
   const bool flipY = job.framebuffer->flipY;
-  walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+  walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
     for (int g = 0; g < LaneLayout<F>::kGroupsPerBlock; ++g) {
       const unsigned laneMask = groupLaneMask(layout, flipY, coverage, g);
       if (laneMask) visit(GroupAt{blockX + LaneLayout<F>::originX(g), blockY + LaneLayout<F>::originY(g), laneMask});
@@ -90,13 +94,13 @@ template <class F, class Passed>
     const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
     if constexpr (kDepthTestsInBlocks<F>) {
       if (!writesColor) {   // depth only: no quads needed
-        walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) {
+        walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
           depthTestBlock<F>(job, tri, blockX, blockY, coverage);
         });
         continue;
       }
     }
-    walkTriangle<F>(job, tri, layout, tile, [&](GroupAt at) {
+    walkTriangle<F>(job, tri, layout, tile, [&](GroupAt at) __attribute__((always_inline)) {
       F z;
       const unsigned lanes = depthTestGroup(job, tri, layout, at, z);
       if (lanes && writesColor) passed(index, tri, GroupAt{at.x, at.y, lanes}, z);

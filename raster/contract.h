@@ -88,6 +88,15 @@ struct ViewportTransform {
   float translate[3];
 };
 
+// One instance's vertices to shade: every vertex of the stream, into records
+// [recordBase, recordBase + stream.vertexCount).
+struct VertexBatch {
+  const VertexStream& stream;
+  const ViewportTransform& viewport;
+  int instance;
+  int recordBase;
+};
+
 // ---- shaded vertices (vertex stage -> clip and setup) ----------------------------------------
 
 // Where each quantity sits in a shaded vertex record:

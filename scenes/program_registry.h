@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "raster/shader/shader_instance.h"
+#include "raster/program_instance.h"
 #include "scenes/backend.h"
 
 namespace scenes {

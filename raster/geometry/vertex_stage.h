@@ -17,15 +17,6 @@
 
 namespace raster {
 
-// One instance's vertices to shade: every vertex of the stream, into records
-// [recordBase, recordBase + stream.vertexCount).
-struct VertexBatch {
-  const VertexStream& stream;
-  const ViewportTransform& viewport;
-  int instance;
-  int recordBase;
-};
-
 namespace vertex_stage {
 
 // Clip flags as llvmpipe's draw JIT computes them (draw_llvm.c generate_clipmask):

@@ -7,7 +7,6 @@
 #if RASTER_AVX2
 #include "raster/merge/color_write.h"
 #include "raster/simd/intrinsics.h"
-#include "raster/tile/lane_layout_avx2.h"
 
 namespace raster::merge {
 
@@ -65,7 +64,7 @@ inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint3
 // store per row, or per pair of texels for RGBA16F, instead of one per lane.
 inline void writeRgba8Rows(const glsl::vec4<simd::Float8>& color, uint8_t* texels, const size_t* texel) {
   // Lanes 0 1 4 5 | 2 3 6 7 (texel[0]'s row, then texel[2]'s), whichever row is on top.
-  const __m256i rows = _mm256_permutevar8x32_epi32(packRgba8Lanes(color), quadLanesToRows(false));
+  const __m256i rows = _mm256_permutevar8x32_epi32(packRgba8Lanes(color), simd::quadLanesToRows(false));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[0] * 4), _mm256_castsi256_si128(rows));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + texel[2] * 4), _mm256_extracti128_si256(rows, 1));
 }
@@ -108,7 +107,7 @@ inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t*
   const __m512i r = channel(color.x.v), g = channel(color.y.v), b = channel(color.z.v), a = channel(color.w.v);
   const __m512i packed = _mm512_or_si512(_mm512_or_si512(r, _mm512_slli_epi32(g, 8)),
                                          _mm512_or_si512(_mm512_slli_epi32(b, 16), _mm512_slli_epi32(a, 24)));
-  // quadLanesToRows(false) in each half: [first's two rows | second's two rows].
+  // simd::quadLanesToRows(false) in each half: [first's two rows | second's two rows].
   const __m512i rows = _mm512_permutexvar_epi32(
       _mm512_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7, 8, 9, 12, 13, 10, 11, 14, 15), packed);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + first[0] * 4), _mm512_castsi512_si128(rows));

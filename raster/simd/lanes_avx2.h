@@ -79,6 +79,16 @@ inline Float8 quadDdy(Float8 a) {
   return Float8(_mm256_sub_ps(bottom, top));
 }
 
+// An 8-lane group (two 2x2 quads side by side) against its two memory rows of 4 pixels:
+// permutevar8x32 indices from quad lane order to row-major order [top x..x+3 | bottom
+// x..x+3], and back. `flipped`: the quads' rows are swapped (window-system buffers).
+inline __m256i quadLanesToRows(bool flipped) {
+  return flipped ? _mm256_setr_epi32(2, 3, 6, 7, 0, 1, 4, 5) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+}
+inline __m256i rowsToQuadLanes(bool flipped) {
+  return flipped ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
+}
+
 // ---------------------------------------------------------------------------------------
 // Float8x2: two lane groups shaded as one, op for op (low() is one 4x2 group, high()
 // another). Same semantics as Lanes<16>, lane for lane. The halves share no data, so the

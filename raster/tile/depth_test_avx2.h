@@ -7,7 +7,6 @@
 #if RASTER_AVX2
 #include "raster/simd/intrinsics.h"
 #include "raster/tile/depth_test.h"
-#include "raster/tile/lane_layout_avx2.h"
 
 namespace raster {
 
@@ -50,7 +49,7 @@ struct GroupRows {
 // depthTest for an 8-lane group in its two memory rows. Returns the lanes that pass.
 inline unsigned depthTestRows(const uint32_t* codes, const GroupRows& rows, unsigned laneMask, const RasterState& state) {
   const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
-  const __m256i toRows = quadLanesToRows(rows.flipped), toQuads = rowsToQuadLanes(rows.flipped);
+  const __m256i toRows = simd::quadLanesToRows(rows.flipped), toQuads = simd::rowsToQuadLanes(rows.flipped);
   const __m256i covered = _mm256_permutevar8x32_epi32(_mm256_castps_si256(simd::Mask8::fromBits(laneMask).v), toRows);
   const __m256i code = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(codes)), toRows);
   const __m128i maskTop = _mm256_castsi256_si128(covered), maskBottom = _mm256_extracti128_si256(covered, 1);

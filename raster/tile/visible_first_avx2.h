@@ -6,7 +6,6 @@
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include "raster/simd/intrinsics.h"
-#include "raster/tile/lane_layout_avx2.h"
 #include "raster/tile/visible_first.h"
 
 namespace raster {
@@ -20,7 +19,7 @@ inline void TileTriangles<simd::Float8>::mark(int lx, int ly, unsigned passed, u
   __m128i* bottom = reinterpret_cast<__m128i*>(at + kTile);
   const __m256i old = first ? _mm256_set1_epi32(-1) : _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
   const __m256i lanes = _mm256_castps_si256(simd::Mask8::fromBits(passed).v);
-  const __m256i rows = _mm256_permutevar8x32_epi32(lanes, quadLanesToRows(flipY_));
+  const __m256i rows = _mm256_permutevar8x32_epi32(lanes, simd::quadLanesToRows(flipY_));
   const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
   _mm_storeu_si128(top, _mm256_castsi256_si128(merged));
   _mm_storeu_si128(bottom, _mm256_extracti128_si256(merged, 1));
@@ -48,7 +47,7 @@ inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t pass
 template <>
 template <class Shade>
 void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
-  const __m256i toLanes = rowsToQuadLanes(flipY_);
+  const __m256i toLanes = simd::rowsToQuadLanes(flipY_);
   for (int row = 0; row < kTile / 2; ++row) {
     for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
       const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;

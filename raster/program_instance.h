@@ -1,0 +1,57 @@
+// A shader port bound to the pipeline: ProgramInstance<Program> is a port plus a snapshot of
+// its uniforms, implementing the ShaderInstance interface the stages call. It sits above the
+// stages because it instantiates the geometry stage's vertex loop and the fragment entry
+// points for each lane type with the port's own code.
+#pragma once
+
+#include "raster/geometry/vertex_stage.h"
+#include "raster/shader/program.h"
+#include "raster/shader/shader_instance.h"
+
+namespace raster {
+
+template <class Program>
+class ProgramInstance final : public ShaderInstance {
+ public:
+  explicit ProgramInstance(const typename Program::Uniforms& uniforms) : uniforms_(uniforms) {}
+
+  int varyingFloats() const override { return varyingFloatCount<Program>(); }
+  int colorOutputs() const override { return Program::kColorOutputs; }
+  bool samplesTextures() const override { return raster::samplesTextures<Program>(); }
+
+  void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {
+    if (scalarLanes) shadeVerticesWith<ScalarLanes>(batch, out);
+    else shadeVerticesWith<FastLanes>(batch, out);
+  }
+  void shadeFragments(const FragmentInput<FastLanes>& in, const FastLanes* varyings,
+                      FragmentOutput<FastLanes>& out) const override {
+    shade(in, varyings, out);
+  }
+  void shadeFragments(const FragmentInput<ScalarLanes>& in, const ScalarLanes* varyings,
+                      FragmentOutput<ScalarLanes>& out) const override {
+    shade(in, varyings, out);
+  }
+#if RASTER_AVX2
+  void shadeFragments(const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
+                      FragmentOutput<PairedLanes>& out) const override {
+    shade(in, varyings, out);
+  }
+#endif
+
+ private:
+  template <class F>
+  void shadeVerticesWith(const VertexBatch& batch, ShadedVertices& out) const {
+    const int vertexCount = batch.stream.vertexCount;
+    for (int first = 0; first < vertexCount; first += F::kCount) {
+      const int count = vertexCount - first < F::kCount ? vertexCount - first : F::kCount;
+      vertex_stage::shadeVertexGroup<Program, F>(uniforms_, batch, first, count, out);
+    }
+  }
+  template <class F>
+  void shade(const FragmentInput<F>& in, const F* varyings, FragmentOutput<F>& out) const {
+    Program::fragment(uniforms_, in, varyingsFromArray<Program, F>(varyings), out);
+  }
+  typename Program::Uniforms uniforms_;
+};
+
+}  // namespace raster

@@ -16,7 +16,7 @@ class ShaderInstance {
   virtual int varyingFloats() const = 0;
   virtual int colorOutputs() const = 0;
   // Whether its fragment shader reads textures: the pipeline then shades lane groups two
-  // at a time (raster_tile.cpp), so one group's texel loads overlap the other's.
+  // at a time (tile/group_shader_avx2.h), so one group's texel loads overlap the other's.
   virtual bool samplesTextures() const = 0;
   // Shades one instance's vertices into their records of `out`, with the plain-C++ lanes
   // when `scalarLanes` (the same bits either way).

@@ -35,9 +35,30 @@ TEST_SUITE("determinism") {
     }
   }
 
+  // Every scene, every thread count the issue names, with the SIMD lanes and with the plain
+  // ones (--scalar): the bytes of one SIMD thread. The scene suites hold one thread to
+  // llvmpipe, so all of them match llvmpipe too; CI runs this again in the build without
+  // SIMD (tests/configs/simd-off.sh).
+  TEST_CASE("every scene: threads 1, 2 and 5, SIMD and scalar lanes, give identical bytes") {
+    for (const char* scene : {"shadow", "deferred", "hdr"}) {
+      for (const auto& [w, h] : {std::pair{97, 61}, std::pair{640, 480}}) {
+        auto one = scenes::makeRasterBackend(1);
+        const auto reference = testing_support::renderScene(*one, scene, 1.0f, w, h);
+        for (bool scalar : {false, true}) {
+          for (int threads : {1, 2, 5}) {
+            if (!scalar && threads == 1) continue;
+            INFO(scene << " at " << w << "x" << h << ", " << threads << " threads, " << (scalar ? "scalar" : "SIMD") << " lanes");
+            auto backend = scenes::makeRasterBackend(threads, scalar);
+            checkSameBytes(reference, testing_support::renderScene(*backend, scene, 1.0f, w, h));
+          }
+        }
+      }
+    }
+  }
+
   // Draws of thousands of triangles (the hdr scene's instanced cubes, deferred's statue) are
   // set up in chunks and binned in bands of tile rows in parallel when there are threads
-  // to share them (renderer.cpp): the triangles must reach every tile in API order, with
+  // to share them (renderer.cpp, geometry/bin.h): the triangles must reach every tile in API order, with
   // their own varyings, whatever the chunks.
   TEST_CASE("large draws set up and binned in parallel give the bytes of one thread") {
     for (const char* scene : {"hdr", "deferred"}) {
@@ -52,7 +73,7 @@ TEST_SUITE("determinism") {
   }
 
   // Passes whose colour draws do not blend shade only each pixel's visible fragment
-  // (raster_tile.cpp, rasterizeVisibleFirst): the hdr scene's cubes and deferred's G-buffer
+  // (tile/visible_first.h): the hdr scene's cubes and deferred's G-buffer
   // (many triangles per tile, overlapping) take that path. It must leave the bytes of
   // shading every fragment in order, with SIMD lanes and with plain ones.
   TEST_CASE("shading only visible fragments gives the bytes of shading every fragment in order") {

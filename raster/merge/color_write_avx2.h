@@ -125,7 +125,7 @@ inline void writeHalfRowsPair(const glsl::vec4<simd::Float8x2>& color, uint16_t*
   writeHalfRows(highGroup(color), texels, second, additive);
 }
 // writeColorOutput for a Float8 group: whole groups a row at a time where the format allows.
-inline void writeColorOutput(Texture& target, const glsl::vec4<simd::Float8>& color, const size_t* texel,
+[[gnu::noinline]] inline void writeColorOutput(Texture& target, const glsl::vec4<simd::Float8>& color, const size_t* texel,
                              unsigned laneMask, bool blendAdditive) {
   if (laneMask == 0xFFu) {
     if (target.format == TexelFormat::RGBA8 && !blendAdditive) return writeRgba8Rows(color, target.rgba8.data(), texel);

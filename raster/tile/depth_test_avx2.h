@@ -91,7 +91,7 @@ inline unsigned depthTestRows(const uint32_t* codes, const GroupRows& rows, unsi
 }
 
 template <>
-inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width,
+[[gnu::noinline]] inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width,
                                           int x, int y) {
   using simd::Float8;
   const Float8 columns(_mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7));

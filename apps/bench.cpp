@@ -7,6 +7,8 @@
 // machines the ratio is the figure to quote, not the absolute times.
 #include "apps/bench.h"
 
+#include "compare/output_file.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -226,7 +228,7 @@ int runBench(const BenchArgs& args) {
   std::printf("ratio_%s_over_raster=%.3f\n", contenders[1].timed.backend.c_str(), ratio);
 
   if (!args.json.empty()) {
-    std::ofstream json(args.json);
+    std::ostringstream json;
     json << "{\"scene\":\"" << frame.scene << "\",\"size\":[" << frame.width << "," << frame.height
          << "],\"time\":" << frame.time << ",\"threads\":" << threads << ",\"backends\":[";
     for (int k = 0; k < 2; ++k) {
@@ -245,7 +247,7 @@ int runBench(const BenchArgs& args) {
       json << "]";
     }
     json << "}\n";
-    if (!json) throw std::runtime_error("cannot write " + args.json);
+    compare::writeOutputFile(args.json, json.str());
   }
   return 0;
 }

@@ -1,6 +1,8 @@
 // The `raster` program's options and their validation (see cli_options.h).
 #include "apps/cli_options.h"
 
+#include "compare/output_file.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -169,7 +171,11 @@ void checkOutputFile(const std::string& option, const std::string& path) {
   const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   if (path.empty() || !file.has_filename())
     throw UsageError(option + ": '" + path + "' names no file");
-  if (fs::is_directory(file)) throw UsageError(option + ": " + path + " is a folder");
+  try {
+    compare::checkOutputPath(path);   // the writer's own rules: a regular file or nothing
+  } catch (const compare::OutputPathError& e) {
+    throw UsageError(option + ": " + e.what());
+  }
   if (!writableFolder(folder))
     throw UsageError(option + ": cannot write into " + folder.string() +
                      " (no such folder, or not writable)");

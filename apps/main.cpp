@@ -30,6 +30,7 @@
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
 #include "compare/metrics.h"
+#include "compare/output_file.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
 
@@ -102,7 +103,7 @@ void dumpTargets(const std::string& folder, const std::vector<Target>& targets) 
     manifest += target.name + " " + manifestTag(target.image) + "\n";
   }
   const std::string manifestPath = (fs::path(folder) / kManifest).string();
-  compare::writeFileAtomic(manifestPath, manifest);
+  compare::writeOutputFile(manifestPath, manifest);
   std::cout << "wrote " << manifestPath << std::endl;
 }
 
@@ -325,6 +326,9 @@ int main(int argc, char** argv) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;
     return 2;
   } catch (const scenes::SceneError& e) {
+    std::cerr << "raster: " << oneLine(e.what()) << std::endl;
+    return 2;
+  } catch (const compare::OutputPathError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;
     return 2;
   } catch (const std::exception& e) {

@@ -2,6 +2,8 @@
 // See image_io.h for the formats and conventions.
 #include "compare/image_io.h"
 
+#include "compare/output_file.h"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -121,34 +123,11 @@ std::array<uint8_t, 3> heatColour(uint64_t difference) {
 
 }  // namespace
 
-void writeFileAtomic(const std::string& path, const std::string& bytes) {
-  const std::string temp = path + ".tmp-" + std::to_string(getpid());
-  const auto fail = [&](int error) {
-    unlink(temp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + std::strerror(error));
-  };
-  // Write the whole content to the temporary file, then rename it over path.
-  const int fd = open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(errno);
-  for (size_t done = 0; done < bytes.size();) {
-    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int error = errno;
-      close(fd);
-      fail(error);
-    }
-    done += size_t(n);
-  }
-  if (close(fd) != 0) fail(errno);
-  if (rename(temp.c_str(), path.c_str()) != 0) fail(errno);
-}
-
 void writePng(const std::string& path, const ImageData& image) {
   const std::string kind = imageKind(image);
   const size_t pixels = size_t(image.width) * size_t(image.height);
   if (kind == "rgba8") {
-    writeFileAtomic(path, encodePng(image.width, image.height, 4, image.rgba8));
+    writeOutputFile(path, encodePng(image.width, image.height, 4, image.rgba8));
     return;
   }
   if (kind == "depth") {
@@ -160,7 +139,7 @@ void writePng(const std::string& path, const ImageData& image) {
                              : double(*hi) - double(*lo);
     std::vector<uint8_t> grey(pixels);
     for (size_t i = 0; i < pixels; ++i) grey[i] = toByte((double(image.depth[i]) - low) / range);
-    writeFileAtomic(path, encodePng(image.width, image.height, 1, grey));
+    writeOutputFile(path, encodePng(image.width, image.height, 1, grey));
     return;
   }
   // Float: clamp, gamma 1/2.2, opaque (alpha of an intermediate buffer would hide colour).
@@ -172,7 +151,7 @@ void writePng(const std::string& path, const ImageData& image) {
       const double v = std::clamp(double(image.floats[i * channels + c]), 0.0, 1.0);
       preview[i * components + c] = toByte(std::pow(v, 1.0 / 2.2));
     }
-  writeFileAtomic(path, encodePng(image.width, image.height, components, preview));
+  writeOutputFile(path, encodePng(image.width, image.height, components, preview));
 }
 
 std::string alphaPfmPath(const std::string& pfmPath) {
@@ -190,12 +169,12 @@ void writePfm(const std::string& path, const ImageData& image) {
   if (kind == "depth") {
     // Integer codes as floats: exact up to 2^24.
     pfm.values.assign(image.depth.begin(), image.depth.end());
-    writeFileAtomic(path, encodePfm(pfm));
+    writeOutputFile(path, encodePfm(pfm));
     return;
   }
   if (image.channels == 1) {
     pfm.values = image.floats;
-    writeFileAtomic(path, encodePfm(pfm));
+    writeOutputFile(path, encodePfm(pfm));
     return;
   }
   if (image.channels != 3 && image.channels != 4)
@@ -212,9 +191,9 @@ void writePfm(const std::string& path, const ImageData& image) {
       alphaIsOne = alphaIsOne && texel[3] == 1.0f;
     }
   }
-  writeFileAtomic(path, encodePfm(pfm));
+  writeOutputFile(path, encodePfm(pfm));
   if (image.channels == 4 && !alphaIsOne)
-    writeFileAtomic(alphaPfmPath(path), encodePfm(alpha));
+    writeOutputFile(alphaPfmPath(path), encodePfm(alpha));
   else
     std::filesystem::remove(alphaPfmPath(path));   // a stale one would be read back
 }
@@ -290,7 +269,7 @@ void writeHeatmapPng(const std::string& path, const ImageData& a, const ImageDat
     const auto colour = heatColour(pixelDifference(a, b, i));
     std::copy(colour.begin(), colour.end(), &rgb[i * 3]);
   }
-  writeFileAtomic(path, encodePng(a.width, a.height, 3, rgb));
+  writeOutputFile(path, encodePng(a.width, a.height, 3, rgb));
 }
 
 }  // namespace compare

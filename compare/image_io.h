@@ -2,8 +2,8 @@
 //
 // A target is saved twice when dumped: a PNG anyone can look at, and (for depth and float
 // targets) a lossless PFM another process can load back bit for bit; RGBA8 targets are
-// already lossless as PNG. Every write is atomic (a temporary file renamed into place), so
-// a failed or interrupted run never leaves a partial file behind.
+// already lossless as PNG. Every file goes through compare/output_file.h: whole or not at
+// all, never over anything but a regular file, and no temporary file left behind.
 //
 // PFM ("Portable Float Map"): a text header "PF" (RGB) or "Pf" (grey), "W H", a scale whose
 // sign gives the byte order (negative: little endian), then 32-bit floats, BOTTOM row first.
@@ -15,10 +15,6 @@
 #include "scenes/backend.h"
 
 namespace compare {
-
-// Writes bytes to path atomically (path.tmp-<pid>, then rename). Throws std::runtime_error
-// "cannot write PATH: <reason>" and removes the temporary file on failure.
-void writeFileAtomic(const std::string& path, const std::string& bytes);
 
 // A PNG for looking at: RGBA8 as is; float images clamped to [0,1] and gamma-encoded
 // (1/2.2) to 8-bit RGB; depth codes as grey, contrast-stretched between the smallest and

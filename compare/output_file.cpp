@@ -1,0 +1,145 @@
+// Whole-or-nothing file writes, and the signal handlers that clean up after them (see
+// output_file.h).
+#include "compare/output_file.h"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+
+namespace compare {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Temporary files being written, for the signal handler: fixed slots it can read without
+// allocating. A slot's path is complete before its flag is set.
+constexpr int kSlots = 16;
+char tempPaths[kSlots][PATH_MAX];
+volatile sig_atomic_t tempUsed[kSlots];
+std::mutex slotMutex;
+
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
+
+extern "C" void removeTempFilesAndReraise(int signal) {
+  for (int i = 0; i < kSlots; ++i)
+    if (tempUsed[i]) unlink(tempPaths[i]);
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// Installs the handler for each cleanup signal that is not ignored (an ignored SIGXFSZ makes
+// an over-limit write fail with EFBIG instead, which is reported as an error).
+void installHandlersOnce() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int signal : kCleanupSignals) {
+      struct sigaction current {};
+      if (sigaction(signal, nullptr, &current) != 0 || current.sa_handler == SIG_IGN) continue;
+      struct sigaction action {};
+      action.sa_handler = removeTempFilesAndReraise;
+      sigemptyset(&action.sa_mask);
+      sigaction(signal, &action, nullptr);
+    }
+  });
+}
+
+int claimSlot(const std::string& path) {
+  std::lock_guard<std::mutex> lock(slotMutex);
+  for (int i = 0; i < kSlots; ++i) {
+    if (tempUsed[i]) continue;
+    std::strncpy(tempPaths[i], path.c_str(), PATH_MAX - 1);
+    tempPaths[i][PATH_MAX - 1] = '\0';
+    tempUsed[i] = 1;
+    return i;
+  }
+  return -1;   // more writes at once than slots: the file is still written, just not tracked
+}
+
+void releaseSlot(int slot) {
+  if (slot < 0) return;
+  std::lock_guard<std::mutex> lock(slotMutex);
+  tempUsed[slot] = 0;
+}
+
+[[noreturn]] void refuse(const std::string& path, const std::string& why) {
+  const std::string shown = path.size() > 120 ? path.substr(0, 100) + "..." : path;
+  throw OutputPathError("cannot write " + shown + ": " + why);
+}
+
+const char* kindOf(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
+void checkOutputPath(const std::string& path) {
+  if (path.empty()) refuse(path, "no file name");
+  if (path.size() >= PATH_MAX) refuse(path, "the path is longer than " + std::to_string(PATH_MAX - 1) + " bytes");
+  for (const fs::path& part : fs::path(path))
+    if (part.native().size() > NAME_MAX)
+      refuse(path, "the name '" + part.native().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
+  struct stat info {};
+  if (lstat(path.c_str(), &info) == 0) {
+    if (!S_ISREG(info.st_mode)) refuse(path, std::string("it is ") + kindOf(info.st_mode) + ", not a regular file");
+  } else if (errno != ENOENT) {
+    refuse(path, std::strerror(errno));
+  }
+  const fs::path folder = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  struct stat folderInfo {};
+  if (stat(folder.c_str(), &folderInfo) != 0 || !S_ISDIR(folderInfo.st_mode)) refuse(path, "no such folder " + folder.string());
+}
+
+void writeOutputFile(const std::string& path, std::string_view bytes) {
+  checkOutputPath(path);
+  installHandlersOnce();
+  const fs::path folder = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  std::string temp = (folder / ".raster-XXXXXX.tmp").string();
+  const int fd = mkostemps(temp.data(), 4, O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  const int slot = claimSlot(temp);
+  const auto fail = [&](int error) {
+    unlink(temp.c_str());
+    releaseSlot(slot);
+    throw std::runtime_error("cannot write " + path + ": " + std::strerror(error));
+  };
+  fchmod(fd, 0644);
+  for (size_t done = 0; done < bytes.size();) {
+    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      close(fd);
+      fail(error);
+    }
+    done += size_t(n);
+  }
+  if (close(fd) != 0) fail(errno);
+  // Test hook (tests/apps/output_file_test.cpp): hold the finished temporary file this many
+  // milliseconds before the rename, so a test can deliver a signal while it exists.
+  if (const char* stall = std::getenv("RASTER_TEST_STALL_BEFORE_RENAME")) usleep(useconds_t(std::atoi(stall)) * 1000u);
+  // The path may have become something else meanwhile: rename replaces only what lstat saw
+  // as a regular file (or nothing), so check again right before.
+  struct stat info {};
+  if (lstat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    unlink(temp.c_str());
+    releaseSlot(slot);
+    refuse(path, std::string("it is ") + kindOf(info.st_mode) + ", not a regular file");
+  }
+  if (rename(temp.c_str(), path.c_str()) != 0) fail(errno);
+  releaseSlot(slot);
+}
+
+}  // namespace compare

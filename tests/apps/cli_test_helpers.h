@@ -1,0 +1,76 @@
+// Running the built `raster` program (RASTER_CLI_PATH) from tests, in a temporary folder.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace cli_test {
+
+namespace fs = std::filesystem;
+
+// A fresh temporary folder, removed with its content afterwards.
+struct TempFolder {
+  fs::path path;
+  TempFolder() {
+    std::string pattern = (fs::temp_directory_path() / "raster-cli-test-XXXXXX").string();
+    REQUIRE(mkdtemp(pattern.data()) != nullptr);
+    path = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+struct RunResult {
+  int status = -1;   // the exit status, or -1 when a signal ended it (then `signal` says which)
+  int signal = 0;
+  std::string out, err;
+};
+
+inline std::string shellQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+inline std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs a shell script with the working folder `cwd`, where "$RASTER" is the program; its
+// output is kept outside that folder. The script's last command's status is the result.
+inline RunResult runShell(const fs::path& cwd, const std::string& script) {
+  const fs::path logs = cwd.parent_path();
+  const std::string command = "cd " + shellQuote(cwd.string()) + " && RASTER=" + shellQuote(RASTER_CLI_PATH) +
+                              " bash -c " + shellQuote(script) + " >" + shellQuote((logs / "out.txt").string()) +
+                              " 2>" + shellQuote((logs / "err.txt").string());
+  const int raw = std::system(command.c_str());
+  RunResult result;
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  if (result.status > 128) {   // bash reports a child killed by signal N as 128 + N
+    result.signal = result.status - 128;
+    result.status = -1;
+  }
+  result.out = readText(logs / "out.txt");
+  result.err = readText(logs / "err.txt");
+  return result;
+}
+
+// Runs `raster ARGS` with the working folder `cwd`.
+inline RunResult runCli(const fs::path& cwd, const std::string& args) {
+  return runShell(cwd, "exec \"$RASTER\" " + args);
+}
+
+}  // namespace cli_test

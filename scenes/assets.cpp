@@ -10,6 +10,8 @@
 // the size (at most 16384 a side); then stb_image decodes.
 #include "scenes/assets.h"
 
+#include "scenes/obj_validate.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -319,6 +321,7 @@ void checkFinite(const std::string& path, const std::vector<tinyobj::real_t>& va
 
 MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) {
   const std::string text = readAssetFile(path);
+  validateObj(path, text);   // every line checked first: tinyobjloader only sees what it handles right
   std::istringstream in(text);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;

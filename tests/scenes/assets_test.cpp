@@ -3,6 +3,8 @@
 // and says what is wrong. Bad files are written into a fresh temporary folder per test.
 #include <doctest/doctest.h>
 
+#include <cctype>
+
 #include <stdlib.h>
 
 #include <algorithm>
@@ -78,8 +80,17 @@ std::string errorOf(F&& f) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// "asset PATH: ..." or, for a problem on one line of a text file, "asset PATH:LINE: ...".
 void checkOneLine(const std::string& message, const std::string& path) {
-  CHECK(message.rfind("asset " + path + ": ", 0) == 0);
+  const std::string prefix = "asset " + path + ":";
+  REQUIRE(message.rfind(prefix, 0) == 0);
+  size_t at = prefix.size();
+  if (at < message.size() && std::isdigit(static_cast<unsigned char>(message[at]))) {
+    while (at < message.size() && std::isdigit(static_cast<unsigned char>(message[at]))) ++at;
+    CHECK(message.compare(at, 1, ":") == 0);
+    ++at;
+  }
+  CHECK(message.compare(at, 1, " ") == 0);
   CHECK(message.find('\n') == std::string::npos);
 }
 
@@ -366,23 +377,23 @@ TEST_CASE("OBJ: out-of-range indices, no faces, no vertices, missing attributes"
   writeBytes(outOfRange, tri + "f 1/1/1 2/2/2 3/3/3\nf 1/1/1 2/2/2 9000/3/3\n");
   std::string m = errorOf([&] { scenes::loadCatMesh(outOfRange); });
   checkOneLine(m, outOfRange);
-  CHECK(contains(m, "face 2 uses vertex 9000 but the file has 3 vertices"));
+  CHECK(contains(m, outOfRange + ":11: a face uses vertex 9000 but the file has 3 vertices"));
 
   const std::string uvOut = tmp.file("uv-out-of-range.obj");
   writeBytes(uvOut, tri + "f 1/1/1 2/7/2 3/3/3\n");
   m = errorOf([&] { scenes::loadCatMesh(uvOut); });
-  CHECK(contains(m, "face 1 uses texture coordinate 7 but the file has 3 texture coordinates"));
+  CHECK(contains(m, ":10: a face uses texture coordinate 7 but the file has 3 texture coordinates"));
 
   const std::string relative = tmp.file("relative.obj");
   writeBytes(relative, tri + "f -1/1/1 -2/2/2 -5/3/3\n");
   m = errorOf([&] { scenes::loadCatMesh(relative); });
-  CHECK(contains(m, "face 1 uses a relative vertex index that points before the first vertex"));
+  CHECK(contains(m, ":10: vertex index -5 points before the first vertex"));
 
   const std::string zero = tmp.file("zero.obj");
   writeBytes(zero, tri + "f 0/1/1 2/2/2 3/3/3\n");
   m = errorOf([&] { scenes::loadCatMesh(zero); });
   checkOneLine(m, zero);
-  CHECK(contains(m, "not a readable OBJ file (tinyobjloader:"));
+  CHECK(contains(m, ":10: vertex index 0 (OBJ indices start at 1)"));
 
   const std::string empty = tmp.file("empty.obj");
   writeBytes(empty, "");

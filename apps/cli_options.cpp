@@ -124,8 +124,9 @@ Frame validateFrame(const FrameArgs& args) {
 
   // --time: finite, not negative, and still finite as a float.
   const double time = parseNumber("--time", args.time);
-  if (time < 0 || !std::isfinite(float(time)))
-    throw UsageError("--time: " + args.time + " is out of range (0 or more seconds)");
+  if (time < 0) throw UsageError("--time: " + args.time + " is negative (0 or more seconds)");
+  if (!std::isfinite(float(time)))
+    throw UsageError("--time: " + args.time + " overflows a float (scenes take their time as a float: at most 3.4e38 seconds)");
   frame.time = float(time);
 
   if (args.threads < 0 || args.threads > kMaxThreads)

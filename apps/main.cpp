@@ -208,6 +208,7 @@ int runRender(const cli::RenderArgs& args) {
   const std::string out = args.out.empty() ? frame.scene + ".png" : args.out;
   cli::checkOutputFile("--out", out);
   if (!args.dump.empty()) cli::checkOutputFolder("--dump", args.dump);
+  if (args.backend == "gl") scenes::checkGalliumEnvironment();
 
   const Side side = renderInProcess(frame, args.backend);
   compare::writePng(out, side.targets.back().image);
@@ -249,6 +250,7 @@ int runCompare(const cli::CompareArgs& args) {
   const cli::Thresholds limits = cli::validateThresholds(args);
   const std::string outFolder = args.out.empty() ? "compare-" + frame.scene : args.out;
   cli::checkOutputFolder("--out", outFolder);
+  scenes::checkGalliumEnvironment();
 
   // Render both sides; they must expose the same targets in the same order.
   const Side test = renderSide(frame, args.test);

@@ -150,18 +150,25 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
   // Walk every pixel once: per-pixel maxima for the shares, per-sample sums for RMSE.
   const size_t pixels = size_t(a.width) * size_t(a.height);
   const int channels = channelsOf(kind, a);
-  uint64_t differing = 0, over1 = 0, over4 = 0, identical = 0, maxUnits = 0;
+  uint64_t differing = 0, over1 = 0, over4 = 0, identical = 0, maxUnits = 0, nonFinite = 0, finiteSamples = 0;
   double sumSquares = 0, maxValue = 0;
   for (size_t p = 0; p < pixels; ++p) {
     uint64_t pixelUnits = 0;
-    bool sameBits = true;
+    bool sameBits = true, finitePixel = true;
     for (int c = 0; c < channels; ++c) {
-      const SampleDiff d = sampleDiff(kind, a, b, p * channels + c);
+      const size_t i = p * channels + c;
+      const SampleDiff d = sampleDiff(kind, a, b, i);
       pixelUnits = std::max(pixelUnits, d.units);
       sameBits = sameBits && d.sameBits;
+      if (kind == Kind::Half && !(std::isfinite(a.floats[i]) && std::isfinite(b.floats[i]))) {
+        finitePixel = false;   // NaN - NaN or inf - inf is no distance: kept out of RMSE
+        continue;
+      }
       sumSquares += d.value * d.value;
       maxValue = std::max(maxValue, std::fabs(d.value));
+      ++finiteSamples;
     }
+    nonFinite += !finitePixel;
     maxUnits = std::max(maxUnits, pixelUnits);
     differing += pixelUnits > 0;
     over1 += pixelUnits > 1;
@@ -171,7 +178,7 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
 
   // Turn the counts into shares and the sums into RMSE / PSNR.
   const double pixelCount = pixels ? double(pixels) : 1.0;
-  const double samples = pixels ? double(pixels) * channels : 1.0;
+  const double samples = finiteSamples ? double(finiteSamples) : 1.0;
   stats.shareDiffering = double(differing) / pixelCount;
   stats.shareOver1 = double(over1) / pixelCount;
   stats.shareOver4 = double(over4) / pixelCount;
@@ -185,6 +192,7 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
     stats.maxDepthLsb = maxUnits;
   }
   if (kind == Kind::Half) stats.maxHalfUlps = maxUnits;
+  stats.nonFinitePixels = nonFinite;
   return stats;
 }
 
@@ -220,6 +228,7 @@ std::string formatStatsLine(const TargetStats& s) {
     std::snprintf(line, sizeof line, "  identical%s  max|d| %.4g",
                   percent(s.shareBitIdentical).c_str(), s.maxAbs);
     text += line;
+    if (s.nonFinitePixels > 0) text += "  nonfinite " + std::to_string(s.nonFinitePixels);
   }
   return text;
 }

@@ -30,6 +30,10 @@ struct TargetStats {
   uint64_t maxDepthLsb = 0;            // depth only
   double shareBitIdentical = 0;        // of pixels whose every channel has the same bits
   uint64_t maxHalfUlps = 0;            // half only
+  // Float images: pixels with a NaN or infinite channel in either image. Their channels
+  // count in the shares and ULPs (NaN = NaN, +inf = +inf), but not in RMSE, PSNR or maxAbs,
+  // which are over the finite samples only, so no metric is ever NaN.
+  uint64_t nonFinitePixels = 0;
   int width = 0, height = 0;
 };
 
@@ -55,7 +59,7 @@ uint16_t halfBits(float value);
 uint64_t halfUlpDistance(uint16_t a, uint16_t b);
 
 // One aligned, human-readable line; depth lines add "texels N" (differing), half lines
-// "identical P%  max|d| X". E.g.
+// "identical P%  max|d| X" and, when there are any, "nonfinite N". E.g.
 //   final            rgba8 640x480    max 3            rmse 0.2827     psnr 59.10   differ  10.119%  >1   2.731%  >4   0.000%
 std::string formatStatsLine(const TargetStats& stats);
 

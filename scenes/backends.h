@@ -20,4 +20,9 @@ std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = fa
 // context can be made.
 std::unique_ptr<Backend> makeGlBackend();
 
+// Throws SceneError when GALLIUM_DRIVER names a driver other than llvmpipe or softpipe, or
+// LP_NUM_THREADS is not a whole number 0..1024 (Mesa crashes on an unknown driver).
+// makeGlBackend checks this first; commands call it before rendering anything.
+void checkGalliumEnvironment();
+
 }  // namespace scenes

@@ -15,6 +15,7 @@
 #include <GL/osmesa.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -29,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/backends.h"
+#include "scenes/scene.h"
 
 namespace scenes {
 namespace {
@@ -70,6 +72,7 @@ class GlBackend : public Backend {
   GlBackend() {
     if (liveBackends > 0)
       throw std::runtime_error("GL backend: only one GlBackend may exist at a time");
+    checkGalliumEnvironment();
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
                               OSMESA_DEPTH_BITS, 24,
                               OSMESA_STENCIL_BITS, 0,
@@ -430,6 +433,26 @@ class GlBackend : public Backend {
 };
 
 }  // namespace
+
+// Mesa reads GALLIUM_DRIVER and LP_NUM_THREADS when the first context is made, and an
+// unknown driver name makes OSMesa 22.3 crash inside Mesa with no message. Both are checked
+// here first: bad values are bad input (SceneError: the program exits 2).
+void checkGalliumEnvironment() {
+  if (const char* driver = std::getenv("GALLIUM_DRIVER")) {
+    const std::string name = driver;
+    if (name != "llvmpipe" && name != "softpipe")
+      throw SceneError("GALLIUM_DRIVER='" + name.substr(0, 40) +
+                       "' is not a driver the GL reference can use (llvmpipe or softpipe; unset means llvmpipe)");
+  }
+  if (const char* threads = std::getenv("LP_NUM_THREADS")) {
+    const std::string text = threads;
+    char* end = nullptr;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || value < 0 || value > 1024)
+      throw SceneError("LP_NUM_THREADS='" + text.substr(0, 40) +
+                       "' is not a thread count (a whole number 0..1024; llvmpipe uses at most 32)");
+  }
+}
 
 std::unique_ptr<Backend> makeGlBackend() { return std::make_unique<GlBackend>(); }
 

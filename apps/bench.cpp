@@ -143,6 +143,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   command->add_option("--gl-driver", args.glDriver, "GL driver to race: llvmpipe or softpipe")->capture_default_str();
   command->add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
   command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE (e.g. 8G)")
+      ->type_name("SIZE");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
   command->add_flag("--no-pin", args.noPin,
                     "Do not pin the process to --threads cores (by default both backends share the same N cores)");

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "scenes/memory_budget.h"
 #include "scenes/scene.h"
 
 namespace cli {
@@ -34,6 +35,10 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
       ->type_name("N")->capture_default_str();
   command.add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
   command.add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
+  command.add_option("--max-memory", args.maxMemory,
+                     "Refuse (exit 2) a run whose images, textures and targets would take more than SIZE, "
+                     "e.g. 8G or 512M (default: 3/4 of this machine's memory)")
+      ->type_name("SIZE");
   command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
       ->type_name("DIR");
 }
@@ -144,6 +149,13 @@ Frame validateFrame(const FrameArgs& args) {
   if (!args.assets.empty() && !fs::is_directory(args.assets))
     throw UsageError("--assets: no such folder: " + args.assets);
   frame.assets = args.assets;
+
+  if (!args.maxMemory.empty()) {
+    uint64_t bytes = 0;
+    if (!scenes::memory::parseBytes(args.maxMemory, bytes))
+      throw UsageError("--max-memory: '" + args.maxMemory + "' is not a size (a number with K, M, G or T, e.g. 8G)");
+    scenes::memory::setCap(bytes);
+  }
   return frame;
 }
 

@@ -30,6 +30,7 @@ struct FrameArgs {
   bool scalar = false;         // this pipeline with every SIMD fast path off
   int instances = 1000;        // the hdr scene's cube count
   std::string assets;          // empty: the scene library's default
+  std::string maxMemory;       // empty: scenes::memory::defaultCap()
 };
 
 struct RenderArgs : FrameArgs {
@@ -67,7 +68,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
 
 // Checks the shared options: a known scene, WxH within 1..16384, a finite time >= 0,
-// threads within 0..1024, an existing asset folder.
+// threads within 0..1024, an existing asset folder, a memory cap (which it sets: the run
+// allocates nothing before this).
 Frame validateFrame(const FrameArgs& args);
 Thresholds validateThresholds(const CompareArgs& args);
 

@@ -32,6 +32,7 @@
 #include "compare/metrics.h"
 #include "compare/output_file.h"
 #include "scenes/backends.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene.h"
 
 extern char** environ;
@@ -58,8 +59,9 @@ std::string sizeAndTime(const Frame& frame) {
   return text;
 }
 
-// Renders one frame with a backend made in this process ("raster" or "gl").
-Side renderInProcess(const Frame& frame, const std::string& backendKind) {
+// Renders one frame with a backend made in this process ("raster" or "gl"), and reads back
+// every target, or only the final image when `finalOnly` (a render without --dump).
+Side renderInProcess(const Frame& frame, const std::string& backendKind, bool finalOnly = false) {
   const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
   std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, options);
   std::unique_ptr<scenes::Backend> backend;
@@ -74,7 +76,9 @@ Side renderInProcess(const Frame& frame, const std::string& backendKind) {
   backend->resizeDefaultFramebuffer(frame.width, frame.height);
   scene->setup(*backend);
   scene->renderFrame(*backend, frame.time);
-  Side side{backend->name(), scene->readTargets(*backend)};
+  Side side{backend->name(), {}};
+  if (finalOnly) side.targets.push_back(scene->readFinal(*backend));
+  else side.targets = scene->readTargets(*backend);
   if (side.targets.empty()) throw std::runtime_error("scene " + frame.scene + " exposed no targets");
   return side;
 }
@@ -153,6 +157,9 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
                                    "--time", time, "--threads", std::to_string(frame.threads),
                                    "--dump", dump.path, "--out", dump.path + "/out.png"};
   if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
+  // The child gets what this process has left of the cap (its targets are loaded back here).
+  const uint64_t left = scenes::memory::cap() - std::min(scenes::memory::cap(), scenes::memory::reserved());
+  args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
   args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
 
   // The environment as it is, with GALLIUM_DRIVER replaced.
@@ -210,7 +217,7 @@ int runRender(const cli::RenderArgs& args) {
   if (!args.dump.empty()) cli::checkOutputFolder("--dump", args.dump);
   if (args.backend == "gl") scenes::checkGalliumEnvironment();
 
-  const Side side = renderInProcess(frame, args.backend);
+  const Side side = renderInProcess(frame, args.backend, /*finalOnly=*/args.dump.empty());
   compare::writePng(out, side.targets.back().image);
   std::cout << "wrote " << out << std::endl;
   if (!args.dump.empty()) dumpTargets(args.dump, side.targets);

@@ -469,6 +469,12 @@ ImageRgba8 loadImageRgba8(const std::string& path) {
   // Refuse an absurd size before decoding (a zero JPEG height is stb_image's to refuse).
   if (headerW > kMaxImageSide || headerH > kMaxImageSide) checkImageSize(path, headerW, headerH);
 
+  // The decoded size, from the header, reserved before stb_image allocates it (and held for
+  // as long as the pixels are).
+  memory::Reservation reserved;
+  if (headerW > 0 && headerH > 0)
+    reserved = memory::Reservation(uint64_t(headerW) * uint64_t(headerH) * 4,
+                                   memory::joined({"decoding ", path, " (", std::to_string(headerW), "x", std::to_string(headerH), ")"}));
   int w = 0, h = 0, c = 0;
   stbi_set_flip_vertically_on_load_thread(0);  // the tutorial's loader: rows as in the file
   stbi_uc* pixels = stbi_load_from_memory(bytesOf(data), int(data.size()), &w, &h, &c, 4);
@@ -480,6 +486,7 @@ ImageRgba8 loadImageRgba8(const std::string& path) {
   ImageRgba8 image;
   image.width = w;
   image.height = h;
+  image.reserved = std::move(reserved);
   image.pixels.assign(pixels, pixels + size_t(w) * size_t(h) * 4);
   stbi_image_free(pixels);
   return image;
@@ -548,6 +555,9 @@ ImageRgbFloat loadHdrRgb(const std::string& path) {
   if (!problem.empty()) fail(path, problem);
   if (data.size() > size_t(INT_MAX)) fail(path, "file too large for stb_image");
 
+  // Decoded as 3 floats a texel: reserved from the header before stb_image allocates it.
+  memory::Reservation reserved(uint64_t(w) * uint64_t(h) * 12,
+                               memory::joined({"decoding ", path, " (", std::to_string(w), "x", std::to_string(h), ")"}));
   stbi_set_flip_vertically_on_load_thread(0);
   int x = 0, y = 0, comp = 0;
   float* pixels = stbi_loadf_from_memory(bytesOf(data), int(data.size()), &x, &y, &comp, 3);
@@ -560,6 +570,7 @@ ImageRgbFloat loadHdrRgb(const std::string& path) {
   ImageRgbFloat image;
   image.width = x;
   image.height = y;
+  image.reserved = std::move(reserved);
   image.pixels.assign(pixels, pixels + size_t(x) * size_t(y) * 3);
   stbi_image_free(pixels);
   return image;

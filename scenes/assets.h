@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "scenes/backend.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene.h"
 
 namespace scenes {
@@ -52,11 +53,13 @@ struct ImageRgba8 {
   int width = 0;
   int height = 0;
   std::vector<uint8_t> pixels;   // width * height * 4
+  memory::Reservation reserved;  // the pixels' share of --max-memory, reserved before decoding
 };
 
 // A JPEG or PNG through stb_image with 4 channels requested (the tutorial's loader).
 // Checks that the file is complete (JPEG: the end-of-image marker after the last scan;
-// PNG: the IEND chunk) and at most 16384 texels on a side.
+// PNG: the IEND chunk) and at most 16384 texels on a side, and reserves the decoded size
+// (scenes/memory_budget.h) from the header before decoding.
 ImageRgba8 loadImageRgba8(const std::string& path);
 
 // Several images decoded in parallel (the 2K JPEGs take tens of milliseconds each), in the
@@ -68,6 +71,7 @@ struct ImageRgbFloat {
   int width = 0;
   int height = 0;
   std::vector<float> pixels;     // width * height * 3
+  memory::Reservation reserved;  // as ImageRgba8's
 };
 
 // A Radiance RGBE (.hdr) file through stbi_loadf with 3 channels (load_hdr_texture).

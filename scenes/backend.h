@@ -24,6 +24,7 @@
 
 #include "raster/contract.h"
 #include "raster/texture/texture.h"
+#include "scenes/memory_budget.h"
 
 namespace scenes {
 
@@ -111,6 +112,7 @@ struct ImageData {
   std::vector<float> floats;
   std::vector<uint32_t> depth;
   int depthBits = 0;
+  memory::Reservation reserved;   // the payload's share of --max-memory (scenes/memory_budget.h)
 };
 
 // ---- the interface --------------------------------------------------------------------------

@@ -30,6 +30,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scenes/backends.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene.h"
 
 namespace scenes {
@@ -96,6 +97,7 @@ class GlBackend : public Backend {
   }
 
   ~GlBackend() override {
+    memory::release(reserved_);
     OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
     OSMesaDestroyContext(context_);
     --liveBackends;
@@ -104,6 +106,12 @@ class GlBackend : public Backend {
   std::string name() const override { return name_; }
 
   void resizeDefaultFramebuffer(int width, int height) override {
+    // Our RGBA8 buffer, Mesa's own colour buffer and its 24-bit depth buffer: 12 bytes a pixel.
+    const uint64_t bytes = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)) * 12;
+    reserve(bytes, memory::joined({"the ", std::to_string(width), "x", std::to_string(height), " window in GL"}));
+    memory::release(windowBytes_);
+    reserved_ -= std::min(reserved_, windowBytes_);
+    windowBytes_ = bytes;
     // The old buffer stays alive until the context is bound to the new one (Mesa may
     // flush pending rendering into the old buffer while switching).
     std::vector<uint8_t> buffer(size_t(width) * size_t(height) * 4, 0);
@@ -177,6 +185,9 @@ class GlBackend : public Backend {
   }
 
   Handle createTexture(const TextureDesc& desc, const void* pixels) override {
+    // llvmpipe stores the texture (RGB16F padded like RGBA16F, Z16 in 2 bytes at most: counted as raster does).
+    reserve(raster::textureStorageBytes(desc.width, desc.height, desc.format),
+            memory::joined({"a ", std::to_string(desc.width), "x", std::to_string(desc.height), " texture in GL"}));
     // Upload formats per TexelFormat: {internal format, format, type}.
     GLint internal = GL_RGBA8;
     GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
@@ -342,7 +353,11 @@ class GlBackend : public Backend {
       glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + attachment));
     }
     size_t rowElements = size_t(image.width) * 4;
-    if (image.format == TexelFormat::RGBA16F || image.format == TexelFormat::RGBA32F) {
+    const bool floats = image.format == TexelFormat::RGBA16F || image.format == TexelFormat::RGBA32F;
+    image.reserved = memory::Reservation(uint64_t(image.width) * uint64_t(image.height) * (floats ? 16 : 4),
+                                         memory::joined({"reading back a ", std::to_string(image.width), "x",
+                                                         std::to_string(image.height), " target from GL"}));
+    if (floats) {
       image.floats.resize(rowElements * size_t(image.height));
       glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, image.floats.data());
       flipRows(image.floats, rowElements);
@@ -374,6 +389,9 @@ class GlBackend : public Backend {
     // Mesa packs an n-bit depth code d into GL_UNSIGNED_INT by bit replication
     // (d << (32 - n) | d >> (2n - 32)), so the top n bits are exactly the code.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(framebuffer));
+    image.reserved = memory::Reservation(uint64_t(image.width) * uint64_t(image.height) * 4,
+                                         memory::joined({"reading back a ", std::to_string(image.width), "x",
+                                                         std::to_string(image.height), " depth target from GL"}));
     image.depth.resize(size_t(image.width) * size_t(image.height));
     glReadPixels(0, 0, image.width, image.height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, image.depth.data());
     checkGl("readDepth");
@@ -424,6 +442,13 @@ class GlBackend : public Backend {
 
   OSMesaContext context_ = nullptr;
   std::vector<uint8_t> colorBuffer_;  // the default framebuffer's colour, owned here
+  uint64_t reserved_ = 0;             // this backend's share of the run's memory (scenes/memory_budget.h)
+  uint64_t windowBytes_ = 0;
+
+  void reserve(uint64_t bytes, const std::string& what) {
+    memory::reserve(bytes, what);
+    reserved_ += bytes;
+  }
   int width_ = 0, height_ = 0;
   std::string name_;
   std::map<Handle, Mesh> meshes_;

@@ -11,6 +11,7 @@
 #include "raster/texture/format.h"
 #include "raster/renderer.h"
 #include "scenes/backends.h"
+#include "scenes/memory_budget.h"
 #include "scenes/program_registry.h"
 
 namespace scenes {
@@ -32,10 +33,19 @@ class RasterBackend final : public Backend {
     resizeDefaultFramebuffer(640, 480);
   }
 
+  ~RasterBackend() override { memory::release(reserved_); }
+
   std::string name() const override { return "raster"; }
 
   void resizeDefaultFramebuffer(int width, int height) override {
     renderer_.flush();
+    const uint64_t before = raster::textureStorageBytes(defaultColor_.width, defaultColor_.height, TexelFormat::RGBA8) * 2;
+    defaultColor_ = raster::Texture();   // freed before the new size is reserved
+    defaultDepth_ = raster::Texture();
+    memory::release(before);
+    reserved_ -= std::min(reserved_, before);
+    reserve(raster::textureStorageBytes(width, height, TexelFormat::RGBA8) * 2,
+            memory::joined({"the ", std::to_string(width), "x", std::to_string(height), " window (RGBA8 colour, 24-bit depth)"}));
     defaultColor_ = raster::Texture(width, height, TexelFormat::RGBA8);
     defaultDepth_ = raster::Texture(width, height, TexelFormat::Depth24);
     raster::Framebuffer& fb = framebuffers_[kDefaultFramebuffer];
@@ -52,6 +62,13 @@ class RasterBackend final : public Backend {
   }
 
   Handle createMesh(const MeshData& mesh) override {
+    // The mesh's copy, and the shaded vertex records of every (instance, vertex): 8 floats of
+    // positions plus the program's varyings (at most kMaxVaryingFloats).
+    const uint64_t vertices = mesh.strideFloats > 0 ? mesh.vertices.size() / size_t(mesh.strideFloats) : 0;
+    const uint64_t instances = mesh.instanceStrideFloats > 0 ? std::max<uint64_t>(mesh.instances.size() / size_t(mesh.instanceStrideFloats), 1) : 1;
+    reserve((mesh.vertices.size() + mesh.instances.size() + mesh.indices.size()) * 4 +
+                vertices * instances * (8 + raster::limits::kMaxVaryingFloats) * 4,
+            memory::joined({"a mesh of ", std::to_string(vertices), " vertices x ", std::to_string(instances), " instances"}));
     auto m = std::make_unique<Mesh>();
     m->data = mesh;
     m->stream.vertices = m->data.vertices.data();
@@ -69,6 +86,8 @@ class RasterBackend final : public Backend {
   }
 
   Handle createTexture(const TextureDesc& desc, const void* pixels) override {
+    reserve(raster::textureStorageBytes(desc.width, desc.height, desc.format),
+            memory::joined({"a ", std::to_string(desc.width), "x", std::to_string(desc.height), " texture"}));
     auto t = std::make_unique<raster::Texture>(desc.width, desc.height, desc.format);
     t->sampler = desc.sampler;
     if (pixels) upload(*t, pixels, desc.format == TexelFormat::RGB16F ? 3 : 4);
@@ -133,6 +152,7 @@ class RasterBackend final : public Backend {
     if (attachment < 0 || attachment >= int(fb.colors.size())) throw std::runtime_error("no such colour attachment");
     const raster::Texture& t = *fb.colors[size_t(attachment)];
     ImageData image = imageHeader(t);
+    image.reserved = readBackReservation(t);
     for (int row = 0; row < t.height; ++row) {
       const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width) * 4;
       if (t.format == TexelFormat::RGBA8) {
@@ -152,6 +172,7 @@ class RasterBackend final : public Backend {
     if (!fb.depth) throw std::runtime_error("framebuffer has no depth buffer");
     const raster::Texture& t = *fb.depth;
     ImageData image = imageHeader(t);
+    image.reserved = readBackReservation(t);
     for (int row = 0; row < t.height; ++row) {
       const size_t src = size_t(fb.flipY ? row : t.height - 1 - row) * size_t(t.width);
       image.depth.insert(image.depth.end(), t.depth.begin() + long(src), t.depth.begin() + long(src + size_t(t.width)));
@@ -175,6 +196,18 @@ class RasterBackend final : public Backend {
   }
 
  private:
+  void reserve(uint64_t bytes, const std::string& what) {
+    memory::reserve(bytes, what);
+    reserved_ += bytes;
+  }
+
+  // Read-backs hold RGBA8 as 4 bytes a pixel, depth codes as 4, float formats as 4 floats.
+  static memory::Reservation readBackReservation(const raster::Texture& t) {
+    const uint64_t perPixel = t.format == TexelFormat::RGBA8 || t.isDepth() ? 4 : 16;
+    return memory::Reservation(uint64_t(t.width) * uint64_t(t.height) * perPixel,
+                               memory::joined({"reading back a ", std::to_string(t.width), "x", std::to_string(t.height), " target"}));
+  }
+
   static ImageData imageHeader(const raster::Texture& t) {
     ImageData image;
     image.width = t.width;
@@ -223,6 +256,7 @@ class RasterBackend final : public Backend {
 
   raster::Renderer renderer_;
   raster::Texture defaultColor_, defaultDepth_;
+  uint64_t reserved_ = 0;   // this backend's share of the run's memory (scenes/memory_budget.h)
   std::vector<std::unique_ptr<raster::Texture>> textures_;
   std::vector<raster::Framebuffer> framebuffers_;
   std::vector<std::unique_ptr<Mesh>> meshes_;

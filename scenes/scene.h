@@ -37,6 +37,11 @@ class Scene {
   virtual void renderFrame(Backend& backend, float time) = 0;
   // Every target of the last frame (finishes the backend first), the final image last.
   virtual std::vector<Target> readTargets(Backend& backend) = 0;
+  // Only the final image (the window's colour), for a render that writes nothing else.
+  Target readFinal(Backend& backend) {
+    backend.finish();
+    return {"final", backend.readColor(kDefaultFramebuffer)};
+  }
 };
 
 // A problem a user can fix (missing or corrupt asset, unknown scene): one clear line.

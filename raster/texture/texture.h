@@ -35,6 +35,21 @@ struct SamplerState {
   bool compareLequal = false;       // GL_COMPARE_REF_TO_TEXTURE, GL_LEQUAL
 };
 
+// Bytes a Texture of this size and format holds (RGB16F is stored as RGBA16F; depth codes
+// take 32 bits each).
+inline uint64_t textureStorageBytes(int width, int height, TexelFormat format) {
+  const uint64_t texels = uint64_t(width > 0 ? width : 0) * uint64_t(height > 0 ? height : 0);
+  switch (format) {
+    case TexelFormat::RGBA8: return texels * 4;
+    case TexelFormat::RGBA16F:
+    case TexelFormat::RGB16F: return texels * 8;
+    case TexelFormat::RGBA32F: return texels * 16;
+    case TexelFormat::Depth16:
+    case TexelFormat::Depth24: return texels * 4;
+  }
+  return texels * 16;
+}
+
 struct Texture {
   int width = 0;
   int height = 0;

@@ -176,10 +176,16 @@ class DeferredScene final : public Scene {
 
   std::vector<Target> readTargets(Backend& b) override {
     b.finish();
-    return {{"shadow_map", b.readDepth(shadow_fbo_)},     {"gbuffer_albedo", b.readColor(g_fbo_, 0)},
-            {"gbuffer_normal", b.readColor(g_fbo_, 1)},   {"gbuffer_worldpos", b.readColor(g_fbo_, 2)},
-            {"gbuffer_depth", b.readDepth(g_fbo_)},       {"ssao", b.readColor(ssao_fbo_, 0)},
-            {"final", b.readColor(kDefaultFramebuffer)}};
+    // Appended one by one: a braced list would copy every image (its elements are const).
+    std::vector<Target> targets;
+    targets.push_back({"shadow_map", b.readDepth(shadow_fbo_)});
+    targets.push_back({"gbuffer_albedo", b.readColor(g_fbo_, 0)});
+    targets.push_back({"gbuffer_normal", b.readColor(g_fbo_, 1)});
+    targets.push_back({"gbuffer_worldpos", b.readColor(g_fbo_, 2)});
+    targets.push_back({"gbuffer_depth", b.readDepth(g_fbo_)});
+    targets.push_back({"ssao", b.readColor(ssao_fbo_, 0)});
+    targets.push_back({"final", b.readColor(kDefaultFramebuffer)});
+    return targets;
   }
 
  private:

@@ -131,9 +131,12 @@ class ShadowScene final : public Scene {
 
   std::vector<Target> readTargets(Backend& b) override {
     b.finish();
-    return {{"shadow_map", b.readDepth(shadow_fbo_)},
-            {"depth", b.readDepth(kDefaultFramebuffer)},
-            {"final", b.readColor(kDefaultFramebuffer)}};
+    // Appended one by one: a braced list would copy every image (its elements are const).
+    std::vector<Target> targets;
+    targets.push_back({"shadow_map", b.readDepth(shadow_fbo_)});
+    targets.push_back({"depth", b.readDepth(kDefaultFramebuffer)});
+    targets.push_back({"final", b.readColor(kDefaultFramebuffer)});
+    return targets;
   }
 
  private:

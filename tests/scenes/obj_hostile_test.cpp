@@ -24,7 +24,8 @@ std::string refusal(const std::string& text, int line) {
     scenes::loadCatMesh(path);
   } catch (const scenes::SceneError& e) {
     const std::string message = e.what();
-    const std::string where = "asset " + path + (line > 0 ? ":" + std::to_string(line) + ": " : ": ");
+    std::string where = "asset ";
+    where.append(path).append(line > 0 ? ":" + std::to_string(line) : std::string()).append(": ");
     INFO(message);
     CHECK(message.rfind(where, 0) == 0);
     return message.substr(std::min(message.size(), where.size()));
@@ -37,8 +38,8 @@ std::string refusal(const std::string& text, int line) {
 
 std::string face(int corners) {
   std::string f = "f";
-  for (int i = 0; i < corners; ++i) f += " " + std::to_string(1 + i % 3) + "/1/1";
-  return f + "\n";
+  for (int i = 0; i < corners; ++i) f.append(" ").append(std::to_string(1 + i % 3)).append("/1/1");
+  return f.append("\n");
 }
 
 }  // namespace

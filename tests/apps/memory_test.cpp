@@ -1,0 +1,84 @@
+// Bounded memory: every image, texture, target and read-back is reserved against
+// --max-memory from its size before it is allocated (scenes/memory_budget.h); past the cap
+// the program exits 2 naming what it was allocating, having allocated at most the cap.
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <string>
+
+#include "compare/image_io.h"
+#include "scenes/scene.h"
+#include "tests/apps/cli_test_helpers.h"
+
+namespace {
+
+using namespace cli_test;
+
+}  // namespace
+
+TEST_SUITE("hostile") {
+  // A 16384x16384 window alone is 2 GiB of colour and depth: refused before it is made.
+  TEST_CASE("memory: a render over the cap is refused before its buffers are allocated") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult r = runCli(cwd, "render shadow --size 16384x16384 --max-memory 1G --out big.png");
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("raster: memory: the 16384x16384 window") != std::string::npos);
+    CHECK(r.err.find("over the cap of 1.00 GiB (--max-memory)") != std::string::npos);
+    CHECK(fs::is_empty(cwd));
+    CHECK(runCli(cwd, "render shadow --max-memory 12X").status == 2);
+    CHECK(runCli(cwd, "render shadow --max-memory 0").status == 2);
+  }
+
+  // render used to read back every target even without --dump (a 16384x16384 deferred render
+  // died with bad_alloc at 21 GB). At 4096x4096 the frame needs about 700 MiB, and reading
+  // back all seven targets another 730 MiB: under a 900 MiB cap the plain render succeeds,
+  // and the same render with --dump is refused.
+  TEST_CASE("memory: render reads back only the final image unless it dumps every target") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const std::string render = "render deferred --size 4096x4096 --threads 2 --max-memory 900M --out final.png";
+    const RunResult plain = runCli(cwd, render);
+    INFO(plain.err);
+    CHECK(plain.status == 0);
+    CHECK(fs::is_regular_file(cwd / "final.png"));
+    const RunResult dump = runCli(cwd, render + " --dump targets");
+    INFO(dump.err);
+    CHECK(dump.status == 2);
+    CHECK(dump.err.find("memory: reading back a 4096x4096 target") != std::string::npos);
+  }
+
+  // Seven 16384x16384 JPEGs in the asset folder took 17 GB before anything failed. An image
+  // is now refused from its header, before it is decoded: here a PNG whose header claims
+  // 16384x16384 (1 GiB decoded) among the deferred scene's real assets.
+  TEST_CASE("memory: an asset image over the cap is refused from its header, before decoding") {
+    TempFolder temp;
+    const fs::path assets = temp.path / "assets", cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    fs::copy(scenes::assetDirectory({}), assets, fs::copy_options::recursive);
+    const fs::path victim = assets / "brick" / "Bricks031_1K-JPG_Color.jpg";
+    REQUIRE(fs::exists(victim));
+    scenes::ImageData small;
+    small.width = small.height = 4;
+    small.format = scenes::TexelFormat::RGBA8;
+    small.rgba8.assign(64, 7);
+    const fs::path png = temp.path / "small.png";
+    compare::writePng(png.string(), small);
+    std::string bytes = readText(png);
+    for (int k = 0; k < 2; ++k) {   // IHDR width and height, big-endian, at bytes 16 and 20
+      bytes[size_t(16 + 4 * k)] = 0;
+      bytes[size_t(17 + 4 * k)] = 0;
+      bytes[size_t(18 + 4 * k)] = char(0x40);
+      bytes[size_t(19 + 4 * k)] = 0;
+    }
+    fs::remove(victim);
+    std::ofstream(victim, std::ios::binary) << bytes;
+    const RunResult r = runCli(cwd, "render deferred --size 64x48 --max-memory 600M --assets " + shellQuote(assets.string()));
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("memory: decoding " + victim.string() + " (16384x16384) needs 1.00 GiB") != std::string::npos);
+  }
+}

@@ -35,6 +35,13 @@ constexpr int kBlockSize = 4;
 constexpr int kSubPixelBits = 8;
 constexpr int kSubPixelOne = 1 << kSubPixelBits;
 
+// Setup drops a triangle with a window coordinate beyond +-2^21 pixels, or not a number.
+// Clipping bounds every finite vertex to the viewport, so only NaN positions (which pass the
+// clip tests: ordered compares are false) or a caller that skips clipping get here; GL
+// leaves them undefined. Below the bound, snapped coordinates need 30 bits and every edge
+// product of setup fits int64 with room to spare.
+constexpr float kMaxWindowCoordinate = float(1 << 21);
+
 // ---- shader interface ----------------------------------------------------------------------
 
 // Vertex attribute locations 0..7: GL 3.3 guarantees 16; the scenes use at most 6, and every

@@ -12,6 +12,8 @@
 
 #include "scenes/obj_validate.h"
 
+#include "raster/util/parallel.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -26,7 +28,6 @@
 #include <unordered_map>
 
 #include <stb_image.h>
-#include <tbb/parallel_for.h>
 #include <tiny_obj_loader.h>
 
 #include <glm/glm.hpp>
@@ -319,8 +320,9 @@ void checkFinite(const std::string& path, const std::vector<tinyobj::real_t>& va
 
 // ---- the cat mesh ---------------------------------------------------------------------------------
 
-MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) {
-  const std::string text = readAssetFile(path);
+MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) { return parseCatMesh(path, readAssetFile(path), infoOut); }
+
+MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadInfo* infoOut) {
   validateObj(path, text);   // every line checked first: tinyobjloader only sees what it handles right
   std::istringstream in(text);
   tinyobj::attrib_t attrib;
@@ -449,8 +451,9 @@ MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) {
 
 // ---- images ---------------------------------------------------------------------------------------
 
-ImageRgba8 loadImageRgba8(const std::string& path) {
-  const std::string data = readAssetFile(path);
+ImageRgba8 loadImageRgba8(const std::string& path) { return decodeImageRgba8(path, readAssetFile(path)); }
+
+ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data) {
   const bool jpeg = isJpeg(data), png = isPng(data);
   if (!jpeg && !png) {
     int w, h, c;
@@ -495,7 +498,8 @@ ImageRgba8 loadImageRgba8(const std::string& path) {
 std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths) {
   std::vector<ImageRgba8> images(paths.size());
   std::vector<std::exception_ptr> errors(paths.size());
-  tbb::parallel_for(size_t(0), paths.size(), [&](size_t i) {
+  raster::ThreadPool(0).parallelFor(int(paths.size()), [&](int index) {
+    const size_t i = size_t(index);
     try {
       images[i] = loadImageRgba8(paths[i]);
     } catch (...) {
@@ -507,8 +511,9 @@ std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths) {
   return images;
 }
 
-ImageRgbFloat loadHdrRgb(const std::string& path) {
-  const std::string data = readAssetFile(path);
+ImageRgbFloat loadHdrRgb(const std::string& path) { return decodeHdrRgb(path, readAssetFile(path)); }
+
+ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data) {
   size_t pos = 0;
   std::string line;
   hdrLine(data, pos, line);

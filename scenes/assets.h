@@ -44,6 +44,8 @@ struct ObjLoadInfo {
 // {0: 3 @0, 1: 3 @3, 2: 2 @6}; uv as in the file (no 1 - v flip); faces fan-triangulated in
 // file order; positions normalised as upload_cat does (centre x/z, min y at 0, height 2.2).
 MeshData loadCatMesh(const std::string& objPath, ObjLoadInfo* info = nullptr);
+// The same for a file's content already read (path names it in messages): for the fuzz targets.
+MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadInfo* info = nullptr);
 
 // ---- images -----------------------------------------------------------------------------------
 
@@ -61,6 +63,7 @@ struct ImageRgba8 {
 // PNG: the IEND chunk) and at most 16384 texels on a side, and reserves the decoded size
 // (scenes/memory_budget.h) from the header before decoding.
 ImageRgba8 loadImageRgba8(const std::string& path);
+ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data);   // content already read
 
 // Several images decoded in parallel (the 2K JPEGs take tens of milliseconds each), in the
 // order given. If any fails, the error of the first failing path (in that order) is thrown.
@@ -78,5 +81,6 @@ struct ImageRgbFloat {
 // The header and every scanline are checked before decoding (stb_image would loop forever
 // on some truncated run-length data).
 ImageRgbFloat loadHdrRgb(const std::string& path);
+ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data);   // content already read
 
 }  // namespace scenes

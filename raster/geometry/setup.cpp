@@ -63,13 +63,17 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   const float* vert[3] = {v0, v1, v2};
 
   // Snap, and orient by the exact area sign (triangle_both).
+  // NaN or far beyond the fixed-point range: undefined in GL, dropped (limits.h).
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 2; ++c)
+      if (!(std::fabs(vert[i][kWindow + c]) <= limits::kMaxWindowCoordinate)) return false;
   FixedTriangle fixed;
   for (int i = 0; i < 3; ++i) {
     fixed.x[i] = snap(vert[i][kWindow + 0]);
     fixed.y[i] = snap(vert[i][kWindow + 1]);
   }
-  const int64_t dx01 = fixed.x[0] - fixed.x[1], dy01 = fixed.y[0] - fixed.y[1];
-  const int64_t dx20 = fixed.x[2] - fixed.x[0], dy20 = fixed.y[2] - fixed.y[0];
+  const int64_t dx01 = int64_t(fixed.x[0]) - fixed.x[1], dy01 = int64_t(fixed.y[0]) - fixed.y[1];
+  const int64_t dx20 = int64_t(fixed.x[2]) - fixed.x[0], dy20 = int64_t(fixed.y[2]) - fixed.y[0];
   const int64_t area = dx01 * dy20 - dx20 * dy01;
   if (area == 0) return false;
   // GL's counter-clockwise (y up) is area < 0 in FBO memory rows, area > 0 when flipped.

@@ -1,12 +1,49 @@
-// ThreadPool on oneTBB: a task_arena capped at the requested concurrency.
+// ThreadPool: on oneTBB (a task_arena capped at the requested concurrency), or, in the
+// ThreadSanitizer build (RASTER_STD_THREADS), on plain std::threads that the sanitizer sees
+// whole: oneTBB from Debian is not instrumented, so its own synchronisation would be
+// invisible to ThreadSanitizer and every hand-off through it a false report. Both run each
+// item once on some thread; items are independent, so the output is the same.
 #include "raster/util/parallel.h"
 
+#if RASTER_STD_THREADS
+#include <atomic>
+#include <thread>
+#include <vector>
+#else
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#endif
 
 namespace raster {
+
+#if RASTER_STD_THREADS
+
+struct ThreadPool::Arena {};
+
+ThreadPool::ThreadPool(int threads)
+    : threads_(threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()))) {}
+
+ThreadPool::~ThreadPool() = default;
+
+// Fork-join per call: the workers take items from a shared counter until none are left.
+void ThreadPool::parallelFor(int count, const std::function<void(int)>& fn) {
+  if (threads_ == 1 || count <= 1) {
+    for (int i = 0; i < count; ++i) fn(i);
+    return;
+  }
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int i = next++; i < count; i = next++) fn(i);
+  };
+  std::vector<std::thread> workers;
+  for (int t = 1; t < std::min(threads_, count); ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& w : workers) w.join();
+}
+
+#else
 
 struct ThreadPool::Arena {
   tbb::task_arena arena;
@@ -29,5 +66,7 @@ void ThreadPool::parallelFor(int count, const std::function<void(int)>& fn) {
     });
   });
 }
+
+#endif
 
 }  // namespace raster

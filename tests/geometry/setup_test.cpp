@@ -127,6 +127,18 @@ TEST_SUITE("geometry") {
     CHECK(set.planes.empty());
   }
 
+  // Found by the geometry fuzz target: a NaN window position (which passes the clip tests,
+  // whose compares are ordered) snapped to INT_MIN and overflowed setup's int arithmetic.
+  TEST_CASE("setup: a NaN or far-out window coordinate drops the triangle") {
+    SetUp set;
+    const float nan = std::nanf("");
+    CHECK_FALSE(set.add(stateFor(16, 16), windowVertex(nan, 0.5f), windowVertex(4.5f, 0.5f), windowVertex(4.5f, 4.5f)));
+    CHECK_FALSE(set.add(stateFor(16, 16), windowVertex(0.5f, 0.5f), windowVertex(4.5f, INFINITY), windowVertex(4.5f, 4.5f)));
+    CHECK_FALSE(set.add(stateFor(16, 16), windowVertex(0.5f, 0.5f), windowVertex(1e30f, 0.5f), windowVertex(4.5f, 4.5f)));
+    CHECK(set.add(stateFor(16, 16), windowVertex(0.5f, 0.5f), windowVertex(2.0e6f, 0.5f), windowVertex(4.5f, 4.5f)));
+    CHECK(set.triangles.size() == 1);
+  }
+
   // In memory rows (y down), (a, b, c) = (0.5,0.5), (4.5,0.5), (4.5,4.5) has area
   // dx01 * dy20 - dx20 * dy01 = -1024 * 1024 < 0: counter-clockwise in GL's y-up terms for
   // an FBO, so front-facing; on a window buffer (rows flipped) the same order is clockwise.

@@ -21,58 +21,13 @@
 #include "compare/image_io.h"
 #include "compare/metrics.h"
 #include "scenes/scene.h"
+#include "tests/apps/cli_test_helpers.h"
 
 namespace {
 
-namespace fs = std::filesystem;
+using namespace cli_test;
 using scenes::ImageData;
 using scenes::TexelFormat;
-
-// A fresh temporary folder, removed with its content afterwards.
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "raster-cli-test-XXXXXX").string();
-    REQUIRE(mkdtemp(pattern.data()) != nullptr);
-    path = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
-struct RunResult {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string shellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs `raster ARGS` with the working folder `cwd`; its output is kept outside that folder.
-RunResult runCli(const fs::path& cwd, const std::string& args) {
-  const fs::path logs = cwd.parent_path();
-  const std::string command = "cd " + shellQuote(cwd) + " && " + shellQuote(RASTER_CLI_PATH) + " " +
-                              args + " >" + shellQuote(logs / "out.txt") + " 2>" +
-                              shellQuote(logs / "err.txt");
-  const int raw = std::system(command.c_str());
-  RunResult result;
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  result.out = readText(logs / "out.txt");
-  result.err = readText(logs / "err.txt");
-  return result;
-}
 
 // Runs a command that must be refused as bad input, and checks how it is refused.
 void expectRefused(const std::string& args) {

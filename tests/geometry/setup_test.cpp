@@ -191,6 +191,7 @@ TEST_SUITE("geometry") {
     // (0.25 here) times the factor.
     CHECK(raster::polygonOffsetUnits(1.0f, 24) == float(2.0 / 16777215.0));
     CHECK(raster::polygonOffsetUnits(1.0f, 16) == float(2.0 / 65535.0));
+    state.varyingFloats = 0;   // the vertices below carry none
     state.polygonOffset = true;
     state.offsetFactor = 2.0f;
     state.offsetUnitsScaled = raster::polygonOffsetUnits(4.0f, 24);

@@ -53,8 +53,11 @@ struct SetupLists {
 float polygonOffsetUnits(float units, int depthBits);
 
 // Sets up one triangle of shaded vertex records (contract.h, vertex_record). Appends it and
-// its varying planes to `out` unless it is culled, has no area or covers no pixel centre
-// inside the framebuffer's bounds; returns whether it did.
+// its varying planes to `out` unless it is culled, has no area after snapping, has a window
+// coordinate that is NaN or beyond limits::kMaxWindowCoordinate, or has pixel bounds that are
+// empty within the framebuffer; returns whether it did. (A small triangle between pixel
+// centres keeps non-empty bounds and is set up, covering nothing: llvmpipe's bounds are as
+// conservative.)
 bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, SetupLists out);
 
 }  // namespace raster

@@ -133,11 +133,13 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   tri.w = planeOf(s, p0[3], p1[3], p2[3]);
 
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
+  // The interp=affine method (methods.h) takes the plain values: screen-linear planes.
+  const bool perspective = methods::active().interp == InterpMethod::Perspective;
   tri.varyingBase = uint32_t(out.varyingPlanes.size());
   for (int v = 0; v < state.varyingFloats; ++v) {
-    const float a0 = vert[0][kVaryings + v] * p0[3];
-    const float a1 = vert[1][kVaryings + v] * p1[3];
-    const float a2 = vert[2][kVaryings + v] * p2[3];
+    const float a0 = perspective ? vert[0][kVaryings + v] * p0[3] : vert[0][kVaryings + v];
+    const float a1 = perspective ? vert[1][kVaryings + v] * p1[3] : vert[1][kVaryings + v];
+    const float a2 = perspective ? vert[2][kVaryings + v] * p2[3] : vert[2][kVaryings + v];
     out.varyingPlanes.push_back(planeOf(s, a0, a1, a2));
   }
   tri.drawIndex = state.drawIndex;

@@ -41,7 +41,7 @@ void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const 
         fillRows(target->f32.data(), width, rect, values.colorValue, 4);
       } else if (target->format == TexelFormat::RGBA16F) {
         uint16_t texel[4];
-        for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloatTowardZero(values.colorValue[c]);
+        for (int c = 0; c < 4; ++c) texel[c] = format::halfFromFloat(values.colorValue[c], methods::active().half);
         fillRows(target->half.data(), width, rect, texel, 4);
       }
     }

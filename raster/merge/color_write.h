@@ -38,12 +38,13 @@ template <class F>
 void writeHalfTexels(const glsl::vec4<F>& color, uint16_t* texels, const size_t* texel, unsigned laneMask, bool blend) {
   alignas(64) float c[4][F::kCount];
   glsl::storePlanes(color, c);
+  const HalfMethod rounding = methods::active().half;   // the `half` step (methods.h)
   for (int i = 0; i < F::kCount; ++i) {
     if (!(laneMask >> i & 1u)) continue;
     uint16_t* dst = texels + texel[i] * 4;
     for (int ch = 0; ch < 4; ++ch) {
       const float value = blend ? format::floatFromHalf(dst[ch]) + c[ch][i] : c[ch][i];
-      dst[ch] = format::halfFromFloatTowardZero(value);
+      dst[ch] = format::halfFromFloat(value, rounding);
     }
   }
 }

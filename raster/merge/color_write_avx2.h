@@ -10,8 +10,18 @@
 
 namespace raster::merge {
 
-// F16C's vcvtps2ph with truncation is halfFromFloatTowardZero (tests/simd and format hold
-// them equal on every class of input); vcvtph2ps is exact.
+// F16C's vcvtps2ph with truncation is halfFromFloatTowardZero, with round-to-nearest
+// halfFromFloatNearestEven (tests/simd and format hold them equal on every class of input);
+// vcvtph2ps is exact. The rounding is an immediate, so each method is its own instruction.
+inline __m128i halvesOf(__m128 value) {
+  return methods::active().half == HalfMethod::NearestEven ? _mm_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
+                                                           : _mm_cvtps_ph(value, _MM_FROUND_TO_ZERO);
+}
+inline __m128i halvesOf(__m256 value) {
+  return methods::active().half == HalfMethod::NearestEven ? _mm256_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
+                                                           : _mm256_cvtps_ph(value, _MM_FROUND_TO_ZERO);
+}
+
 // Planes -> one RGBA vector per lane: v[k] holds lane k in its low half, lane k + 4 high.
 inline void lanesToTexels(const glsl::vec4<simd::Float8>& color, __m256 v[4]) {
   const __m256 t0 = _mm256_unpacklo_ps(color.x.v, color.y.v), t1 = _mm256_unpackhi_ps(color.x.v, color.y.v);
@@ -34,7 +44,7 @@ inline void writeHalfTexels<simd::Float8>(const glsl::vec4<simd::Float8>& color,
       uint16_t* dst = texels + texel[lane] * 4;
       __m128 value = half ? _mm256_extractf128_ps(v[k], 1) : _mm256_castps256_ps128(v[k]);
       if (blend) value = _mm_add_ps(_mm_cvtph_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(dst))), value);
-      _mm_storel_epi64(reinterpret_cast<__m128i*>(dst), _mm_cvtps_ph(value, _MM_FROUND_TO_ZERO));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(dst), halvesOf(value));
     }
   }
 }
@@ -76,7 +86,7 @@ inline void writeHalfRows(const glsl::vec4<simd::Float8>& color, uint16_t* texel
   auto write = [&](size_t at, __m256 value) {
     __m128i* dst = reinterpret_cast<__m128i*>(texels + at * 4);
     if (additive) value = _mm256_add_ps(_mm256_cvtph_ps(_mm_loadu_si128(dst)), value);
-    _mm_storeu_si128(dst, _mm256_cvtps_ph(value, _MM_FROUND_TO_ZERO));
+    _mm_storeu_si128(dst, halvesOf(value));
   };
   // Lanes k, k + 1 (k = 0, 2) and k + 4, k + 5: neighbouring texels.
   for (int k = 0; k < 4; k += 2) {

@@ -34,6 +34,9 @@
 // log2, acos, pow(x, 48.0), pow(x, 2.2) and pow(x, 0.4545), and 31 million arguments each
 // of pow(x, y), atan(y, x) and the other forms.
 //
+// These are the `math=llvmpipe` method (raster/methods.h), the default; the GLSL functions
+// at the end of this file pick it, libm_math.h's or fast_math.h's per the method set.
+//
 // Lane types: float, simd::Lanes<N> (plain loops: the readable reference), simd::Float8
 // (AVX2) and simd::Float8x2 (two Float8 groups). One generic text per function, over a few
 // bit-level helpers (detail::), so all of them give identical bits; tests/simd/gl_math_test.cpp
@@ -44,6 +47,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "raster/methods.h"
 #include "raster/simd/isa.h"
 
 namespace raster::glsl {
@@ -425,23 +429,83 @@ F atan2Impl(F y, F x) {
 
 }  // namespace detail
 
+// ---- div=approx (methods.h): reciprocals without the divider -----------------------------
+// A seed from the bit pattern (the exponent negated, or halved and negated, by one integer
+// subtraction from a magic constant) refined by Newton steps with FMA. Plain integer and FMA
+// operations, so every CPU and lane type gives the same bits, unlike the hardware estimates
+// (rcpps, rsqrtps), whose tables differ between vendors. For positive normal x, measured
+// over 2^20 arguments spread over the whole range (tests/simd/div_methods_test.cpp):
+//   reciprocalApprox   three steps: y = 1/x (1 - e), |e| < 7e-8 (seed 5%, then 0.26%, 6.6e-6)
+//   inversesqrtApprox  two steps:   y = 1/sqrt(x) (1 - e), |e| < 5e-6 (seed 3.4%, then 0.18%)
+// The reciprocal takes the third step because its error reaches the image: 1/w scales every
+// varying, and with two steps (6.6e-6) a full-screen pass's w = 1 gave texture coordinates
+// a few ulps off, which deferred's SSAO hash (fract(sin(dot(uv, ...)) * 43758.5)) turns
+// into a different noise pattern: 38.8 dB against llvmpipe instead of 81.8.
+// Zero, denormal, negative, infinite and NaN arguments, and reciprocals of x >= 2^125 (a
+// seed near the denormals), give garbage: the callers (normalize, the 1/w of interpolation)
+// see none of them.
+template <class F> requires detail::LaneType<F>
+[[gnu::always_inline]] inline F reciprocalApprox(F x) {
+  using U = detail::UOf<F>;
+  F y = detail::asFloat(U(0x7EF311C3u) - detail::asBits(x));
+  for (int step = 0; step < 3; ++step) y = detail::fmaF(y, detail::fmaF(F(0.0f) - x, y, F(1.0f)), y);   // y += y (1 - xy)
+  return y;
+}
+template <class F> requires detail::LaneType<F>
+[[gnu::always_inline]] inline F inversesqrtApprox(F x) {
+  using U = detail::UOf<F>;
+  F y = detail::asFloat(U(0x5F375A86u) - (detail::asBits(x) >> 1));
+  const F halfX = x * F(0.5f);
+  for (int step = 0; step < 2; ++step) y = y * detail::fmaF(F(0.0f) - halfX, y * y, F(1.5f));   // y (3/2 - x/2 y^2)
+  return y;
+}
+
+}  // namespace raster::glsl
+
+// The other methods of the `math` step, over the detail:: helpers above.
+#include "raster/simd/fast_math.h"
+#include "raster/simd/libm_math.h"
+
+namespace raster::glsl {
+
 // ---- the GLSL functions ------------------------------------------------------------------
 // One template each, for float, Lanes<N> and Float8 (detail::LaneType). A call with a float
 // argument picks these over the C library's double overloads (an exact match), so a port
 // instantiated with F = float computes what llvmpipe computes too.
-template <class F> requires detail::LaneType<F> F exp2(F x) { return detail::exp2Impl(x); }
-template <class F> requires detail::LaneType<F> F log2(F x) { return detail::log2Impl(x); }
-template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F sin(F x) { return detail::sinOrCosImpl(x, false); }
-template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F cos(F x) { return detail::sinOrCosImpl(x, true); }
-template <class F> requires detail::LaneType<F> F acos(F x) { return F(detail::kPi2) - detail::asinExpr(detail::daz(x), detail::kAcosP0, detail::kAcosP1); }
-template <class F> requires detail::LaneType<F> F asin(F x) { return detail::asinExpr(detail::daz(x), detail::kAsinP0, detail::kAsinP1); }
+//
+// Each follows the `math` step of the method set (raster/methods.h): llvmpipe's
+// approximation above (the default), the C library in double (libm_math.h) or the fast
+// polynomials (fast_math.h). The step is one branch per call on a value fixed for the frame.
+#define RASTER_MATH_METHOD(llvmpipeForm, call)           \
+  switch (methods::active().math) {                      \
+    case MathMethod::Fast: return fast::call;            \
+    case MathMethod::Libm: return libm::call;            \
+    case MathMethod::Llvmpipe: break;                    \
+  }                                                      \
+  return llvmpipeForm
+template <class F> requires detail::LaneType<F> F exp2(F x) { RASTER_MATH_METHOD(detail::exp2Impl(x), exp2(x)); }
+template <class F> requires detail::LaneType<F> F log2(F x) { RASTER_MATH_METHOD(detail::log2Impl(x), log2(x)); }
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F sin(F x) {
+  RASTER_MATH_METHOD(detail::sinOrCosImpl(x, false), sin(x));
+}
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F cos(F x) {
+  RASTER_MATH_METHOD(detail::sinOrCosImpl(x, true), cos(x));
+}
+template <class F> requires detail::LaneType<F> F acos(F x) {
+  RASTER_MATH_METHOD(F(detail::kPi2) - detail::asinExpr(detail::daz(x), detail::kAcosP0, detail::kAcosP1), acos(x));
+}
+template <class F> requires detail::LaneType<F> F asin(F x) {
+  RASTER_MATH_METHOD(detail::asinExpr(detail::daz(x), detail::kAsinP0, detail::kAsinP1), asin(x));
+}
 // GLSL atan(y_over_x) and atan(y, x).
-template <class F> requires detail::LaneType<F> F atan(F yOverX) { return detail::atanCore(detail::daz(yOverX)); }
-template <class F> requires detail::LaneType<F> F atan(F y, F x) { return detail::atan2Impl(y, x); }
+template <class F> requires detail::LaneType<F> F atan(F yOverX) { RASTER_MATH_METHOD(detail::atanCore(detail::daz(yOverX)), atan(yOverX)); }
+template <class F> requires detail::LaneType<F> F atan(F y, F x) { RASTER_MATH_METHOD(detail::atan2Impl(y, x), atan(y, x)); }
 
 // pow(x, y) with a run-time exponent (a varying, a uniform, a computed value): llvmpipe's
 // lp_build_pow, exp2(log2(x) * y), with pow(0, y) = 0.
-template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F pow(F x, F y) { return detail::powImpl(x, y); }
+template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F pow(F x, F y) {
+  RASTER_MATH_METHOD(detail::powImpl(x, y), pow(x, y));
+}
 
 // pow(x, Y) with a literal exponent in the GLSL source: Mesa's compilers fold some of
 // these before llvmpipe sees them (GLSL IR opt_algebraic.cpp, NIR nir_opt_algebraic.py):
@@ -451,6 +515,8 @@ template <class F> requires detail::LaneType<F> [[gnu::always_inline]] inline F 
 // NaN for x < 0). Measured against llvmpipe for 1, 2, 4, 2.2, 0.4545 and 48.
 // Not modelled (write them out in the port): a literal base, pow(2.0, y) = exp2(y) and
 // pow(1.0, y) = 1; and all-constant calls, which the compiler evaluates with the C library.
+// The folds are the compiler's, not the math library's, so every `math` method keeps them;
+// the other exponents take the method's pow.
 template <float Y, class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F pow(F x) {
   if constexpr (Y == 1.0f) {
@@ -461,8 +527,9 @@ template <float Y, class F> requires detail::LaneType<F>
     const F squared = detail::daz(x * x);
     return detail::daz(squared * squared);
   } else {
-    return detail::powConstImpl<Y>(x);
+    RASTER_MATH_METHOD(detail::powConstImpl<Y>(x), pow(x, F(Y)));
   }
 }
+#undef RASTER_MATH_METHOD
 
 }  // namespace raster::glsl

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/methods.h"
 #include "raster/simd/gl_math.h"
 #include "raster/simd/isa.h"
 
@@ -91,7 +92,13 @@ template <class F> F dot(vec2<F> a, vec2<F> b) { return a.x * b.x + a.y * b.y; }
 template <class F> F dot(vec3<F> a, vec3<F> b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
 template <class F> F dot(vec4<F> a, vec4<F> b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
 template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
-template <class F> vec3<F> normalize(vec3<F> v) { return v * (F(1.0f) / sqrt(dot(v, v))); }
+// inversesqrt and normalize take the `div` step of the method set (methods.h): exact is
+// llvmpipe's 1 / sqrt(x) (GLSL IR's rsq), approx is inversesqrtApprox (gl_math.h).
+template <class F> F inversesqrt(F x) {
+  if (methods::active().div == DivMethod::Approx) return inversesqrtApprox(x);
+  return F(1.0f) / sqrt(x);
+}
+template <class F> vec3<F> normalize(vec3<F> v) { return v * inversesqrt(dot(v, v)); }
 
 template <class F> F mix(F a, F b, F t) { return a + t * (b - a); }
 template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.x, b.x, t.x), mix(a.y, b.y, t.y), mix(a.z, b.z, t.z)}; }

@@ -10,7 +10,8 @@
 //                     so finite overflow gives 65504 (0x7BFF); Inf and NaN are kept.
 //                     Measured: glTexImage2D uploads (GL_FLOAT -> RGBA16F / RGB16F) and
 //                     glClear of half targets truncate the same way on Mesa 22.3.
-//   halfFromFloatNearestEven IEEE round-to-nearest-even, for comparison in tests.
+//   halfFromFloatNearestEven IEEE round-to-nearest-even: the `half=rne` method (methods.h).
+//   halfFromFloat     the rounding the active method set asks for (rtz: llvmpipe's).
 //   floatFromHalf     exact.
 //   depthClearCode    glClear's conversion: round(z * (2^bits - 1)) in double
 //                     (measured against the GL backend: truncation differs).
@@ -19,6 +20,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+
+#include "raster/methods.h"
 
 namespace raster::format {
 
@@ -81,6 +84,11 @@ inline uint16_t halfFromFloatNearestEven(float f) {
   const uint32_t rebased = magnitude - 0x38000000u;
   const uint32_t rounded = rebased + 0xFFFu + ((rebased >> 13) & 1u);     // ties to even
   return uint16_t(sign | (rounded >> 13));
+}
+
+// Render-target writes and clears of half targets: the `half` step of the method set.
+inline uint16_t halfFromFloat(float f, HalfMethod method) {
+  return method == HalfMethod::NearestEven ? halfFromFloatNearestEven(f) : halfFromFloatTowardZero(f);
 }
 
 inline float floatFromHalf(uint16_t h) {

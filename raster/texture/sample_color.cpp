@@ -9,7 +9,8 @@
 //            REPEAT on a power-of-two size masks with W-1 (x1 wraps to 0); other sizes
 //            start from fract(s) (lp_build_coord_repeat_npot_linear_int).
 // Float textures (RGBA16F, RGB16F stored as RGBA with alpha 1) take the SoA path
-// (lp_bld_sample_soa.c), in float32:
+// (lp_bld_sample_soa.c), in float32; so do RGBA8 textures under the `filter=float` method
+// (methods.h), their texels read as unorm8 * float(1/255) first:
 //   linear:  CLAMP_TO_EDGE c = max(min(s * W, W) - 0.5, 0); REPEAT (POT) c = s * W - 0.5;
 //            x0 = floor(c), w = c - floor(c); texels lerped with fma(w, b - a, a), rows
 //            then columns.
@@ -151,6 +152,7 @@ int wrapNearestFloat(float coord, int size, Wrap wrap) {
 void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
   auto texel = [&](int x, int y, int c) {
     const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4 + size_t(c);
+    if (t.format == TexelFormat::RGBA8) return float(t.rgba8[i]) * float(1.0 / 255.0);
     return t.format == TexelFormat::RGBA32F ? t.f32[i] : format::floatFromHalf(t.half[i]);
   };
   if (t.sampler.filter == Filter::Nearest) {
@@ -170,7 +172,7 @@ void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
 }  // namespace
 
 void sampleColor(const Texture& texture, float s, float t, float out[4]) {
-  if (texture.format == TexelFormat::RGBA8) sampleRgba8(texture, s, t, out);
+  if (texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8) sampleRgba8(texture, s, t, out);
   else sampleFloat(texture, s, t, out);
 }
 

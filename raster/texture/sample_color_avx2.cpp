@@ -276,6 +276,37 @@ template <int N>
   }
 }
 
+// RGBA8 under the `filter=float` method (methods.h): the float path above, on texels read
+// as unorm8 * float(1/255); bit-identical to sample_color.cpp's sampleFloat.
+template <int N>
+void sampleRgba8Float(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
+  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
+  const __m256i width = splat(t.width);
+  const __m256 kUnorm8 = splat(float(1.0 / 255.0));
+  auto fetch = [&](__m256i x, __m256i y, __m256 planes[4]) {
+    const __m256i p = _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4);
+    for (int c = 0; c < 4; ++c) planes[c] = _mm256_mul_ps(_mm256_cvtepi32_ps(channel(p, c)), kUnorm8);
+  };
+  if (t.sampler.filter == Filter::Nearest) {
+    for (int h = 0; h < N; ++h) {
+      __m256 planes[4];
+      fetch(wrapNearest(s[h], t.width, t.sampler.wrapS, false), wrapNearest(tc[h], t.height, t.sampler.wrapT, false), planes);
+      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(planes[c]);
+    }
+    return;
+  }
+  for (int h = 0; h < N; ++h) {
+    const LinearTaps8 x = wrapLinearFloat(s[h], t.width, t.sampler.wrapS);
+    const LinearTaps8 y = wrapLinearFloat(tc[h], t.height, t.sampler.wrapT);
+    __m256 p00[4], p01[4], p10[4], p11[4];
+    fetch(x.i0, y.i0, p00);
+    fetch(x.i1, y.i0, p01);
+    fetch(x.i0, y.i1, p10);
+    fetch(x.i1, y.i1, p11);
+    blendFootprint(p00, p01, p10, p11, x.weight, y.weight, out[h]);
+  }
+}
+
 template <int N>
 [[gnu::always_inline]] inline void sampleHalf(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
   if (t.sampler.filter == Filter::Nearest) {
@@ -387,7 +418,9 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
                   simd::Float8 (*out)[4]) {
   __m256 sv[N], tv[N];
   for (int h = 0; h < N; ++h) sv[h] = s[h].v, tv[h] = t[h].v;
-  if (texture.format == TexelFormat::RGBA8) {
+  if (texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Float) {
+    sampleRgba8Float<N>(texture, sv, tv, out);
+  } else if (texture.format == TexelFormat::RGBA8) {
     sampleRgba8<N>(texture, sv, tv, out);
   } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest && live) {
     __m256i liveBits[N];

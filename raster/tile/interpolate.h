@@ -10,6 +10,8 @@
 #include <cstddef>
 
 #include "raster/contract.h"
+#include "raster/methods.h"
+#include "raster/simd/gl_math.h"
 #include "raster/tile/lane_layout.h"
 
 namespace raster {
@@ -31,11 +33,19 @@ template <class F>
 [[gnu::always_inline]] inline void interpolateFragment(const TileJob& job, const SetupTriangle& tri, F px, F py, F z,
                                                        FragmentInput<F>& in, F* varyings) {
   const Framebuffer& fb = *job.framebuffer;
-  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane.
+  // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane. The
+  // method set (methods.h) may ask for an approximate 1 / w (div=approx), or for
+  // screen-linear varyings (interp=affine: setup made planes of the plain values).
+  const MethodSet& methodSet = methods::active();
   const F w = evaluatePlane(tri.w, px, py);
-  const F oow = F(1.0f) / w;
   const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
-  for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(job.varyingPlanes[tri.varyingBase + v], px, py) * oow;
+  const Plane* planes = &job.varyingPlanes[tri.varyingBase];
+  if (methodSet.interp == InterpMethod::Affine) {
+    for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py);
+  } else {
+    const F oow = methodSet.div == DivMethod::Approx ? glsl::reciprocalApprox(w) : F(1.0f) / w;
+    for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py) * oow;
+  }
 
   // gl_FragCoord.y is GL's (y up): mirrored for window-system buffers (wpos_ytransform).
   const F fragY = fb.flipY ? F(float(fb.height)) - (py + F(0.5f)) : py + F(0.5f);

@@ -51,7 +51,11 @@ TEST_SUITE("format") {
     }
   }
 
-  TEST_CASE("RGBA16F writes and ONE/ONE blends: SIMD lanes equal the scalar conversion") {
+  TEST_CASE("RGBA16F writes and ONE/ONE blends: SIMD lanes equal the scalar conversion, in both half methods") {
+   for (const raster::HalfMethod method : {raster::HalfMethod::TowardZero, raster::HalfMethod::NearestEven}) {
+    raster::MethodSet methods;
+    methods.half = method;
+    const raster::ScopedMethods scoped(methods);
     const std::vector<float> values = interestingValues();
     std::vector<float> extremes = {65504.0f, 65519.0f, 65520.0f, 70000.0f, -70000.0f, 1e-6f, -1e-7f, 6.1e-5f, 1.0007f};
     std::mt19937 rng(5);
@@ -75,6 +79,31 @@ TEST_SUITE("format") {
       ++compared;
     }
     CHECK(compared == 2000);
+   }
+  }
+
+  TEST_CASE("half=rne writes round to nearest even, half=rtz (llvmpipe) truncates") {
+    const float values[] = {1.0007f, 65520.0f, 70000.0f, -1.0007f, 1e-6f, 0.333333f};
+    for (const raster::HalfMethod method : {raster::HalfMethod::TowardZero, raster::HalfMethod::NearestEven}) {
+      raster::MethodSet methods;
+      methods.half = method;
+      const raster::ScopedMethods scoped(methods);
+      for (const float v : values) {
+        float lanes[4][8];
+        for (auto& channel : lanes)
+          for (float& x : channel) x = v;
+        std::vector<uint16_t> texels(8 * 4, 0);
+        const size_t texel[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+        raster::merge::writeHalfTexels(raster::glsl::vec4<FastLanes>(FastLanes::load(lanes[0]), FastLanes::load(lanes[1]),
+                                                                     FastLanes::load(lanes[2]), FastLanes::load(lanes[3])),
+                                       texels.data(), texel, 0xFFu, false);
+        const uint16_t expected = method == raster::HalfMethod::NearestEven ? raster::format::halfFromFloatNearestEven(v)
+                                                                            : raster::format::halfFromFloatTowardZero(v);
+        CAPTURE(v);
+        for (uint16_t h : texels) CHECK(h == expected);
+      }
+    }
+    CHECK(raster::format::halfFromFloatNearestEven(1.0007f) != raster::format::halfFromFloatTowardZero(1.0007f));
   }
 #if RASTER_AVX2
   TEST_CASE("whole groups stored or blended a row at a time, alone or as a pair, equal the per-lane writes") {

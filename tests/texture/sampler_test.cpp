@@ -13,6 +13,7 @@
 #include <random>
 #include <vector>
 
+#include "raster/methods.h"
 #include "raster/texture/format.h"
 #include "raster/texture/sampler.h"
 #include "tests/gl_compare_helpers.h"
@@ -124,11 +125,15 @@ TEST_SUITE("texture") {
   }
 
 #if RASTER_AVX2
-  TEST_CASE("the 8-lane and paired samplers, for all lanes or some, equal the scalar reference on every wrap, filter and format") {
+  TEST_CASE("the 8-lane and paired samplers, for all lanes or some, equal the scalar reference on every wrap, filter, format and filter method") {
     std::mt19937 rng(77);
     const float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e30f, -1e30f, 3e9f, std::nanf(""),
                               std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0;
+    for (const raster::FilterMethod method : {raster::FilterMethod::Unorm8, raster::FilterMethod::Float}) {
+    raster::MethodSet methods;
+    methods.filter = method;
+    const raster::ScopedMethods scoped(methods);
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA8, raster::TexelFormat::RGBA16F}) {
       for (const auto& [w, h] : {std::pair{16, 8}, std::pair{13, 7}, std::pair{1, 1}, std::pair{64, 3}}) {
         raster::Texture tex = randomTexture(rng, w, h, format);
@@ -178,6 +183,7 @@ TEST_SUITE("texture") {
             }
       }
     }
+    }   // filter methods
     MESSAGE(lookups << " lookups, " << mismatches << " channel mismatches");
     CHECK(mismatches == 0);
   }
@@ -289,4 +295,45 @@ TEST_SUITE("texture") {
     CHECK(mismatches == 0);
   }
 #endif
+
+  TEST_CASE("filter=float: RGBA8 bilinear within float rounding of the exact bilinear, and within 2/255 of llvmpipe's 8-bit lerps") {
+    std::mt19937 rng(1234);
+    raster::Texture tex = randomTexture(rng, 13, 7, raster::TexelFormat::RGBA8);
+    tex.sampler = {raster::Filter::Linear, raster::Wrap::ClampToEdge, raster::Wrap::ClampToEdge, false};
+    raster::MethodSet floatFilter;
+    floatFilter.filter = raster::FilterMethod::Float;
+    double worstExact = 0, worst8bit = 0;
+    for (int i = 0; i < 200000; ++i) {
+      const float s = uniform(rng, -0.1f, 1.1f), t = uniform(rng, -0.1f, 1.1f);
+      float eight[4], full[4];
+      raster::sampling::sampleColor(tex, s, t, eight);
+      {
+        const raster::ScopedMethods scoped(floatFilter);
+        raster::sampling::sampleColor(tex, s, t, full);
+      }
+      // The exact bilinear in double, on the same taps (CLAMP_TO_EDGE: c = clamp(s W, 0, W) - 0.5).
+      auto taps = [](float coord, int size, int& i0, int& i1, double& w) {
+        const double c = std::max(std::min(double(coord) * size, double(size)) - 0.5, 0.0);
+        i0 = int(std::floor(c));
+        i1 = std::min(i0 + 1, size - 1);
+        w = c - i0;
+      };
+      int x0, x1, y0, y1;
+      double wx, wy;
+      taps(s, tex.width, x0, x1, wx);
+      taps(t, tex.height, y0, y1, wy);
+      for (int c = 0; c < 4; ++c) {
+        auto texel = [&](int x, int y) { return tex.rgba8[(size_t(y) * size_t(tex.width) + size_t(x)) * 4 + size_t(c)] / 255.0; };
+        const double row0 = texel(x0, y0) + wx * (texel(x1, y0) - texel(x0, y0));
+        const double row1 = texel(x0, y1) + wx * (texel(x1, y1) - texel(x0, y1));
+        const double exact = row0 + wy * (row1 - row0);
+        worstExact = std::max(worstExact, std::fabs(full[c] - exact));
+        worst8bit = std::max(worst8bit, std::fabs(double(full[c]) - eight[c]));
+      }
+    }
+    MESSAGE("float filter vs exact bilinear: " << worstExact << "; vs llvmpipe's 8-bit: " << worst8bit * 255 << " steps");
+    CHECK(worstExact < 1e-6);              // float32 rounding of a few operations on values <= 1
+    CHECK(worst8bit * 255.0 <= 2.0);
+    CHECK(worst8bit > 0.0);                // the methods really differ
+  }
 }

@@ -1,0 +1,91 @@
+// Method sets (raster/methods.h): the names a user types, and each preset's final image
+// against llvmpipe at the threshold the preset promises.
+//   gl       bit-identical on every target (the default; the scene suites test it at more
+//            times and sizes);
+//   fast     >= 40 dB PSNR on the final image, every scene;
+//   precise  >= 30 dB on the final image: it moves pixels where llvmpipe's own numerics are
+//            approximate (TRADEOFF.md says which), so it is not near llvmpipe by design; it is
+//            held closer to llvmpipe than softpipe is, where softpipe differs.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "raster/methods.h"
+#include "tests/scene_test_helpers.h"
+
+namespace {
+
+using testing_support::renderScene;
+using testing_support::renderWithLlvmpipe;
+
+compare::TargetStats finalAgainstLlvmpipe(const std::string& scene, const raster::MethodSet& methods,
+                                          const std::vector<scenes::Target>& gl, int w, int h) {
+  const raster::ScopedMethods scoped(methods);
+  auto ours = scenes::makeRasterBackend(0);
+  const auto mine = renderScene(*ours, scene, 1.0f, w, h);
+  const compare::TargetStats stats = compare::compareImages("final", mine.back().image, gl.back().image);
+  MESSAGE(scene << " " << raster::methodLabel(methods) << ": " << compare::formatStatsLine(stats));
+  return stats;
+}
+
+std::string errorOf(auto&& call) {
+  try {
+    call();
+  } catch (const raster::MethodError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_SUITE("methods") {
+  TEST_CASE("names: presets, overrides, and one-line errors that list the valid names") {
+    CHECK(raster::presetMethods("gl") == raster::MethodSet{});
+    raster::MethodSet set = raster::presetMethods("gl");
+    raster::applyMethodOverrides(set, "math=fast,half=rne");
+    CHECK(set.math == raster::MathMethod::Fast);
+    CHECK(set.half == raster::HalfMethod::NearestEven);
+    CHECK(raster::methodLabel(set) == "math=fast,half=rne");
+    CHECK(raster::methodLabel(raster::presetMethods("precise")) == "precise");
+    CHECK(raster::methodName(set, "half") == "rne");
+    // Every catalog entry round-trips through its name.
+    for (const raster::StepInfo& step : raster::methodCatalog())
+      for (const raster::MethodInfo& method : step.methods) {
+        raster::MethodSet s;
+        raster::setMethod(s, step.name, method.name);
+        CHECK(raster::methodName(s, step.name) == method.name);
+      }
+    CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast)");
+    CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
+          "unknown method 'slow' for step math (methods: llvmpipe, libm, fast)");
+    CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
+          "unknown step 'blend' (steps: math, filter, half, div, interp)");
+    CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
+    CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=fast,"); }).empty());
+  }
+
+  TEST_CASE("each preset's final image against llvmpipe, every scene, at its threshold") {
+    for (const std::string scene : {"shadow", "deferred", "hdr"}) {
+      const auto gl = renderWithLlvmpipe(scene, 1.0f, 320, 240);
+      CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("gl"), gl, 320, 240).maxAbs == 0);
+      CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("fast"), gl, 320, 240).psnr >= 40.0);
+      CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("precise"), gl, 320, 240).psnr >= 30.0);
+    }
+  }
+
+  TEST_CASE("every single-step method renders every scene with finite pixels and changes only what it claims") {
+    // half=rne touches only half targets: the shadow scene has none, so its image is llvmpipe's.
+    const auto gl = renderWithLlvmpipe("shadow", 1.0f, 160, 120);
+    raster::MethodSet rne;
+    rne.half = raster::HalfMethod::NearestEven;
+    CHECK(finalAgainstLlvmpipe("shadow", rne, gl, 160, 120).maxAbs == 0);
+    // interp=affine bends the shadow scene's big ground triangles: far from llvmpipe.
+    raster::MethodSet affine;
+    affine.interp = raster::InterpMethod::Affine;
+    const compare::TargetStats bent = finalAgainstLlvmpipe("shadow", affine, gl, 160, 120);
+    CHECK(bent.psnr < 30.0);
+    CHECK(bent.nonFinitePixels == 0);
+  }
+}

@@ -107,6 +107,8 @@ void printBreakdown(const std::vector<std::pair<std::string, double>>& stats, in
               get("lane_groups_shaded"), lanes, lanes > 0 ? 100.0 * (lanes - covered) / lanes : 0.0, covered / pixels);
 }
 
+}  // namespace
+
 // Restricts the process to `threads` of the cores it may run on, before either backend
 // starts a thread (threads inherit the mask), so both render on the same cores. Unpinned,
 // one rendering thread on a 2-core host wanders between cores: our 1-thread shadow medians
@@ -129,8 +131,6 @@ int pinToCores(int threads) {
   return sched_setaffinity(0, sizeof pinned, &pinned) == 0 ? kept : available;
 }
 
-}  // namespace
-
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   CLI::App* command = app.add_subcommand("bench", "Time this pipeline against a GL driver, frames alternating");
   command->add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
@@ -146,6 +146,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE (e.g. 8G)")
       ->type_name("SIZE");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  addMethodOptions(*command, args.preset, args.method);
   command->add_flag("--no-pin", args.noPin,
                     "Do not pin the process to --threads cores (by default both backends share the same N cores)");
   command->add_flag("--passes", args.passes,
@@ -155,6 +156,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
 
 int runBench(const BenchArgs& args) {
   const Frame frame = validateFrame(args);
+  const raster::ScopedMethods methods(frame.methods);   // this pipeline's frames use them
   if (args.frames < 1 || args.frames > 10000) throw UsageError("--frames: out of range (1..10000)");
   if (args.warmup < 0 || args.warmup > 1000) throw UsageError("--warmup: out of range (0..1000)");
   if (args.glDriver != "llvmpipe" && args.glDriver != "softpipe")
@@ -189,9 +191,9 @@ int runBench(const BenchArgs& args) {
   const char* builtFor = "plain C++ lanes";
 #endif
   const std::string onCores = cores > 0 ? ", on " + std::to_string(cores) + (cores == 1 ? " core" : " cores") : "";
-  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d%s: %d warm-up + %d timed frames each (raster built for %s)\n",
+  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d%s: %d warm-up + %d timed frames each (raster built for %s, methods %s)\n",
                frame.scene.c_str(), frame.width, frame.height, frame.time, threads, onCores.c_str(), args.warmup,
-               args.frames, builtFor);
+               args.frames, builtFor, raster::methodLabel(frame.methods).c_str());
   for (int i = 0; i < args.warmup; ++i)
     for (Contender& c : contenders) renderOnce(c, frame.time);
   // The timed frames run without the stage timers: reading the cycle counter per lane group
@@ -232,7 +234,8 @@ int runBench(const BenchArgs& args) {
   if (!args.json.empty()) {
     std::ostringstream json;
     json << "{\"scene\":\"" << frame.scene << "\",\"size\":[" << frame.width << "," << frame.height
-         << "],\"time\":" << frame.time << ",\"threads\":" << threads << ",\"backends\":[";
+         << "],\"time\":" << frame.time << ",\"threads\":" << threads << ",\"methods\":\""
+         << raster::methodLabel(frame.methods) << "\",\"backends\":[";
     for (int k = 0; k < 2; ++k) {
       const Timed& t = contenders[k].timed;
       json << (k ? "," : "") << "{\"name\":\"" << t.backend << "\",\"median_ms\":" << t.median() << ",\"frames_ms\":[";

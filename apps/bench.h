@@ -22,4 +22,8 @@ struct BenchArgs : FrameArgs {
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);
 int runBench(const BenchArgs& args);
 
+// Restricts the process to `threads` of the cores it may run on, before any backend starts
+// a thread; returns how many cores the process is now on (bench.cpp says why).
+int pinToCores(int threads);
+
 }  // namespace cli

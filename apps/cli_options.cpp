@@ -41,6 +41,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
       ->type_name("SIZE");
   command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
       ->type_name("DIR");
+  addMethodOptions(command, args.preset, args.method);
 }
 
 // A non-negative decimal integer that fits in uint64_t.
@@ -66,6 +67,27 @@ bool writableFolder(const fs::path& folder) {
 }
 
 }  // namespace
+
+void addMethodOptions(CLI::App& command, std::string& preset, std::string& method) {
+  std::string presets;
+  for (const std::string& name : raster::presetNames()) presets.append(presets.empty() ? "" : "|").append(name);
+  command.add_option("--preset", preset,
+                     "This pipeline's method set: gl (llvmpipe's numerics, bit-exact), precise, fast "
+                     "(raster methods lists them)")
+      ->type_name(presets)->capture_default_str();
+  command.add_option("--method", method, "Override steps of the preset, e.g. math=fast,half=rne")
+      ->type_name("STEP=NAME[,...]");
+}
+
+raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides) {
+  try {
+    raster::MethodSet set = raster::presetMethods(preset);
+    raster::applyMethodOverrides(set, overrides);
+    return set;
+  } catch (const raster::MethodError& e) {
+    throw UsageError(std::string(overrides.empty() ? "--preset: " : "--preset/--method: ") + e.what());
+  }
+}
 
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args) {
   CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to PNG");
@@ -139,6 +161,7 @@ Frame validateFrame(const FrameArgs& args) {
                      std::to_string(kMaxThreads) + ")");
   frame.threads = args.threads;
   frame.scalar = args.scalar;
+  frame.methods = validateMethods(args.preset, args.method);
   // 200,000 cubes shade 4.8M vertices a frame (about 0.3 GB of vertex data): past that a
   // frame would need gigabytes for no further insight.
   if (args.instances < 1 || args.instances > kMaxInstances)

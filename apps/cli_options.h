@@ -14,6 +14,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "raster/methods.h"
+
 namespace cli {
 
 // Something the user asked for that cannot be done as asked (exit status 2).
@@ -31,6 +33,8 @@ struct FrameArgs {
   int instances = 1000;        // the hdr scene's cube count
   std::string assets;          // empty: the scene library's default
   std::string maxMemory;       // empty: scenes::memory::defaultCap()
+  std::string preset = "gl";   // this pipeline's method set (raster/methods.h)
+  std::string method;          // STEP=NAME[,STEP=NAME]: overrides of the preset's steps
 };
 
 struct RenderArgs : FrameArgs {
@@ -55,6 +59,7 @@ struct Frame {
   bool scalar = false;
   int instances = 1000;
   std::string assets;
+  raster::MethodSet methods;   // --preset with --method applied
 };
 
 // Limits the compare thresholds set; absent ones are not checked.
@@ -72,6 +77,11 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
 // allocates nothing before this).
 Frame validateFrame(const FrameArgs& args);
 Thresholds validateThresholds(const CompareArgs& args);
+
+// The method set of --preset and --method; UsageError naming the valid names otherwise.
+raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides);
+// Adds --preset and --method to a command.
+void addMethodOptions(CLI::App& command, std::string& preset, std::string& method);
 
 // Checks that `path` can be created or replaced: its folder exists and is writable.
 void checkOutputFile(const std::string& option, const std::string& path);

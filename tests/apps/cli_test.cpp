@@ -14,12 +14,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "compare/image_io.h"
 #include "compare/metrics.h"
+#include "raster/methods.h"
 #include "scenes/scene.h"
 #include "tests/apps/cli_test_helpers.h"
 
@@ -136,6 +140,76 @@ TEST_SUITE("cli") {
     const std::string json = readText(cwd / "passes.json");
     CHECK(json.find("\"passes\":[{\"program\":\"hdr/scene\",\"raster_ms\":") != std::string::npos);
     CHECK(json.find("\"llvmpipe_ms\":") != std::string::npos);
+  }
+
+  TEST_CASE("methods: listed one a line; unknown presets, steps and methods refused with the valid names") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult list = runCli(cwd, "methods");
+    REQUIRE(list.status == 0);
+    for (const char* line : {"math=llvmpipe (default)", "math=libm", "math=fast", "filter=8bit (default)", "filter=float",
+                             "half=rtz (default)", "half=rne", "div=exact (default)", "div=approx",
+                             "interp=perspective (default)", "interp=affine", "  gl  math=llvmpipe", "  precise ", "  fast "})
+      CHECK(list.out.find(line) != std::string::npos);
+    for (const char* command : {"render", "compare", "bench"}) {
+      expectRefused(std::string(command) + " " + aScene() + " --preset turbo");
+      expectRefused(std::string(command) + " " + aScene() + " --method math=slow");
+      expectRefused(std::string(command) + " " + aScene() + " --method blend=fast");
+      expectRefused(std::string(command) + " " + aScene() + " --method math");
+    }
+    const RunResult bad = runCli(cwd, "render " + aScene() + " --method math=slow");
+    CHECK(bad.err.find("llvmpipe, libm, fast") != std::string::npos);
+    // GL has its own numerics: asking it for ours is refused rather than ignored.
+    expectRefused("render " + aScene() + " --backend gl --preset fast");
+    expectRefused("compare " + aScene() + " --test softpipe --method math=fast");
+  }
+
+  TEST_CASE("render --preset and --method change this pipeline's image; gl is the default's bytes") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    REQUIRE(runCli(cwd, "render deferred --size 96x64 --out default.png").status == 0);
+    REQUIRE(runCli(cwd, "render deferred --size 96x64 --preset gl --out gl.png").status == 0);
+    REQUIRE(runCli(cwd, "render deferred --size 96x64 --method math=libm --out libm.png").status == 0);
+    CHECK(readText(cwd / "default.png") == readText(cwd / "gl.png"));
+    CHECK(readText(cwd / "default.png") != readText(cwd / "libm.png"));
+  }
+
+  TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {
+    expectRefused("tradeoff " + aScene());
+    expectRefused("tradeoff " + aScene() + " --out /nonexistent/dir/t");
+    expectRefused("tradeoff no_such_scene --out t");
+    expectRefused("tradeoff " + aScene() + " --out t --frames 0");
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult run = runCli(cwd, "tradeoff hdr --size 64x48 --frames 2 --warmup 0 --softpipe-frames 1 --out t");
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    for (const char* file : {"tradeoff.json", "tradeoff.md", "tradeoff.png", "tradeoff.svg"})
+      CHECK(fs::file_size(cwd / "t" / file) > 100);
+    const nlohmann::json result = nlohmann::json::parse(readText(cwd / "t" / "tradeoff.json"));
+    CHECK(result["scene"] == "hdr");
+    CHECK(result["size"] == nlohmann::json::array({64, 48}));
+    std::set<std::string> names;
+    for (const nlohmann::json& p : result["points"]) {
+      names.insert(p["name"].get<std::string>());
+      CHECK(p["median_ms"].get<double>() > 0);
+      // The identical flag and the PSNR agree: null exactly when identical.
+      CHECK(p["identical_to_llvmpipe"].get<bool>() == p["psnr_vs_llvmpipe_db"].is_null());
+      if (p["kind"] == "driver") CHECK(p["methods"].is_null());
+      else CHECK(p["methods"].size() == raster::methodCatalog().size());
+    }
+    for (const char* name : {"gl", "precise", "fast", "math=libm", "math=fast", "filter=float", "half=rne", "div=approx",
+                             "interp=affine", "llvmpipe", "softpipe"})
+      CHECK(names.count(name) == 1);
+    for (const nlohmann::json& p : result["points"]) {
+      if (p["name"] == "gl") CHECK(p["identical_to_llvmpipe"].get<bool>());
+      if (p["name"] == "llvmpipe") CHECK(p["speedup_vs_llvmpipe"].get<double>() == 1.0);
+    }
+    CHECK(readText(cwd / "t" / "tradeoff.md").find("| gl | preset |") != std::string::npos);
+    CHECK(readText(cwd / "t" / "tradeoff.svg").find("<svg") != std::string::npos);
   }
 
   TEST_CASE("an --out that cannot be written is refused before rendering") {

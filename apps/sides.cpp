@@ -1,0 +1,196 @@
+// One side of a comparison, rendered here or in a child process (sides.h).
+#include "apps/sides.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "compare/image_io.h"
+#include "compare/metrics.h"
+#include "compare/output_file.h"
+#include "scenes/backends.h"
+#include "scenes/memory_budget.h"
+
+extern char** environ;
+
+namespace cli {
+namespace fs = std::filesystem;
+using scenes::Target;
+
+constexpr const char* kManifest = "targets.txt";   // "NAME rgba8|half|depth<bits>" per line
+
+// "640x480, t=1.000"
+std::string sizeAndTime(const Frame& frame) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%dx%d, t=%.3f", frame.width, frame.height, frame.time);
+  return text;
+}
+
+// Renders one frame with a backend made in this process ("raster" or "gl"), and reads back
+// every target, or only the final image when `finalOnly` (a render without --dump).
+Side renderInProcess(const Frame& frame, const std::string& backendKind, bool finalOnly) {
+  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
+  std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, options);
+  std::unique_ptr<scenes::Backend> backend;
+  // This pipeline renders with the frame's method set (GL ignores it: it has its own).
+  const raster::ScopedMethods methods(frame.methods);
+  if (backendKind == "raster") {
+    backend = scenes::makeRasterBackend(frame.threads, frame.scalar);
+  } else {
+    if (frame.threads > 0) setenv("LP_NUM_THREADS", std::to_string(frame.threads).c_str(), 1);
+    backend = scenes::makeGlBackend();
+  }
+  const std::string methodNote = backendKind == "raster" && !(frame.methods == raster::MethodSet{})
+                                     ? " (methods: " + raster::methodLabel(frame.methods) + ")" : "";
+  std::cerr << "rendering " << frame.scene << " with " << backend->name() << methodNote << " at "
+            << sizeAndTime(frame) << " ..." << std::endl;
+  backend->resizeDefaultFramebuffer(frame.width, frame.height);
+  scene->setup(*backend);
+  scene->renderFrame(*backend, frame.time);
+  Side side{backend->name(), {}};
+  if (finalOnly) side.targets.push_back(scene->readFinal(*backend));
+  else side.targets = scene->readTargets(*backend);
+  if (side.targets.empty()) throw std::runtime_error("scene " + frame.scene + " exposed no targets");
+  return side;
+}
+
+static std::string manifestTag(const scenes::ImageData& image) {
+  const std::string kind = compare::imageKind(image);
+  return kind == "depth" ? kind + std::to_string(image.depthBits) : kind;
+}
+
+// Writes every target as NAME.png (+ NAME.pfm for depth / float) and the manifest.
+void dumpTargets(const std::string& folder, const std::vector<Target>& targets) {
+  fs::create_directory(folder);
+  std::string manifest;
+  for (const Target& target : targets) {
+    if (target.name.empty() || target.name.find_first_of("/ \t\n") != std::string::npos)
+      throw std::runtime_error("target name '" + target.name + "' cannot be a file name");
+    const std::string base = (fs::path(folder) / target.name).string();
+    compare::writePng(base + ".png", target.image);
+    std::cout << "wrote " << base << ".png" << std::endl;
+    if (compare::imageKind(target.image) != "rgba8") {
+      compare::writePfm(base + ".pfm", target.image);
+      std::cout << "wrote " << base << ".pfm" << std::endl;
+      if (fs::exists(compare::alphaPfmPath(base + ".pfm")))
+        std::cout << "wrote " << compare::alphaPfmPath(base + ".pfm") << std::endl;
+    }
+    manifest += target.name + " " + manifestTag(target.image) + "\n";
+  }
+  const std::string manifestPath = (fs::path(folder) / kManifest).string();
+  compare::writeOutputFile(manifestPath, manifest);
+  std::cout << "wrote " << manifestPath << std::endl;
+}
+
+// Loads a folder written by dumpTargets, in the same order.
+std::vector<Target> loadDump(const std::string& folder) {
+  const std::string manifestPath = (fs::path(folder) / kManifest).string();
+  std::ifstream manifest(manifestPath);
+  if (!manifest) throw std::runtime_error("cannot read " + manifestPath);
+  std::vector<Target> targets;
+  std::string name, tag;
+  while (manifest >> name >> tag) {
+    const std::string base = (fs::path(folder) / name).string();
+    if (tag == "rgba8")
+      targets.push_back({name, compare::readPng(base + ".png")});
+    else if (tag == "half")
+      targets.push_back({name, compare::readPfmFloat(base + ".pfm")});
+    else if (tag.rfind("depth", 0) == 0)
+      targets.push_back({name, compare::readPfmDepth(base + ".pfm", std::stoi(tag.substr(5)))});
+    else
+      throw std::runtime_error(manifestPath + ": unknown target kind '" + tag + "'");
+  }
+  return targets;
+}
+
+// A temporary folder, removed with everything in it when this goes out of scope.
+namespace {
+struct TempFolder {
+  std::string path;
+  TempFolder() {
+    std::string pattern = (fs::temp_directory_path() / "raster-compare-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+      throw std::runtime_error("cannot create a temporary folder: " + std::string(std::strerror(errno)));
+    path = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+}  // namespace
+
+// Renders one frame with GL under another Gallium driver, in a child process of this program.
+Side renderInChild(const Frame& frame, const std::string& driver) {
+  TempFolder dump;
+  char time[32];
+  std::snprintf(time, sizeof time, "%.9g", frame.time);   // 9 digits: the same float back
+  std::vector<std::string> args = {"raster", "render", frame.scene, "--backend", "gl",
+                                   "--size", std::to_string(frame.width) + "x" + std::to_string(frame.height),
+                                   "--time", time, "--threads", std::to_string(frame.threads),
+                                   "--dump", dump.path, "--out", dump.path + "/out.png"};
+  if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
+  // The child gets what this process has left of the cap (its targets are loaded back here).
+  const uint64_t left = scenes::memory::cap() - std::min(scenes::memory::cap(), scenes::memory::reserved());
+  args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
+  args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
+
+  // The environment as it is, with GALLIUM_DRIVER replaced.
+  std::vector<std::string> environment;
+  for (char** entry = environ; *entry; ++entry)
+    if (std::strncmp(*entry, "GALLIUM_DRIVER=", 15) != 0) environment.emplace_back(*entry);
+  environment.push_back("GALLIUM_DRIVER=" + driver);
+  const auto pointers = [](std::vector<std::string>& strings) {
+    std::vector<char*> result;
+    for (auto& s : strings) result.push_back(s.data());
+    result.push_back(nullptr);
+    return result;
+  };
+  std::vector<char*> argv = pointers(args), envp = pointers(environment);
+
+  // Run it with stdout (its "wrote" lines) silenced; its progress and errors go to stderr.
+  std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."
+            << std::endl;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int error = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (error != 0)
+    throw std::runtime_error("cannot start the " + driver + " child process: " + std::strerror(error));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::runtime_error("waiting for the child: " + std::string(std::strerror(errno)));
+
+  // Its failure is ours: bad input stays bad input (2), anything else is internal (1).
+  const std::string what = "the " + driver + " render (child process) ";
+  if (WIFSIGNALED(status))
+    throw std::runtime_error(what + "was killed by signal " + std::to_string(WTERMSIG(status)) +
+                             " (" + strsignal(WTERMSIG(status)) + ")");
+  if (WEXITSTATUS(status) == 2) throw UsageError(what + "failed with exit status 2");
+  if (WEXITSTATUS(status) != 0)
+    throw std::runtime_error(what + "failed with exit status " + std::to_string(WEXITSTATUS(status)));
+  return {driver, loadDump(dump.path)};
+}
+
+// One side of a comparison: "raster" or "llvmpipe" in this process, "softpipe" in a child.
+Side renderSide(const Frame& frame, const std::string& which) {
+  if (which == "softpipe") return renderInChild(frame, which);
+  if (which == "llvmpipe") setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+  return renderInProcess(frame, which == "raster" ? "raster" : "gl");
+}
+
+
+}  // namespace cli

@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Speed against accuracy, from `raster tradeoff`'s tradeoff.json.
+
+x: speed-up over llvmpipe (log scale); y: PSNR of the final image against llvmpipe (dB).
+Points identical to llvmpipe have no PSNR (it is infinite): they are drawn on a marked
+ceiling above the highest finite value. One labelled point per method set, llvmpipe and
+softpipe as drivers, the Pareto front (no point both faster and closer) as a line, and the
+40 dB line the `fast` preset must stay above. One panel per scene (per size, per result).
+
+Usage: tradeoff_chart.py RESULT.json [RESULT.json ...] --out PREFIX
+writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
+A RESULT.json holds one scene's object, or a list of them (`raster tradeoff all`).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FAST_THRESHOLD_DB = 40.0
+KIND_STYLE = {
+    "preset": dict(marker="o", color="#1f77b4", s=60),
+    "method": dict(marker="s", color="#7f7f7f", s=36),
+    "driver": dict(marker="D", color="#d62728", s=60),
+}
+
+
+def load_results(paths):
+    results = []
+    for path in paths:
+        try:
+            with open(path) as f:
+                data = json.load(f)
+        except (OSError, ValueError) as e:
+            sys.exit(f"tradeoff_chart: cannot read {path}: {e}")
+        for result in data if isinstance(data, list) else [data]:
+            if not isinstance(result, dict) or "points" not in result or "scene" not in result:
+                sys.exit(f"tradeoff_chart: {path}: not a tradeoff result (no scene / points)")
+            results.append(result)
+    if not results:
+        sys.exit("tradeoff_chart: no results to draw")
+    return results
+
+
+def ceiling_of(results):
+    finite = [p["psnr_vs_llvmpipe_db"] for r in results for p in r["points"] if p["psnr_vs_llvmpipe_db"] is not None]
+    top = max(finite + [FAST_THRESHOLD_DB])
+    return 10.0 * math.ceil((top + 8.0) / 10.0)
+
+
+def draw_panel(ax, result, ceiling):
+    points = result["points"]
+    xs = [p["speedup_vs_llvmpipe"] for p in points]
+    ys = [ceiling if p["psnr_vs_llvmpipe_db"] is None else p["psnr_vs_llvmpipe_db"] for p in points]
+    for p, x, y in zip(points, xs, ys):
+        style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
+        edge = "black" if p.get("pareto") else "none"
+        ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
+        ax.annotate(p["name"], (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7)
+    front = sorted((x, y) for p, x, y in zip(points, xs, ys) if p.get("pareto"))
+    if len(front) > 1:
+        ax.plot([f[0] for f in front], [f[1] for f in front], color="black", linewidth=1, linestyle="--",
+                zorder=2, label="Pareto front")
+    ax.axhline(ceiling, color="#2ca02c", linewidth=0.8)
+    ax.text(0.01, ceiling, " identical to llvmpipe", color="#2ca02c", fontsize=7, va="bottom",
+            transform=ax.get_yaxis_transform())
+    ax.axhline(FAST_THRESHOLD_DB, color="#ff7f0e", linewidth=0.8, linestyle=":")
+    ax.text(0.01, FAST_THRESHOLD_DB, f" {FAST_THRESHOLD_DB:.0f} dB (fast preset floor)", color="#ff7f0e",
+            fontsize=7, va="bottom", transform=ax.get_yaxis_transform())
+    ax.set_xscale("log")
+    lo, hi = min(xs), max(xs)
+    ax.set_xlim(lo / 1.5, hi * 1.6)
+    ax.set_ylim(min(ys + [FAST_THRESHOLD_DB]) - 8, ceiling + 6)
+    size = result.get("size", ["?", "?"])
+    ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads",
+                 fontsize=9)
+    ax.set_xlabel("speed-up over llvmpipe (x, log scale)", fontsize=8)
+    ax.set_ylabel("PSNR of the final image vs llvmpipe (dB)", fontsize=8)
+    ax.grid(True, which="both", linewidth=0.3)
+    ax.tick_params(labelsize=7)
+
+
+def write_atomically(fig, path):
+    tmp = f"{path}.tmp-{os.getpid()}{os.path.splitext(path)[1]}"
+    try:
+        fig.savefig(tmp, dpi=130)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("results", nargs="+", help="tradeoff.json files")
+    parser.add_argument("--out", required=True, help="output prefix: PREFIX.png and PREFIX.svg")
+    args = parser.parse_args()
+    results = load_results(args.results)
+    ceiling = ceiling_of(results)
+    columns = min(3, len(results))
+    rows = math.ceil(len(results) / columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(5.2 * columns, 4.2 * rows), squeeze=False)
+    for ax, result in zip(axes.flat, results):
+        draw_panel(ax, result, ceiling)
+    for ax in list(axes.flat)[len(results):]:
+        ax.axis("off")
+    handles = [plt.Line2D([], [], linestyle="", marker=s["marker"], color=s["color"], label=k)
+               for k, s in KIND_STYLE.items()]
+    handles.append(plt.Line2D([], [], color="black", linestyle="--", label="Pareto front (outlined points)"))
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
+    for ext in ("png", "svg"):
+        write_atomically(fig, f"{args.out}.{ext}")
+
+
+if __name__ == "__main__":
+    main()

@@ -21,6 +21,8 @@
 
 #include <sched.h>
 
+#include <nlohmann/json.hpp>
+
 #include "apps/pass_timer.h"
 #include "raster/util/cycles.h"
 #include "scenes/backends.h"
@@ -232,27 +234,23 @@ int runBench(const BenchArgs& args) {
   std::printf("ratio_%s_over_raster=%.3f\n", contenders[1].timed.backend.c_str(), ratio);
 
   if (!args.json.empty()) {
-    std::ostringstream json;
-    json << "{\"scene\":\"" << frame.scene << "\",\"size\":[" << frame.width << "," << frame.height
-         << "],\"time\":" << frame.time << ",\"threads\":" << threads << ",\"methods\":\""
-         << raster::methodLabel(frame.methods) << "\",\"backends\":[";
-    for (int k = 0; k < 2; ++k) {
-      const Timed& t = contenders[k].timed;
-      json << (k ? "," : "") << "{\"name\":\"" << t.backend << "\",\"median_ms\":" << t.median() << ",\"frames_ms\":[";
-      for (size_t i = 0; i < t.ms.size(); ++i) json << (i ? "," : "") << t.ms[i];
-      json << "]}";
-    }
-    json << "],\"ratio\":" << ratio;
+    nlohmann::json json = {{"scene", frame.scene},
+                           {"size", {frame.width, frame.height}},
+                           {"time", frame.time},
+                           {"threads", threads},
+                           {"methods", raster::methodLabel(frame.methods)},
+                           {"backends", nlohmann::json::array()},
+                           {"ratio", ratio}};
+    for (const Contender& c : contenders)
+      json["backends"].push_back({{"name", c.timed.backend}, {"median_ms", c.timed.median()}, {"frames_ms", c.timed.ms}});
     if (passFrames > 0) {
-      json << ",\"passes\":[";
-      for (size_t k = 0; k < passes.size(); ++k)
-        json << (k ? "," : "") << "{\"program\":\"" << passes[k].program << "\",\"" << contenders[0].timed.backend
-             << "_ms\":" << passes[k].oursMs << ",\"" << contenders[1].timed.backend << "_ms\":" << passes[k].theirsMs
-             << "}";
-      json << "]";
+      json["passes"] = nlohmann::json::array();
+      for (const PassRow& row : passes)
+        json["passes"].push_back({{"program", row.program},
+                                  {contenders[0].timed.backend + "_ms", row.oursMs},
+                                  {contenders[1].timed.backend + "_ms", row.theirsMs}});
     }
-    json << "}\n";
-    compare::writeOutputFile(args.json, json.str());
+    compare::writeOutputFile(args.json, json.dump() + "\n");
   }
   return 0;
 }

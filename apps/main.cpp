@@ -2,12 +2,13 @@
 //   raster render SCENE ...   one frame with this pipeline or GL; the final image as PNG,
 //                             and with --dump every target (PNG preview + lossless dump);
 //   raster compare SCENE ...  one frame with a test and a reference backend; per target a
-//                             stats line and ours / gl / heat-map PNGs; optional thresholds.
+//                             stats line and ours / gl / heat-map PNGs; optional thresholds;
+//   raster bench SCENE ...    frame times of this pipeline and a GL driver (bench.h);
+//   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
+//   raster methods, scenes    the methods of each step and the presets; the scene names.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
-//
-// Mesa picks one Gallium driver per process, so a softpipe side of a comparison is rendered
-// by a child process (this executable: `render --backend gl --dump TMP` under
-// GALLIUM_DRIVER=softpipe) whose lossless dump, listed in TMP/targets.txt, is loaded back.
+// A side of a comparison is rendered by sides.h: softpipe in a child process, because Mesa
+// picks one Gallium driver per process.
 //
 // Exit status: 0 success; 1 internal failure or a compare threshold exceeded; 2 bad input.
 #include <cerrno>

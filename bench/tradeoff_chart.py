@@ -61,7 +61,6 @@ def draw_panel(ax, result, ceiling):
         style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
         edge = "black" if p.get("pareto") else "none"
         ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
-        ax.annotate(p["name"], (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7)
     front = sorted((x, y) for p, x, y in zip(points, xs, ys) if p.get("pareto"))
     if len(front) > 1:
         ax.plot([f[0] for f in front], [f[1] for f in front], color="black", linewidth=1, linestyle="--",
@@ -76,6 +75,7 @@ def draw_panel(ax, result, ceiling):
     lo, hi = min(xs), max(xs)
     ax.set_xlim(lo / 1.5, hi * 1.6)
     ax.set_ylim(min(ys + [FAST_THRESHOLD_DB]) - 8, ceiling + 6)
+    label_points(ax, [p["name"] for p in points], xs, ys)
     size = result.get("size", ["?", "?"])
     ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads",
                  fontsize=9)
@@ -83,6 +83,27 @@ def draw_panel(ax, result, ceiling):
     ax.set_ylabel("PSNR of the final image vs llvmpipe (dB)", fontsize=8)
     ax.grid(True, which="both", linewidth=0.3)
     ax.tick_params(labelsize=7)
+
+
+def label_points(ax, names, xs, ys):
+    """Labels every point; points that land close together (method sets of about the same
+    speed and accuracy) get their labels stacked in one column beside the first, so none
+    hides another."""
+    to_axes = ax.transData + ax.transAxes.inverted()
+    placed = []  # (axes x, axes y, labels stacked there so far)
+    order = sorted(range(len(names)), key=lambda i: (-ys[i], xs[i]))
+    for i in order:
+        ax_x, ax_y = to_axes.transform((xs[i], ys[i]))
+        for k, (px, py, count) in enumerate(placed):
+            if abs(px - ax_x) < 0.06 and abs(py - ax_y) < 0.06:
+                ax.annotate(names[i], (xs[i], ys[i]), xycoords="data", textcoords="offset points",
+                            xytext=(6, 3 - 9 * count), fontsize=6.5,
+                            arrowprops=dict(arrowstyle="-", color="#bbbbbb", linewidth=0.5))
+                placed[k] = (px, py, count + 1)
+                break
+        else:
+            ax.annotate(names[i], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3), fontsize=6.5)
+            placed.append((ax_x, ax_y, 1))
 
 
 def write_atomically(fig, path):

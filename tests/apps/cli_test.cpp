@@ -137,9 +137,15 @@ TEST_SUITE("cli") {
     CHECK(run.out.find("per pass") != std::string::npos);
     for (const char* program : {"hdr/scene", "hdr/post+bright", "hdr/post+down", "hdr/post+up", "hdr/post+composite"})
       CHECK(run.out.find(program) != std::string::npos);
-    const std::string json = readText(cwd / "passes.json");
-    CHECK(json.find("\"passes\":[{\"program\":\"hdr/scene\",\"raster_ms\":") != std::string::npos);
-    CHECK(json.find("\"llvmpipe_ms\":") != std::string::npos);
+    const nlohmann::json json = nlohmann::json::parse(readText(cwd / "passes.json"));
+    REQUIRE(json["passes"].size() >= 5);
+    CHECK(json["passes"][0]["program"] == "hdr/scene");
+    for (const nlohmann::json& pass : json["passes"]) {
+      CHECK(pass["raster_ms"].get<double>() >= 0);
+      CHECK(pass["llvmpipe_ms"].get<double>() >= 0);
+    }
+    CHECK(json["backends"][0]["frames_ms"].size() == 2);
+    CHECK(json["ratio"].get<double>() > 0);
   }
 
   TEST_CASE("methods: listed one a line; unknown presets, steps and methods refused with the valid names") {

@@ -31,11 +31,6 @@
 namespace cli {
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
-
 struct Timed {
   std::string backend;
   std::vector<double> ms;
@@ -110,6 +105,11 @@ void printBreakdown(const std::vector<std::pair<std::string, double>>& stats, in
 }
 
 }  // namespace
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
+}
 
 // Restricts the process to `threads` of the cores it may run on, before either backend
 // starts a thread (threads inherit the mask), so both render on the same cores. Unpinned,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -21,6 +22,9 @@ struct BenchArgs : FrameArgs {
 
 CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);
 int runBench(const BenchArgs& args);
+
+// The median of frame times (the mean of the middle two for an even count; 0 for none).
+double median(std::vector<double> values);
 
 // Restricts the process to `threads` of the cores it may run on, before any backend starts
 // a thread; returns how many cores the process is now on (bench.cpp says why).

@@ -1,9 +1,8 @@
 // One side of a comparison, rendered here or in a child process (sides.h).
 #include "apps/sides.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
+#include "apps/child_process.h"
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -20,8 +19,6 @@
 #include "compare/output_file.h"
 #include "scenes/backends.h"
 #include "scenes/memory_budget.h"
-
-extern char** environ;
 
 namespace cli {
 namespace fs = std::filesystem;
@@ -146,42 +143,17 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
   args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
 
-  // The environment as it is, with GALLIUM_DRIVER replaced.
-  std::vector<std::string> environment;
-  for (char** entry = environ; *entry; ++entry)
-    if (std::strncmp(*entry, "GALLIUM_DRIVER=", 15) != 0) environment.emplace_back(*entry);
-  environment.push_back("GALLIUM_DRIVER=" + driver);
-  const auto pointers = [](std::vector<std::string>& strings) {
-    std::vector<char*> result;
-    for (auto& s : strings) result.push_back(s.data());
-    result.push_back(nullptr);
-    return result;
-  };
-  std::vector<char*> argv = pointers(args), envp = pointers(environment);
-
   // Run it with stdout (its "wrote" lines) silenced; its progress and errors go to stderr.
   std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."
             << std::endl;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int error = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (error != 0)
-    throw std::runtime_error("cannot start the " + driver + " child process: " + std::strerror(error));
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("waiting for the child: " + std::string(std::strerror(errno)));
-
+  args[0] = "/proc/self/exe";
+  ChildOptions options;
+  options.setEnvironment = {"GALLIUM_DRIVER=" + driver};
+  const std::string what = "the " + driver + " render (child process)";
+  const int status = runChildProcess(args, what, options);
   // Its failure is ours: bad input stays bad input (2), anything else is internal (1).
-  const std::string what = "the " + driver + " render (child process) ";
-  if (WIFSIGNALED(status))
-    throw std::runtime_error(what + "was killed by signal " + std::to_string(WTERMSIG(status)) +
-                             " (" + strsignal(WTERMSIG(status)) + ")");
-  if (WEXITSTATUS(status) == 2) throw UsageError(what + "failed with exit status 2");
-  if (WEXITSTATUS(status) != 0)
-    throw std::runtime_error(what + "failed with exit status " + std::to_string(WEXITSTATUS(status)));
+  if (status == 2) throw UsageError(what + " failed with exit status 2");
+  if (status != 0) throw std::runtime_error(what + " failed with exit status " + std::to_string(status));
   return {driver, loadDump(dump.path)};
 }
 

@@ -1,7 +1,6 @@
 // `raster tradeoff`: method sets raced and scored against llvmpipe (tradeoff.h).
 #include "apps/tradeoff.h"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
+#include "apps/child_process.h"
 #include "apps/sides.h"
 #include "compare/metrics.h"
 #include "compare/output_file.h"
@@ -34,12 +34,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  if (v.empty()) return 0.0;
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 // One point of the chart: a method set of this pipeline, or a GL driver.
 struct Point {
@@ -105,22 +99,9 @@ std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int fram
                                    "--frames", std::to_string(frames), "--warmup", "1", "--no-pin",
                                    "--instances", std::to_string(frame.instances), "--json", jsonPath};
   if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
   std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("cannot start the softpipe timing child");
-  if (pid == 0) {
-    // Its stdout (the bench report) is not ours; its stderr (progress, errors) is.
-    if (FILE* null = std::freopen("/dev/null", "w", stdout); !null) _exit(127);
-    execv("/proc/self/exe", argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw std::runtime_error("waiting for the softpipe timing child");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  args[0] = "/proc/self/exe";
+  if (runChildProcess(args, "the softpipe timing child (raster bench --gl-driver softpipe)") != 0)
     throw std::runtime_error("the softpipe timing child (raster bench --gl-driver softpipe) failed");
   std::ifstream in(jsonPath);
   const json report = json::parse(in);
@@ -289,20 +270,13 @@ std::string python() {
 int runPython(const std::vector<std::string>& args) {
   std::vector<std::string> argv = {python()};
   argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> pointers;
-  for (std::string& a : argv) pointers.push_back(a.data());
-  pointers.push_back(nullptr);
-  const pid_t pid = fork();
-  if (pid < 0) return -1;
-  if (pid == 0) {
-    if (!std::freopen("/dev/null", "w", stdout)) _exit(127);
-    execvp(pointers[0], pointers.data());
-    _exit(127);
+  ChildOptions options;
+  options.searchPath = true;
+  try {
+    return runChildProcess(argv, python(), options);
+  } catch (const std::runtime_error&) {
+    return -1;
   }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // Before any frame: the chart's tools are there (so a long run does not end without it).

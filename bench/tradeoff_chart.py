@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Speed against accuracy, from `raster tradeoff`'s tradeoff.json.
 
-x: speed-up over llvmpipe (log scale); y: PSNR of the final image against llvmpipe (dB).
+x: speed-up over llvmpipe (log scale); y: PSNR of the final image against llvmpipe (dB),
+and in a second row against the `precise` preset (the most accurate methods).
 Points identical to llvmpipe have no PSNR (it is infinite): they are drawn on a marked
 ceiling above the highest finite value. One labelled point per method set, llvmpipe and
 softpipe as drivers, the Pareto front (no point both faster and closer) as a line, and the
-40 dB line the `fast` preset must stay above. One panel per scene (per size, per result).
+40 dB line the `fast` preset must stay above. One column per scene (per size, per result).
 
 Usage: tradeoff_chart.py RESULT.json [RESULT.json ...] --out PREFIX
 writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
@@ -47,40 +48,45 @@ def load_results(paths):
     return results
 
 
-def ceiling_of(results):
-    finite = [p["psnr_vs_llvmpipe_db"] for r in results for p in r["points"] if p["psnr_vs_llvmpipe_db"] is not None]
+def ceiling_of(results, field):
+    finite = [p[field] for r in results for p in r["points"] if p[field] is not None]
     top = max(finite + [FAST_THRESHOLD_DB])
     return 10.0 * math.ceil((top + 8.0) / 10.0)
 
 
-def draw_panel(ax, result, ceiling):
+def draw_panel(ax, result, ceiling, field, reference):
+    """One scene's points: y is the PSNR in `field` against `reference` (llvmpipe: with the
+    Pareto front and the fast preset's floor; precise: how near each point is to the most
+    accurate methods)."""
     points = result["points"]
     xs = [p["speedup_vs_llvmpipe"] for p in points]
-    ys = [ceiling if p["psnr_vs_llvmpipe_db"] is None else p["psnr_vs_llvmpipe_db"] for p in points]
+    ys = [ceiling if p[field] is None else p[field] for p in points]
+    against_llvmpipe = reference == "llvmpipe"
     for p, x, y in zip(points, xs, ys):
         style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
-        edge = "black" if p.get("pareto") else "none"
+        edge = "black" if against_llvmpipe and p.get("pareto") else "none"
         ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
     front = sorted((x, y) for p, x, y in zip(points, xs, ys) if p.get("pareto"))
-    if len(front) > 1:
+    if against_llvmpipe and len(front) > 1:
         ax.plot([f[0] for f in front], [f[1] for f in front], color="black", linewidth=1, linestyle="--",
                 zorder=2, label="Pareto front")
     ax.axhline(ceiling, color="#2ca02c", linewidth=0.8)
-    ax.text(0.01, ceiling, " identical to llvmpipe", color="#2ca02c", fontsize=7, va="bottom",
+    ax.text(0.01, ceiling, f" identical to {reference}", color="#2ca02c", fontsize=7, va="bottom",
             transform=ax.get_yaxis_transform())
-    ax.axhline(FAST_THRESHOLD_DB, color="#ff7f0e", linewidth=0.8, linestyle=":")
-    ax.text(0.01, FAST_THRESHOLD_DB, f" {FAST_THRESHOLD_DB:.0f} dB (fast preset floor)", color="#ff7f0e",
-            fontsize=7, va="bottom", transform=ax.get_yaxis_transform())
+    if against_llvmpipe:
+        ax.axhline(FAST_THRESHOLD_DB, color="#ff7f0e", linewidth=0.8, linestyle=":")
+        ax.text(0.01, FAST_THRESHOLD_DB, f" {FAST_THRESHOLD_DB:.0f} dB (fast preset floor)", color="#ff7f0e",
+                fontsize=7, va="bottom", transform=ax.get_yaxis_transform())
     ax.set_xscale("log")
     lo, hi = min(xs), max(xs)
     ax.set_xlim(lo / 1.5, hi * 1.6)
     ax.set_ylim(min(ys + [FAST_THRESHOLD_DB]) - 8, ceiling + 6)
     label_points(ax, [p["name"] for p in points], xs, ys)
     size = result.get("size", ["?", "?"])
-    ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads",
-                 fontsize=9)
+    ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads: "
+                 f"against {reference}", fontsize=9)
     ax.set_xlabel("speed-up over llvmpipe (x, log scale)", fontsize=8)
-    ax.set_ylabel("PSNR of the final image vs llvmpipe (dB)", fontsize=8)
+    ax.set_ylabel(f"PSNR of the final image vs {reference} (dB)", fontsize=8)
     ax.grid(True, which="both", linewidth=0.3)
     ax.tick_params(labelsize=7)
 
@@ -122,14 +128,17 @@ def main():
     parser.add_argument("--out", required=True, help="output prefix: PREFIX.png and PREFIX.svg")
     args = parser.parse_args()
     results = load_results(args.results)
-    ceiling = ceiling_of(results)
+    # Rows of up to three scenes: each scene against llvmpipe, and below it against precise.
     columns = min(3, len(results))
-    rows = math.ceil(len(results) / columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(5.2 * columns, 4.2 * rows), squeeze=False)
-    for ax, result in zip(axes.flat, results):
-        draw_panel(ax, result, ceiling)
-    for ax in list(axes.flat)[len(results):]:
-        ax.axis("off")
+    scene_rows = math.ceil(len(results) / columns)
+    fig, axes = plt.subplots(2 * scene_rows, columns, figsize=(5.2 * columns, 4.2 * 2 * scene_rows), squeeze=False)
+    for field, reference, row_offset in (("psnr_vs_llvmpipe_db", "llvmpipe", 0), ("psnr_vs_precise_db", "precise", 1)):
+        ceiling = ceiling_of(results, field)
+        for k, result in enumerate(results):
+            draw_panel(axes[2 * (k // columns) + row_offset][k % columns], result, ceiling, field, reference)
+    for k in range(len(results), scene_rows * columns):
+        axes[2 * (k // columns)][k % columns].axis("off")
+        axes[2 * (k // columns) + 1][k % columns].axis("off")
     handles = [plt.Line2D([], [], linestyle="", marker=s["marker"], color=s["color"], label=k)
                for k, s in KIND_STYLE.items()]
     handles.append(plt.Line2D([], [], color="black", linestyle="--", label="Pareto front (outlined points)"))

@@ -7,7 +7,7 @@ cd "$(dirname "$0")"
 
 packages=(
   build-essential cmake pkg-config
-  libglm-dev libstb-dev libtinyobjloader-dev libtbb-dev doctest-dev libcli11-dev nlohmann-json3-dev
+  libglm-dev libstb-dev libtinyobjloader-dev libtbb-dev doctest-dev libcli11-dev nlohmann-json3-dev libssl-dev
   libosmesa6-dev mesa-common-dev libgl-dev
   python3-matplotlib
   clang libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang (tests/configs/fuzz.sh)

@@ -39,7 +39,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
                      "Refuse (exit 2) a run whose images, textures and targets would take more than SIZE, "
                      "e.g. 8G or 512M (default: 3/4 of this machine's memory)")
       ->type_name("SIZE");
-  command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else ../shared/assets)")
+  command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else the repository's assets/)")
       ->type_name("DIR");
   addMethodOptions(command, args.preset, args.method);
 }

@@ -10,6 +10,7 @@
 // the size (at most 16384 a side); then stb_image decodes.
 #include "scenes/assets.h"
 
+#include "scenes/asset_manifest.h"
 #include "scenes/obj_validate.h"
 
 #include "raster/util/parallel.h"
@@ -104,6 +105,7 @@ std::string readAssetFile(const std::string& path) {
   std::fclose(f);
   if (readError) fail(path, std::string("read error (") + std::strerror(e) + ")");
   if (data.empty()) fail(path, "empty file (0 bytes)");
+  checkAssetAgainstManifest(path, data);   // a checked asset folder: the listed bytes or an error
   return data;
 }
 

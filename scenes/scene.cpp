@@ -14,7 +14,7 @@ std::string assetDirectory(const SceneOptions& options) {
 #ifdef RASTER_DEFAULT_ASSETS
   return RASTER_DEFAULT_ASSETS;
 #else
-  return "../shared/assets";
+  return "assets";   // the repository's asset folder, from the repository root
 #endif
 }
 

@@ -59,6 +59,9 @@ TEST_SUITE("hostile") {
     const fs::path assets = temp.path / "assets", cwd = temp.path / "cwd";
     fs::create_directory(cwd);
     fs::copy(scenes::assetDirectory({}), assets, fs::copy_options::recursive);
+    // A user's own asset folder, without a manifest, so that the cap is what refuses it
+    // (with the manifest, the changed file would be refused by its hash first).
+    fs::remove(assets / "SHA256SUMS");
     const fs::path victim = assets / "brick" / "Bricks031_1K-JPG_Color.jpg";
     REQUIRE(fs::exists(victim));
     scenes::ImageData small;

@@ -15,6 +15,8 @@
 //   us closer to llvmpipe than softpipe on every target.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <cstdlib>
@@ -24,6 +26,7 @@
 
 #include "compare/image_io.h"
 #include "compare/metrics.h"
+#include "scenes/asset_manifest.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {
@@ -112,9 +115,50 @@ TEST_SUITE("scene_deferred") {
       const fs::path out = assets / "out.png";
       const auto [status, err] = renderWithAssets(assets, out);
       CHECK(status == 2);
-      CHECK(err.find("concrete_cat_statue_arm_2k.jpg") != std::string::npos);
+      // The manifest refuses it before the decoder: the file and both hashes in one line.
+      CHECK(err.find("concrete_cat_statue_arm_2k.jpg: changed or truncated: its SHA-256 is ") != std::string::npos);
+      CHECK(err.find("SHA256SUMS lists 2ea5a454bbf1667e774b19c802ea4ca676b8337a08d76b815f34a45c477e5689") !=
+            std::string::npos);
+      CHECK(std::count(err.begin(), err.end(), '\n') <= 2);   // the progress line and the error
       CHECK_FALSE(fs::exists(out));
+      // Without a manifest (a user's own folder) the JPEG walk still finds the truncation.
+      fs::remove(assets / "SHA256SUMS");
+      const auto [statusUnchecked, errUnchecked] = renderWithAssets(assets, out);
+      CHECK(statusUnchecked == 2);
+      CHECK(errUnchecked.find("concrete_cat_statue_arm_2k.jpg: truncated") != std::string::npos);
       fs::remove_all(assets);
     }
+    {
+      // A file the manifest does not list, in a checked folder, is refused too.
+      const fs::path assets = copyAssets("unlisted");
+      std::string manifest;
+      {
+        std::ifstream in(assets / "SHA256SUMS");
+        for (std::string line; std::getline(in, line);)
+          if (line.find("cannon_1k.hdr") == std::string::npos) manifest += line + "\n";
+      }
+      std::ofstream(assets / "SHA256SUMS") << manifest;
+      const fs::path out = assets / "out.png";
+      const auto [status, err] = renderWithAssets(assets, out);
+      CHECK(status == 2);
+      CHECK(err.find("cannon_1k.hdr: not listed in ") != std::string::npos);
+      fs::remove_all(assets);
+    }
+  }
+
+  TEST_CASE("the repository's assets match their manifest, and a clone renders from them by default") {
+    const fs::path root = fs::path(RASTER_SOURCE_DIR) / "assets";
+    if (!std::getenv("RASTER_ASSETS")) CHECK(fs::path(scenes::assetDirectory({})) == root);
+    std::ifstream in(root / "SHA256SUMS");
+    int checked = 0;
+    for (std::string line; std::getline(in, line); ++checked) {
+      REQUIRE(line.size() > 66);
+      std::ifstream file(root / line.substr(66), std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+      CAPTURE(line);
+      CHECK(scenes::sha256Hex(bytes) == line.substr(0, 64));
+    }
+    CHECK(checked == 9);   // the OBJ, seven JPEGs, the HDR (PROVENANCE.md lists them)
+    CHECK(scenes::sha256Hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");   // FIPS 180-2
   }
 }

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "raster/methods.h"
 #include "tests/geometry/geometry_test_helpers.h"
 
 namespace {
@@ -440,6 +441,29 @@ TEST_SUITE("geometry") {
     // perspective mean (0.5 * 4 * 0.5 + 0.5 * 16 * 0.25) / (0.5 * 0.5 + 0.5 * 0.25); the screen-space
     // mean would be 10.
     CHECK(eval(v, 2, 2) / eval(t.w, 2, 2) == 8.0f);
+  }
+
+  // The interp=affine method (raster/methods.h): the same triangle's varying plane made of
+  // the plain values 8, 4, 16, read without the divide; z and 1/w are untouched.
+  TEST_CASE("planes: interp=affine makes screen-linear varying planes, z and 1/w as GL") {
+    raster::MethodSet affine;
+    affine.interp = raster::InterpMethod::Affine;
+    const raster::ScopedMethods scoped(affine);
+    raster::SetupState state = setupState(8, 8, false, 1);
+    SetupOutput out;
+    REQUIRE(setUp(state, windowVertex(0.5f, 0.5f, 0.25f, 1.0f, {8}), windowVertex(4.5f, 0.5f, 0.75f, 0.5f, {4}),
+                  windowVertex(0.5f, 4.5f, 0.5f, 0.25f, {16}), out));
+    const SetupTriangle& t = out.triangles[0];
+    CHECK(t.z.dadx == 0.125f);
+    CHECK(t.w.dady == -0.1875f);
+    const raster::Plane v = out.planes[0];
+    CHECK(v.a0 == 8.0f);
+    CHECK(v.dadx == -1.0f);
+    CHECK(v.dady == 2.0f);
+    auto eval = [](const raster::Plane& p, int px, int py) { return std::fma(p.dady, float(py), std::fma(p.dadx, float(px), p.a0)); };
+    CHECK(eval(v, 4, 0) == 4.0f);    // exact at the vertices
+    CHECK(eval(v, 0, 4) == 16.0f);
+    CHECK(eval(v, 2, 2) == 10.0f);   // the screen-space mean, where perspective gives 8
   }
 
   TEST_CASE("polygon offset: units in depth-buffer steps, factor times the larger depth slope") {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/methods.h"
 #include "raster/texture/format.h"
 
 namespace raster {
@@ -133,13 +134,15 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   tri.w = planeOf(s, p0[3], p1[3], p2[3]);
 
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
-  // The interp=affine method (methods.h) takes the plain values: screen-linear planes.
+  // The interp=affine method (methods.h) takes the plain values (times 1, exactly): planes
+  // that are linear in screen space.
   const bool perspective = methods::active().interp == InterpMethod::Perspective;
+  const float oow0 = perspective ? p0[3] : 1.0f, oow1 = perspective ? p1[3] : 1.0f, oow2 = perspective ? p2[3] : 1.0f;
   tri.varyingBase = uint32_t(out.varyingPlanes.size());
   for (int v = 0; v < state.varyingFloats; ++v) {
-    const float a0 = perspective ? vert[0][kVaryings + v] * p0[3] : vert[0][kVaryings + v];
-    const float a1 = perspective ? vert[1][kVaryings + v] * p1[3] : vert[1][kVaryings + v];
-    const float a2 = perspective ? vert[2][kVaryings + v] * p2[3] : vert[2][kVaryings + v];
+    const float a0 = vert[0][kVaryings + v] * oow0;
+    const float a1 = vert[1][kVaryings + v] * oow1;
+    const float a2 = vert[2][kVaryings + v] * oow2;
     out.varyingPlanes.push_back(planeOf(s, a0, a1, a2));
   }
   tri.drawIndex = state.drawIndex;

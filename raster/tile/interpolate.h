@@ -39,7 +39,7 @@ template <class F>
   const MethodSet& methodSet = methods::active();
   const F w = evaluatePlane(tri.w, px, py);
   const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
-  const Plane* planes = &job.varyingPlanes[tri.varyingBase];
+  const Plane* planes = job.varyingPlanes.data() + tri.varyingBase;
   if (methodSet.interp == InterpMethod::Affine) {
     for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py);
   } else {

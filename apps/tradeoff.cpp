@@ -326,14 +326,8 @@ int runTradeoff(const TradeoffArgs& args) {
   else sceneList = {args.scene};
   std::vector<Frame> frames;
   for (const std::string& scene : sceneList) {
-    FrameArgs frameArgs;
+    FrameArgs frameArgs = args;
     frameArgs.scene = scene;
-    frameArgs.time = args.time;
-    frameArgs.size = args.size;
-    frameArgs.threads = args.threads;
-    frameArgs.instances = args.instances;
-    frameArgs.assets = args.assets;
-    frameArgs.maxMemory = args.maxMemory;
     frames.push_back(validateFrame(frameArgs));
   }
   if (args.frames < 1 || args.frames > 1000) throw UsageError("--frames: out of range (1..1000)");

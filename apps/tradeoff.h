@@ -25,19 +25,15 @@
 
 namespace cli {
 
-struct TradeoffArgs {
-  std::string scene;               // a scene, or `all`
-  std::string time = "1";
-  std::string size = "640x480";
-  int threads = 2;
+// The frame options (FrameArgs: scene, time, size, threads, assets, memory, instances) with
+// `scene` also `all`; the method options are not offered: every set is raced.
+struct TradeoffArgs : FrameArgs {
+  TradeoffArgs() { threads = 2; }
   int frames = 9;                  // timed rounds
   int warmup = 2;
   int softpipeFrames = 3;          // timed frames of the softpipe child (it is slow)
   bool noSoftpipe = false;
   std::string out;
-  std::string assets;
-  std::string maxMemory;
-  int instances = 1000;
 };
 
 CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args);

@@ -12,7 +12,7 @@
 //   math    simd/gl_math.h        the GLSL transcendentals the shader ports call
 //   filter  texture/sample_color  bilinear weights of RGBA8 colour lookups
 //   half    merge/color_write.h   float -> half rounding on writes to RGBA16F targets
-//   div     simd/glsl.h, tile/interpolate.h   normalize / inversesqrt, and the 1/w of
+//   div     simd/div_approx.h     normalize / inversesqrt (simd/glsl.h), and the 1/w of
 //                                 perspective-correct interpolation
 //   interp  geometry/setup.cpp, tile/interpolate.h   perspective or screen-linear varyings
 //

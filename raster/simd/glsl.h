@@ -93,7 +93,7 @@ template <class F> F dot(vec3<F> a, vec3<F> b) { return a.x * b.x + (a.y * b.y +
 template <class F> F dot(vec4<F> a, vec4<F> b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
 template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
 // inversesqrt and normalize take the `div` step of the method set (methods.h): exact is
-// llvmpipe's 1 / sqrt(x) (GLSL IR's rsq), approx is inversesqrtApprox (gl_math.h).
+// llvmpipe's 1 / sqrt(x) (GLSL IR's rsq), approx is inversesqrtApprox (div_approx.h).
 template <class F> F inversesqrt(F x) {
   if (methods::active().div == DivMethod::Approx) return inversesqrtApprox(x);
   return F(1.0f) / sqrt(x);

@@ -1,5 +1,5 @@
 // The div=approx method (raster/methods.h): reciprocalApprox and inversesqrtApprox of
-// simd/gl_math.h against the exact values, over the whole range of positive normal floats,
+// simd/div_approx.h against the exact values, over the whole range of positive normal floats,
 // and the same bits in every lane type.
 #include <doctest/doctest.h>
 
@@ -51,7 +51,7 @@ TEST_SUITE("simd") {
       worstRsqrt = std::max(worstRsqrt, std::fabs(double(rsqrt) * std::sqrt(double(x)) - 1.0));
     }
     MESSAGE("reciprocalApprox: max relative error " << worstRcp << "; inversesqrtApprox: " << worstRsqrt);
-    CHECK(worstRcp < 7e-8);     // the bounds stated in gl_math.h
+    CHECK(worstRcp < 7e-8);     // the bounds stated in div_approx.h
     CHECK(worstRsqrt < 5e-6);
     CHECK(worstRcp > 3e-8);     // an approximation: more than half a float ulp (2^-24 = 6e-8 relative at most)
     CHECK(worstRsqrt > 1e-7);

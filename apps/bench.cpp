@@ -149,6 +149,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
       ->type_name("SIZE");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
   addMethodOptions(*command, args.preset, args.method);
+  addSetOption(*command, args.sets);
   command->add_flag("--no-pin", args.noPin,
                     "Do not pin the process to --threads cores (by default both backends share the same N cores)");
   command->add_flag("--passes", args.passes,
@@ -171,7 +172,7 @@ int runBench(const BenchArgs& args) {
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);
   const int cores = args.noPin ? 0 : pinToCores(threads);
 
-  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
+  const scenes::SceneOptions options = sceneOptions(frame);
   Contender contenders[2];
   contenders[0].backend = scenes::makeRasterBackend(threads, frame.scalar);
   contenders[1].backend = scenes::makeGlBackend();

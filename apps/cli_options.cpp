@@ -42,6 +42,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
   command.add_option("--assets", args.assets, "Asset folder (default: $RASTER_ASSETS, else the repository's assets/)")
       ->type_name("DIR");
   addMethodOptions(command, args.preset, args.method);
+  addSetOption(command, args.sets);
 }
 
 // A non-negative decimal integer that fits in uint64_t.
@@ -77,6 +78,16 @@ void addMethodOptions(CLI::App& command, std::string& preset, std::string& metho
       ->type_name(presets)->capture_default_str();
   command.add_option("--method", method, "Override steps of the preset, e.g. math=fast,half=rne")
       ->type_name("STEP=NAME[,...]");
+}
+
+void addSetOption(CLI::App& command, std::vector<std::string>& sets) {
+  command.add_option("--set", sets,
+                     "Set a scene parameter (repeatable; `raster params SCENE` lists them), e.g. --set near=0.001")
+      ->type_name("NAME=VALUE")->take_all()->allow_extra_args(false);
+}
+
+scenes::SceneOptions sceneOptions(const Frame& frame) {
+  return scenes::SceneOptions{frame.time, frame.width, frame.height, frame.assets, frame.instances, frame.params};
 }
 
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides) {
@@ -172,6 +183,29 @@ Frame validateFrame(const FrameArgs& args) {
   if (!args.assets.empty() && !fs::is_directory(args.assets))
     throw UsageError("--assets: no such folder: " + args.assets);
   frame.assets = args.assets;
+
+  // --set NAME=VALUE, after the options it may override (time, size, instances).
+  for (const std::string& set : args.sets) {
+    const size_t equals = set.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw UsageError("--set: '" + set + "' is not NAME=VALUE (raster params " + frame.scene + " lists the names)");
+    const std::string name = set.substr(0, equals), value = set.substr(equals + 1);
+    try {
+      if (name == "size") {
+        scenes::findParam(frame.scene, name);
+        if (!scenes::parseSizeValue(value, frame.width, frame.height))
+          throw scenes::ParamError("size: '" + value + "' is not WxH or a width, each side 1..16384");
+        continue;
+      }
+      const double number = scenes::parseParamValue(frame.scene, name, value);
+      if (name == "time") frame.time = float(number);
+      else if (name == "instances") frame.instances = int(number);
+      else scenes::applyParam(frame.params, name, number);
+    } catch (const scenes::ParamError& e) {
+      throw UsageError(std::string("--set: ") + e.what());
+    }
+  }
+  frame.sets = args.sets;
 
   if (!args.maxMemory.empty()) {
     uint64_t bytes = 0;

@@ -11,10 +11,12 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "raster/methods.h"
+#include "scenes/scene.h"
 
 namespace cli {
 
@@ -35,6 +37,7 @@ struct FrameArgs {
   std::string maxMemory;       // empty: scenes::memory::defaultCap()
   std::string preset = "gl";   // this pipeline's method set (raster/methods.h)
   std::string method;          // STEP=NAME[,STEP=NAME]: overrides of the preset's steps
+  std::vector<std::string> sets;   // --set NAME=VALUE, in order (scenes/scene_params.h)
 };
 
 struct RenderArgs : FrameArgs {
@@ -60,7 +63,12 @@ struct Frame {
   int instances = 1000;
   std::string assets;
   raster::MethodSet methods;   // --preset with --method applied
+  scenes::SceneParams params;  // --set, beyond time, size and instances
+  std::vector<std::string> sets;   // the --set texts, for a child process to get the same frame
 };
+
+// The scene options of a validated frame.
+scenes::SceneOptions sceneOptions(const Frame& frame);
 
 // Limits the compare thresholds set; absent ones are not checked.
 struct Thresholds {
@@ -80,6 +88,8 @@ Thresholds validateThresholds(const CompareArgs& args);
 
 // The method set of --preset and --method; UsageError naming the valid names otherwise.
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides);
+// Adds --set NAME=VALUE (repeatable) to a command.
+void addSetOption(CLI::App& command, std::vector<std::string>& sets);
 // Adds --preset and --method to a command.
 void addMethodOptions(CLI::App& command, std::string& preset, std::string& method);
 

@@ -5,12 +5,14 @@
 //                             stats line and ours / gl / heat-map PNGs; optional thresholds;
 //   raster bench SCENE ...    frame times of this pipeline and a GL driver (bench.h);
 //   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
-//   raster methods, scenes    the methods of each step and the presets; the scene names.
+//   raster methods, scenes    the methods of each step and the presets; the scene names;
+//   raster params SCENE       the scene's parameters, set with --set NAME=VALUE.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
 // A side of a comparison is rendered by sides.h: softpipe in a child process, because Mesa
 // picks one Gallium driver per process.
 //
 // Exit status: 0 success; 1 internal failure or a compare threshold exceeded; 2 bad input.
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
 #include "apps/sides.h"
@@ -154,6 +158,31 @@ int listMethods() {
   return 0;
 }
 
+// `raster params SCENE`: one line per parameter, its range, default and meaning; with
+// --json the same as a list of objects.
+int listParams(const std::string& scene, bool asJson) {
+  const auto names = scenes::sceneNames();
+  if (std::find(names.begin(), names.end(), scene) == names.end())
+    throw UsageError("unknown scene '" + scene + "' (known scenes: shadow, deferred, hdr)");
+  const std::vector<scenes::ParamSpec> specs = scenes::sceneParams(scene);
+  if (asJson) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const scenes::ParamSpec& p : specs)
+      list.push_back({{"name", p.name}, {"min", p.min}, {"max", p.max}, {"integer", p.integer}, {"unit", p.unit},
+                      {"default", p.byDefault}, {"meaning", p.meaning}});
+    std::cout << list.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << "parameters of " << scene << " (set with --set NAME=VALUE on render, compare, bench, tradeoff, sweep):\n";
+  for (const scenes::ParamSpec& p : specs) {
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-16s %-16s default %-8s ", p.name.c_str(),
+                  (number(p.min) + ".." + number(p.max) + (p.unit.empty() ? "" : " " + p.unit)).c_str(), p.byDefault.c_str());
+    std::cout << line << p.meaning << "\n";
+  }
+  return 0;
+}
+
 // One line, as the single error line demands.
 std::string oneLine(std::string text) {
   for (char& c : text)
@@ -175,9 +204,14 @@ int main(int argc, char** argv) {
   CLI::App* bench = cli::addBenchCommand(app, benchArgs);
   CLI::App* list = app.add_subcommand("scenes", "List the scenes, one a line");
   CLI::App* methods = app.add_subcommand("methods", "List the methods of each pipeline step, and the presets");
+  CLI::App* params = app.add_subcommand("params", "List a scene's parameters (--set NAME=VALUE), with range and meaning");
+  std::string paramsScene;
+  bool paramsJson = false;
+  params->add_option("scene", paramsScene, "Scene")->required()->type_name("SCENE");
+  params->add_flag("--json", paramsJson, "As JSON");
   cli::TradeoffArgs tradeoffArgs;
   CLI::App* tradeoff = cli::addTradeoffCommand(app, tradeoffArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, methods, scenes).");
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, methods, params, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -195,6 +229,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (methods->parsed()) return listMethods();
+    if (params->parsed()) return listParams(paramsScene, paramsJson);
     if (bench->parsed()) return cli::runBench(benchArgs);
     if (tradeoff->parsed()) return cli::runTradeoff(tradeoffArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);

@@ -36,7 +36,7 @@ std::string sizeAndTime(const Frame& frame) {
 // Renders one frame with a backend made in this process ("raster" or "gl"), and reads back
 // every target, or only the final image when `finalOnly` (a render without --dump).
 Side renderInProcess(const Frame& frame, const std::string& backendKind, bool finalOnly) {
-  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
+  const scenes::SceneOptions options = sceneOptions(frame);
   std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, options);
   std::unique_ptr<scenes::Backend> backend;
   // This pipeline renders with the frame's method set (GL ignores it: it has its own).
@@ -142,6 +142,7 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   const uint64_t left = scenes::memory::cap() - std::min(scenes::memory::cap(), scenes::memory::reserved());
   args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
   args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
+  for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
 
   // Run it with stdout (its "wrote" lines) silenced; its progress and errors go to stderr.
   std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."

@@ -81,7 +81,7 @@ struct Stage {
 };
 
 Stage makeStage(std::unique_ptr<scenes::Backend> backend, const Frame& frame) {
-  const scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances};
+  const scenes::SceneOptions options = sceneOptions(frame);
   Stage stage{std::move(backend), scenes::makeScene(frame.scene, options)};
   stage.backend->resizeDefaultFramebuffer(frame.width, frame.height);
   stage.scene->setup(*stage.backend);
@@ -99,6 +99,7 @@ std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int fram
                                    "--frames", std::to_string(frames), "--warmup", "1", "--no-pin",
                                    "--instances", std::to_string(frame.instances), "--json", jsonPath};
   if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
+  for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
   std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
   args[0] = "/proc/self/exe";
   if (runChildProcess(args, "the softpipe timing child (raster bench --gl-driver softpipe)") != 0)
@@ -316,6 +317,7 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args) {
   command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")
       ->type_name("SIZE");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  addSetOption(*command, args.sets);
   return command;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scenes/backend.h"
+#include "scenes/scene_params.h"
 
 namespace scenes {
 
@@ -19,6 +20,7 @@ struct SceneOptions {
   int height = 480;
   std::string assetDir;   // empty: the default (see assetDirectory())
   int instances = 1000;   // the HDR scene's cube count (the seed's N_INSTANCES)
+  SceneParams params;     // --set NAME=VALUE (scene_params.h); unset: the seed's scene
 };
 
 // One image the scene exposes for inspection and comparison.

@@ -100,16 +100,21 @@ class DeferredScene final : public Scene {
   }
 
   void renderFrame(Backend& b, float t) override {
+    const SceneParams& p = options_.params;
+    // world_offset moves every model and both eyes by (d, d, d); unset, nothing is touched.
+    auto moved = [&](glm::vec3 v) { return p.worldOffset ? v + glm::vec3(*p.worldOffset) : v; };
     const int w = std::max(options_.width, 1), h = std::max(options_.height, 1);
     const float cam_angle = t * 0.3f;
-    const glm::vec3 cam(std::cos(cam_angle) * 4.6f, 2.3f, std::sin(cam_angle) * 4.6f);
-    const glm::mat4 u_view = glm::lookAtRH(cam, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0, 1, 0));
-    const glm::mat4 u_proj = glm::perspectiveRH_NO(50.0f * PI / 180.0f, float(w) / float(h), 0.1f, 60.0f);
+    const glm::vec3 cam = moved(glm::vec3(std::cos(cam_angle) * 4.6f, 2.3f, std::sin(cam_angle) * 4.6f));
+    const glm::mat4 u_view = glm::lookAtRH(cam, moved(glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(0, 1, 0));
+    const glm::mat4 u_proj =
+        glm::perspectiveRH_NO(50.0f * PI / 180.0f, float(w) / float(h), p.nearPlane.value_or(0.1f), 60.0f);
     const float sun_yaw = t * 0.25f;
-    const glm::vec3 light_dir = glm::normalize(glm::vec3(std::cos(sun_yaw) * 0.6f, 1.05f, std::sin(sun_yaw) * 0.6f));
+    const glm::vec3 light_dir = p.lightElevation ? lightAtElevation(sun_yaw, *p.lightElevation)
+                                                 : glm::normalize(glm::vec3(std::cos(sun_yaw) * 0.6f, 1.05f, std::sin(sun_yaw) * 0.6f));
     const glm::mat4 u_light_vp = glm::orthoRH_NO(-4.0f, 4.0f, -4.0f, 4.0f, 0.1f, 20.0f) *
-                                 glm::lookAtRH(light_dir * 8.0f, glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0, 1, 0));
-    const glm::mat4 identity(1.0f);
+                                 glm::lookAtRH(moved(light_dir * 8.0f), moved(glm::vec3(0.0f, 0.8f, 0.0f)), glm::vec3(0, 1, 0));
+    const glm::mat4 model = p.worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*p.worldOffset)) : glm::mat4(1.0f);
 
     // Pass 1: shadow map from the sun's POV, with slope-scaled depth bias.
     ClearOp clearDepth;
@@ -117,10 +122,10 @@ class DeferredScene final : public Scene {
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
-    shadowState.offsetFactor = 2.0f;
-    shadowState.offsetUnits = 4.0f;
+    shadowState.offsetFactor = p.offsetScale ? 2.0f * *p.offsetScale : 2.0f;
+    shadowState.offsetUnits = p.offsetScale ? 4.0f * *p.offsetScale : 4.0f;
     b.setUniform(prog_shadow_, "u_light_vp", u_light_vp);
-    b.setUniform(prog_shadow_, "u_model", identity);
+    b.setUniform(prog_shadow_, "u_model", model);
     b.draw(prog_shadow_, floor_, shadowState);
     b.draw(prog_shadow_, cat_, shadowState);
 
@@ -138,7 +143,7 @@ class DeferredScene final : public Scene {
     }
     b.setUniform(prog_gbuffer_, "u_view", u_view);
     b.setUniform(prog_gbuffer_, "u_proj", u_proj);
-    b.setUniform(prog_gbuffer_, "u_model", identity);
+    b.setUniform(prog_gbuffer_, "u_model", model);
     b.setUniform(prog_gbuffer_, "u_material", 1.0f);
     b.draw(prog_gbuffer_, floor_, DrawState{});
     b.setUniform(prog_gbuffer_, "u_material", 0.0f);

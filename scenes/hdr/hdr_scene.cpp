@@ -79,7 +79,9 @@ MeshData quadMesh() {
 // gen_instances: n rows on a 3D Lissajous curve (7 azimuthal vs 3 elevation lobes vs radial
 // breathing); hue cycles three times; phase sweeps [0, 1); every 9th cube is emissive.
 // All in float, left to right as the seed writes it, with PI as a float.
-std::vector<float> gen_instances(int n) {
+// world_offset adds (d, d, d) to every offset and intensity scales every colour (params,
+// when set; unset, the seed's values are untouched).
+std::vector<float> gen_instances(int n, const SceneParams& params) {
   std::vector<float> result;
   result.reserve(size_t(n) * 8);
   for (int i = 0; i < n; ++i) {
@@ -95,7 +97,9 @@ std::vector<float> gen_instances(int n) {
     const float cg = 0.5f + 0.5f * std::cos(hue + 2.0944f);
     const float cb = 0.5f + 0.5f * std::cos(hue + 4.1888f);
     const float emissive = (i % 9 == 0) ? 1.0f : 0.0f;
-    result.insert(result.end(), {x, y, z, cr, cg, cb, fi, emissive});
+    const float d = params.worldOffset.value_or(0.0f), k = params.intensity.value_or(1.0f);
+    if (params.worldOffset || params.intensity) result.insert(result.end(), {x + d, y + d, z + d, cr * k, cg * k, cb * k, fi, emissive});
+    else result.insert(result.end(), {x, y, z, cr, cg, cb, fi, emissive});
   }
   return result;
 }
@@ -109,7 +113,8 @@ struct BloomChain {
 class HdrScene final : public Scene {
  public:
   explicit HdrScene(const SceneOptions& options)
-      : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)), N_INSTANCES(options.instances) {
+      : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)), N_INSTANCES(options.instances),
+        params_(options.params) {
     // bloom mip chain: mip i lives at (HDR >> (i+1)) -- mip 0 is half res, then halving.
     for (int i = 0; i < BLOOM_MIPS; ++i) {
       bloom_w_[size_t(i)] = std::max(HDR_W >> (i + 1), 1);
@@ -125,7 +130,7 @@ class HdrScene final : public Scene {
     prog_down_ = b.createProgram("hdr/post+down");
     prog_up_ = b.createProgram("hdr/post+up");
     prog_composite_ = b.createProgram("hdr/post+composite");
-    scene_mesh_ = b.createMesh(cubeMesh(gen_instances(N_INSTANCES)));
+    scene_mesh_ = b.createMesh(cubeMesh(gen_instances(N_INSTANCES, params_)));
     quad_ = b.createMesh(quadMesh());
 
     // create_scene_target: RGBA16F colour (LINEAR, CLAMP_TO_EDGE) + 16-bit depth.
@@ -144,10 +149,13 @@ class HdrScene final : public Scene {
     // HDR aspect since the scene renders into the HDR_W x HDR_H target.
     const float camera_angle = t * 0.3f;
     const float camera_r = 14.0f;
-    const glm::vec3 cam_pos(camera_r * std::cos(camera_angle), std::sin(camera_angle * 2.0f) * 2.0f,
-                            camera_r * std::sin(camera_angle));
-    const glm::mat4 u_view = glm::lookAtRH(cam_pos, glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
-    const glm::mat4 u_proj = glm::perspectiveRH_NO(60.0f * PI / 180.0f, float(HDR_W) / float(HDR_H), 0.1f, 60.0f);
+    glm::vec3 cam_pos(camera_r * std::cos(camera_angle), std::sin(camera_angle * 2.0f) * 2.0f,
+                      camera_r * std::sin(camera_angle));
+    glm::vec3 target(0, 0, 0);
+    if (params_.worldOffset) cam_pos += glm::vec3(*params_.worldOffset), target += glm::vec3(*params_.worldOffset);
+    const glm::mat4 u_view = glm::lookAtRH(cam_pos, target, glm::vec3(0, 1, 0));
+    const glm::mat4 u_proj = glm::perspectiveRH_NO(60.0f * PI / 180.0f, float(HDR_W) / float(HDR_H),
+                                                   params_.nearPlane.value_or(0.1f), 60.0f);
 
     // ===== Pass 1: scene into the HDR float target =====
     ClearOp clearScene;
@@ -261,6 +269,7 @@ class HdrScene final : public Scene {
 
   const int HDR_W, HDR_H;   // the HDR target: the scene's width x height (see the file header)
   const int N_INSTANCES;    // 1000 in the seed; --instances scales the swarm for benchmarks
+  const SceneParams params_;  // --set (scene_params.h)
   std::array<int, BLOOM_MIPS> bloom_w_{}, bloom_h_{};
   Handle prog_scene_ = 0, prog_bright_ = 0, prog_down_ = 0, prog_up_ = 0, prog_composite_ = 0;
   Handle scene_mesh_ = 0, quad_ = 0;

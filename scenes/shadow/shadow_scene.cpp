@@ -75,23 +75,30 @@ class ShadowScene final : public Scene {
   }
 
   void renderFrame(Backend& b, float t) override {
+    const SceneParams& p = options_.params;
+    // world_offset moves every model and both eyes by (d, d, d); unset, nothing is touched.
+    auto moved = [&](glm::vec3 v) { return p.worldOffset ? v + glm::vec3(*p.worldOffset) : v; };
+    auto placed = [&](const glm::mat4& model) {
+      return p.worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*p.worldOffset)) * model : model;
+    };
     const int display_w = options_.width, display_h = options_.height;
     const int h = std::max(display_h, 1);
     const float aspect = float(display_w) / float(h);
 
     // Directional light orbits in XZ, tilted up, so the cube's shadow sweeps the floor.
     const float sun_yaw = t * 0.6f;
-    const glm::vec3 light_dir = glm::normalize(glm::vec3(std::cos(sun_yaw), 1.4f, std::sin(sun_yaw)));
+    const glm::vec3 light_dir = p.lightElevation ? lightAtElevation(sun_yaw, *p.lightElevation)
+                                                 : glm::normalize(glm::vec3(std::cos(sun_yaw), 1.4f, std::sin(sun_yaw)));
     const glm::vec3 light_eye = light_dir * 8.0f;
-    const glm::mat4 light_view = glm::lookAtRH(light_eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const glm::mat4 light_view = glm::lookAtRH(moved(light_eye), moved(glm::vec3(0.0f)), glm::vec3(0, 1, 0));
     const glm::mat4 light_proj = glm::orthoRH_NO(-4.0f, 4.0f, -4.0f, 4.0f, 0.1f, 20.0f);
     const glm::mat4 u_light_vp = light_proj * light_view;
 
     // Camera orbits the scene, slightly elevated.
     const float cam_angle = t * 0.35f;
-    const glm::vec3 cam_pos(std::cos(cam_angle) * 5.0f, 3.2f, std::sin(cam_angle) * 5.0f);
-    const glm::mat4 u_view = glm::lookAtRH(cam_pos, glm::vec3(0.0f, CUBE_HOVER * 0.5f, 0.0f), glm::vec3(0, 1, 0));
-    const glm::mat4 u_proj = glm::perspectiveRH_NO(50.0f * PI / 180.0f, aspect, 0.1f, 50.0f);
+    const glm::vec3 cam_pos = moved(glm::vec3(std::cos(cam_angle) * 5.0f, 3.2f, std::sin(cam_angle) * 5.0f));
+    const glm::mat4 u_view = glm::lookAtRH(cam_pos, moved(glm::vec3(0.0f, CUBE_HOVER * 0.5f, 0.0f)), glm::vec3(0, 1, 0));
+    const glm::mat4 u_proj = glm::perspectiveRH_NO(50.0f * PI / 180.0f, aspect, p.nearPlane.value_or(0.1f), 50.0f);
 
     // Pass 1: shadow map from the light's point of view, with slope-scaled depth bias.
     ClearOp clearDepth;
@@ -99,12 +106,12 @@ class ShadowScene final : public Scene {
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
-    shadowState.offsetFactor = 2.0f;
-    shadowState.offsetUnits = 4.0f;
+    shadowState.offsetFactor = p.offsetScale ? 2.0f * *p.offsetScale : 2.0f;
+    shadowState.offsetUnits = p.offsetScale ? 4.0f * *p.offsetScale : 4.0f;
     b.setUniform(prog_shadow_, "u_light_vp", u_light_vp);
-    b.setUniform(prog_shadow_, "u_model", cube_model(t));
+    b.setUniform(prog_shadow_, "u_model", placed(cube_model(t)));
     b.draw(prog_shadow_, cube_, shadowState);
-    b.setUniform(prog_shadow_, "u_model", glm::mat4(1.0f));
+    b.setUniform(prog_shadow_, "u_model", placed(glm::mat4(1.0f)));
     b.draw(prog_shadow_, floor_, shadowState);
 
     // Pass 2: main scene from the camera, sampling the shadow map on unit 0.
@@ -121,10 +128,10 @@ class ShadowScene final : public Scene {
     b.setUniform(prog_main_, "u_proj", u_proj);
     b.setUniform(prog_main_, "u_light_dir", light_dir);
     b.setUniform(prog_main_, "u_cam_pos", cam_pos);
-    b.setUniform(prog_main_, "u_model", cube_model(t));
+    b.setUniform(prog_main_, "u_model", placed(cube_model(t)));
     b.setUniform(prog_main_, "u_is_floor", 0.0f);
     b.draw(prog_main_, cube_, mainState);
-    b.setUniform(prog_main_, "u_model", glm::mat4(1.0f));
+    b.setUniform(prog_main_, "u_model", placed(glm::mat4(1.0f)));
     b.setUniform(prog_main_, "u_is_floor", 1.0f);
     b.draw(prog_main_, floor_, mainState);
   }

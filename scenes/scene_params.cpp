@@ -1,0 +1,106 @@
+// The scene parameter catalog (scene_params.h).
+#include "scenes/scene_params.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace scenes {
+namespace {
+
+ParamSpec timeParam() {
+  return {"time", 0, 1e30, false, "s", "1",
+          "time of the frame; large values lose float precision in every angle the scene derives from it"};
+}
+ParamSpec sizeParam() {
+  return {"size", 1, 16384, true, "px", "640x480",
+          "final image WxH, or a width at 4:3; 1x1 to 16384 (GL_MAX_TEXTURE_SIZE of llvmpipe)"};
+}
+ParamSpec nearParam() {
+  return {"near", 1e-7, 10, false, "", "0.1",
+          "camera near plane; toward 0 the depth buffer's precision collapses (z-fighting)"};
+}
+ParamSpec worldOffsetParam() {
+  return {"world_offset", -1e20, 1e20, false, "", "0",
+          "scene and camera moved by (d, d, d): float precision far from the origin"};
+}
+ParamSpec lightElevationParam(const char* byDefault) {
+  return {"light_elevation", 0.01, 89.9, false, "deg", byDefault,
+          "sun angle above the ground; toward 0 the light grazes the floor (shadow acne, peter-panning)"};
+}
+ParamSpec offsetScaleParam() {
+  return {"offset_scale", 0, 1000, false, "", "1",
+          "multiplier on the shadow pass's polygon offset (factor 2, units 4); 0 = none (acne)"};
+}
+
+}  // namespace
+
+std::vector<ParamSpec> sceneParams(const std::string& scene) {
+  if (scene == "shadow")   // light_dir = normalize(cos, 1.4, sin): atan(1.4) above the ground
+    return {timeParam(), sizeParam(), lightElevationParam("54.46"), offsetScaleParam(), nearParam(), worldOffsetParam()};
+  if (scene == "deferred")   // normalize(0.6 cos, 1.05, 0.6 sin): atan(1.05 / 0.6)
+    return {timeParam(), sizeParam(), lightElevationParam("60.26"), offsetScaleParam(), nearParam(), worldOffsetParam()};
+  if (scene == "hdr")
+    return {timeParam(), sizeParam(),
+            {"instances", 1, 200000, true, "", "1000", "cubes in the swarm: many small triangles, deep overdraw"},
+            {"intensity", 0, 1e10, false, "", "1",
+             "scale on every cube's colour; past about 65504 the half-float scene target overflows to inf"},
+            nearParam(), worldOffsetParam()};
+  return {};
+}
+
+const ParamSpec& findParam(const std::string& scene, const std::string& name) {
+  static thread_local std::vector<ParamSpec> specs;
+  specs = sceneParams(scene);
+  for (const ParamSpec& spec : specs)
+    if (spec.name == name) return spec;
+  std::string known;
+  for (const ParamSpec& spec : specs) known += (known.empty() ? "" : ", ") + spec.name;
+  throw ParamError("unknown parameter '" + name + "' of scene " + scene + " (its parameters: " + known + ")");
+}
+
+bool parseSizeValue(const std::string& text, int& width, int& height) {
+  auto whole = [](const std::string& s, int& out) {
+    const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), out);
+    return !s.empty() && error == std::errc() && end == s.data() + s.size() && out >= 1 && out <= 16384;
+  };
+  const size_t x = text.find('x');
+  if (x == std::string::npos) {
+    if (!whole(text, width)) return false;
+    height = std::max(1, int(std::lround(double(width) * 3.0 / 4.0)));
+    return true;
+  }
+  return whole(text.substr(0, x), width) && whole(text.substr(x + 1), height);
+}
+
+double parseParamValue(const std::string& scene, const std::string& name, const std::string& value) {
+  const ParamSpec& spec = findParam(scene, name);
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !std::isfinite(v))
+    throw ParamError(name + ": '" + value + "' is not a finite number");
+  if (spec.integer && v != std::floor(v)) throw ParamError(name + ": '" + value + "' is not a whole number");
+  if (v < spec.min || v > spec.max) {
+    char range[96];
+    std::snprintf(range, sizeof range, "%g..%g", spec.min, spec.max);
+    throw ParamError(name + ": " + value + " is out of range (" + range + ")");
+  }
+  return v;
+}
+
+glm::vec3 lightAtElevation(float yaw, float elevationDegrees) {
+  const float e = elevationDegrees * float(M_PI / 180.0);
+  return {std::cos(yaw) * std::cos(e), std::sin(e), std::sin(yaw) * std::cos(e)};
+}
+
+void applyParam(SceneParams& params, const std::string& name, double value) {
+  const float v = float(value);
+  if (name == "light_elevation") params.lightElevation = v;
+  else if (name == "offset_scale") params.offsetScale = v;
+  else if (name == "near") params.nearPlane = v;
+  else if (name == "world_offset") params.worldOffset = v;
+  else if (name == "intensity") params.intensity = v;
+  else throw ParamError("parameter '" + name + "' is not a scene setting");
+}
+
+}  // namespace scenes

@@ -1,0 +1,62 @@
+// The scalar parameters a scene declares for its failure modes, settable on every command
+// with `--set NAME=VALUE` (so one point of a sweep can be rendered again with `render` or
+// `compare`), and listed by `raster params SCENE`.
+//
+// Each parameter moves one thing toward where some method breaks: float precision of time,
+// depth precision of the near plane, shadow acne at grazing light, half-float overflow,
+// coordinates far from the origin, huge and tiny images. A scene declares only the ones its
+// failure modes need. Unset parameters leave the scene exactly as its seed renders it (the
+// same bytes as before parameters existed).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace scenes {
+
+// What --set changes inside a scene; every field unset (or neutral) by default.
+struct SceneParams {
+  std::optional<float> lightElevation;   // degrees above the ground plane (shadow, deferred)
+  std::optional<float> offsetScale;      // multiplier on the shadow pass's polygon offset
+  std::optional<float> nearPlane;        // the camera's near plane, world units
+  std::optional<float> worldOffset;      // scene and camera moved by (d, d, d)
+  std::optional<float> intensity;        // scale on every cube's colour (hdr)
+};
+
+struct ParamSpec {
+  std::string name;      // as typed after --set
+  double min, max;       // the accepted range, inclusive
+  bool integer;          // whole numbers only
+  std::string unit;      // "s", "deg", "px", "" ...
+  std::string byDefault; // the scene's own value, as text
+  std::string meaning;   // one line: what it moves and toward which failure
+};
+
+// A --set that names no parameter of the scene, or a value out of its range (exit 2).
+struct ParamError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// The parameters of a scene, in the order `raster params` lists them. `time`, `size` and
+// `instances` are the frame's own options; the others land in SceneParams.
+std::vector<ParamSpec> sceneParams(const std::string& scene);
+const ParamSpec& findParam(const std::string& scene, const std::string& name);   // ParamError
+
+// Parses and range-checks VALUE for parameter `name` of `scene` (ParamError naming both).
+// `size` is not a number: see parseSizeValue.
+double parseParamValue(const std::string& scene, const std::string& name, const std::string& value);
+// `size` as WxH, or a width (the height then keeps the scene's 4:3 aspect, at least 1).
+bool parseSizeValue(const std::string& text, int& width, int& height);
+
+// The unit direction toward a sun at `yaw` radians around the y axis and `elevationDegrees`
+// above the ground: the form light_elevation gives the scenes' orbiting suns.
+glm::vec3 lightAtElevation(float yaw, float elevationDegrees);
+
+// Sets a SceneParams field (not time, size or instances).
+void applyParam(SceneParams& params, const std::string& name, double value);
+
+}  // namespace scenes

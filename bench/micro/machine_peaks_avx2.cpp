@@ -7,8 +7,9 @@
 //   peak/fma512/chains:12   the same in 512-bit registers, where the build has AVX-512
 // Gathers read a working set of KIB KiB (16 KiB .. 256 MiB in steps of 2, so every texture
 // size has its point; 2 MiB pages, as textures get them: util/huge_pages.h) at random
-// indices from a vector xorshift, four independent streams, so the rate is the memory system's with as many misses in flight as the core
-// allows: what a lookup's fetch sees when its addresses do not depend on earlier loads.
+// indices from a vector xorshift, four independent streams, so the rate is the memory
+// system's with as many misses in flight as the core allows: what a lookup's fetch sees
+// when its addresses do not depend on earlier loads.
 // Items are elements gathered (gather) or FMA instructions (fma); flops counts 2 per lane.
 #include "raster/simd/isa.h"
 #if RASTER_AVX2

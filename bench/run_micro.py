@@ -39,6 +39,9 @@ def run(binary, out, args):
     """Runs the binary with JSON output into `out` (atomically); returns the parsed JSON."""
     if not os.path.isfile(binary) or not os.access(binary, os.X_OK):
         fail(f"{binary}: no such executable (build it: cmake --build build --target raster_micro)", 2)
+    folder = os.path.dirname(os.path.abspath(out))
+    if not os.path.isdir(folder):
+        fail(f"{out}: its folder {folder} does not exist", 2)
     partial = out + ".partial"
     cmd = [binary, "--benchmark_format=console", "--benchmark_out_format=json", f"--benchmark_out={partial}",
            f"--benchmark_min_time={args.min_time}", "--benchmark_counters_tabular=false"]

@@ -7,6 +7,8 @@
 // machines the ratio is the figure to quote, not the absolute times.
 #include "apps/bench.h"
 
+#include "apps/progress.h"
+
 #include "compare/output_file.h"
 
 #include <algorithm>
@@ -150,6 +152,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
   addMethodOptions(*command, args.preset, args.method);
   addSetOption(*command, args.sets);
+  addQuietOption(*command, args.quiet);
   command->add_flag("--no-pin", args.noPin,
                     "Do not pin the process to --threads cores (by default both backends share the same N cores)");
   command->add_flag("--passes", args.passes,
@@ -194,16 +197,20 @@ int runBench(const BenchArgs& args) {
   const char* builtFor = "plain C++ lanes";
 #endif
   const std::string onCores = cores > 0 ? ", on " + std::to_string(cores) + (cores == 1 ? " core" : " cores") : "";
-  std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d%s: %d warm-up + %d timed frames each (raster built for %s, methods %s)\n",
+  if (!frame.quiet)
+    std::fprintf(stderr, "bench %s %dx%d t=%.3f threads=%d%s: %d warm-up + %d timed frames each (raster built for %s, methods %s)\n",
                frame.scene.c_str(), frame.width, frame.height, frame.time, threads, onCores.c_str(), args.warmup,
                args.frames, builtFor, raster::methodLabel(frame.methods).c_str());
   for (int i = 0; i < args.warmup; ++i)
     for (Contender& c : contenders) renderOnce(c, frame.time);
   // The timed frames run without the stage timers: reading the cycle counter per lane group
   // costs this pipeline time that llvmpipe does not pay.
-  for (int i = 0; i < args.frames; ++i) {
-    for (Contender& c : contenders) c.timed.ms.push_back(renderOnce(c, frame.time));
-    if ((i + 1) % 10 == 0 || i + 1 == args.frames) std::fprintf(stderr, "  %d/%d frames\n", i + 1, args.frames);
+  {
+    Progress progress("  frames", args.frames, frame.quiet);
+    for (int i = 0; i < args.frames; ++i) {
+      for (Contender& c : contenders) c.timed.ms.push_back(renderOnce(c, frame.time));
+      progress.update(i + 1, "");
+    }
   }
 
   // The breakdown comes from a few more frames of this pipeline alone, timers on.

@@ -43,6 +43,7 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
       ->type_name("DIR");
   addMethodOptions(command, args.preset, args.method);
   addSetOption(command, args.sets);
+  addQuietOption(command, args.quiet);
 }
 
 // A non-negative decimal integer that fits in uint64_t.
@@ -84,6 +85,10 @@ void addSetOption(CLI::App& command, std::vector<std::string>& sets) {
   command.add_option("--set", sets,
                      "Set a scene parameter (repeatable; `raster params SCENE` lists them), e.g. --set near=0.001")
       ->type_name("NAME=VALUE")->take_all()->allow_extra_args(false);
+}
+
+void addQuietOption(CLI::App& command, bool& quiet) {
+  command.add_flag("--quiet", quiet, "No progress or announcements on stderr (errors still go there)");
 }
 
 scenes::SceneOptions sceneOptions(const Frame& frame) {
@@ -206,6 +211,7 @@ Frame validateFrame(const FrameArgs& args) {
     }
   }
   frame.sets = args.sets;
+  frame.quiet = args.quiet;
 
   if (!args.maxMemory.empty()) {
     uint64_t bytes = 0;

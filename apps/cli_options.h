@@ -38,6 +38,7 @@ struct FrameArgs {
   std::string preset = "gl";   // this pipeline's method set (raster/methods.h)
   std::string method;          // STEP=NAME[,STEP=NAME]: overrides of the preset's steps
   std::vector<std::string> sets;   // --set NAME=VALUE, in order (scenes/scene_params.h)
+  bool quiet = false;          // no progress or announcements on stderr
 };
 
 struct RenderArgs : FrameArgs {
@@ -65,6 +66,7 @@ struct Frame {
   raster::MethodSet methods;   // --preset with --method applied
   scenes::SceneParams params;  // --set, beyond time, size and instances
   std::vector<std::string> sets;   // the --set texts, for a child process to get the same frame
+  bool quiet = false;
 };
 
 // The scene options of a validated frame.
@@ -90,6 +92,8 @@ Thresholds validateThresholds(const CompareArgs& args);
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides);
 // Adds --set NAME=VALUE (repeatable) to a command.
 void addSetOption(CLI::App& command, std::vector<std::string>& sets);
+// Adds --quiet (no progress on stderr) to a command.
+void addQuietOption(CLI::App& command, bool& quiet);
 // Adds --preset and --method to a command.
 void addMethodOptions(CLI::App& command, std::string& preset, std::string& method);
 

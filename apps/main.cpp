@@ -5,6 +5,8 @@
 //                             stats line and ours / gl / heat-map PNGs; optional thresholds;
 //   raster bench SCENE ...    frame times of this pipeline and a GL driver (bench.h);
 //   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
+//   raster sweep SCENE ...    one parameter moved toward failure, every side scored (sweep.h);
+//   raster sweep-merge DIR... the shards of a sweep joined into one;
 //   raster methods, scenes    the methods of each step and the presets; the scene names;
 //   raster params SCENE       the scene's parameters, set with --set NAME=VALUE.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
@@ -28,6 +30,7 @@
 
 #include "apps/bench.h"
 #include "apps/sides.h"
+#include "apps/sweep.h"
 #include "apps/tradeoff.h"
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
@@ -211,7 +214,11 @@ int main(int argc, char** argv) {
   params->add_flag("--json", paramsJson, "As JSON");
   cli::TradeoffArgs tradeoffArgs;
   CLI::App* tradeoff = cli::addTradeoffCommand(app, tradeoffArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, methods, params, scenes).");
+  cli::SweepArgs sweepArgs;
+  CLI::App* sweep = cli::addSweepCommand(app, sweepArgs);
+  cli::SweepMergeArgs sweepMergeArgs;
+  CLI::App* sweepMerge = cli::addSweepMergeCommand(app, sweepMergeArgs);
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, methods, params, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -232,6 +239,8 @@ int main(int argc, char** argv) {
     if (params->parsed()) return listParams(paramsScene, paramsJson);
     if (bench->parsed()) return cli::runBench(benchArgs);
     if (tradeoff->parsed()) return cli::runTradeoff(tradeoffArgs);
+    if (sweep->parsed()) return cli::runSweep(sweepArgs);
+    if (sweepMerge->parsed()) return cli::runSweepMerge(sweepMergeArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

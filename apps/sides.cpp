@@ -49,7 +49,8 @@ Side renderInProcess(const Frame& frame, const std::string& backendKind, bool fi
   }
   const std::string methodNote = backendKind == "raster" && !(frame.methods == raster::MethodSet{})
                                      ? " (methods: " + raster::methodLabel(frame.methods) + ")" : "";
-  std::cerr << "rendering " << frame.scene << " with " << backend->name() << methodNote << " at "
+  if (!frame.quiet)
+    std::cerr << "rendering " << frame.scene << " with " << backend->name() << methodNote << " at "
             << sizeAndTime(frame) << " ..." << std::endl;
   backend->resizeDefaultFramebuffer(frame.width, frame.height);
   scene->setup(*backend);
@@ -143,9 +144,11 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
   args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
   for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
+  if (frame.quiet) args.push_back("--quiet");
 
   // Run it with stdout (its "wrote" lines) silenced; its progress and errors go to stderr.
-  std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."
+  if (!frame.quiet)
+    std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."
             << std::endl;
   args[0] = "/proc/self/exe";
   ChildOptions options;

@@ -20,6 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
+#include "apps/charts.h"
+#include "apps/progress.h"
 #include "apps/child_process.h"
 #include "apps/sides.h"
 #include "compare/metrics.h"
@@ -182,14 +184,13 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
     if (timed) gl.ms.push_back(ms);
   };
   for (int i = 0; i < args.warmup; ++i) round(false);
-  // Progress: one line rewritten in place on a terminal, a line per round otherwise.
-  const bool terminal = isatty(STDERR_FILENO);
-  for (int i = 0; i < args.frames; ++i) {
-    round(true);
-    std::cerr << (terminal ? "\r" : "") << "  round " << (i + 1) << "/" << args.frames << (terminal ? "" : "\n")
-              << std::flush;
+  {
+    Progress progress("  " + frame.scene + " rounds", args.frames, frame.quiet);
+    for (int i = 0; i < args.frames; ++i) {
+      round(true);
+      progress.update(i + 1, "");
+    }
   }
-  if (terminal) std::cerr << std::endl;
 
   // The final images, one more frame each (the timed frames were not read back).
   for (Point& p : points) {
@@ -254,46 +255,6 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
   return result;
 }
 
-// The chart is drawn by bench/tradeoff_chart.py with Debian's matplotlib: the script is
-// found in the source tree this binary was built from (or $RASTER_SOURCE_DIR), the Python
-// is $RASTER_PYTHON, else Debian's /usr/bin/python3 (a python3 earlier in PATH, such as a
-// pyenv shim, may lack the Debian packages), else python3 from PATH.
-std::string chartScript() {
-  const char* sourceDir = std::getenv("RASTER_SOURCE_DIR");
-  return (fs::path(sourceDir ? sourceDir : RASTER_SOURCE_DIR) / "bench" / "tradeoff_chart.py").string();
-}
-std::string python() {
-  if (const char* chosen = std::getenv("RASTER_PYTHON"); chosen && *chosen) return chosen;
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
-// Runs python with `args`, its stdout silenced; returns its exit status (-1: it did not run).
-int runPython(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {python()};
-  argv.insert(argv.end(), args.begin(), args.end());
-  ChildOptions options;
-  options.searchPath = true;
-  try {
-    return runChildProcess(argv, python(), options);
-  } catch (const std::runtime_error&) {
-    return -1;
-  }
-}
-
-// Before any frame: the chart's tools are there (so a long run does not end without it).
-void checkChartTools() {
-  if (!fs::exists(chartScript())) throw std::runtime_error("the chart script is missing: " + chartScript());
-  if (runPython({"-c", "import matplotlib"}) != 0)
-    throw std::runtime_error(python() + " cannot import matplotlib, which draws the chart "
-                             "(Debian: python3-matplotlib, which ./setup.sh installs; or set RASTER_PYTHON)");
-}
-
-void drawChart(const std::string& jsonPath, const std::string& outFolder) {
-  const std::string out = (fs::path(outFolder) / "tradeoff").string();
-  if (runPython({chartScript(), jsonPath, "--out", out}) != 0)
-    throw std::runtime_error("the chart script failed: " + python() + " " + chartScript() + " " + jsonPath);
-}
-
 }  // namespace
 
 CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args) {
@@ -318,6 +279,7 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args) {
       ->type_name("SIZE");
   command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
   addSetOption(*command, args.sets);
+  addQuietOption(*command, args.quiet);
   return command;
 }
 
@@ -336,7 +298,7 @@ int runTradeoff(const TradeoffArgs& args) {
   if (args.warmup < 0 || args.warmup > 100) throw UsageError("--warmup: out of range (0..100)");
   if (args.softpipeFrames < 1 || args.softpipeFrames > 100) throw UsageError("--softpipe-frames: out of range (1..100)");
   checkOutputFolder("--out", args.out);
-  checkChartTools();
+  checkChartTools("tradeoff_chart.py");
   fs::create_directories(args.out);
 
   const int threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -357,7 +319,7 @@ int runTradeoff(const TradeoffArgs& args) {
   const std::string jsonPath = (fs::path(args.out) / "tradeoff.json").string();
   compare::writeOutputFile(jsonPath, (results.size() == 1 ? results[0] : results).dump(2) + "\n");
   compare::writeOutputFile((fs::path(args.out) / "tradeoff.md").string(), markdown);
-  drawChart(jsonPath, args.out);
+  drawChart("tradeoff_chart.py", jsonPath, (fs::path(args.out) / "tradeoff").string());
   std::cout << markdown;
   for (const char* file : {"tradeoff.json", "tradeoff.md", "tradeoff.png", "tradeoff.svg"})
     std::cout << "wrote " << (fs::path(args.out) / file).string() << "\n";

@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Error against a scene parameter, from `raster sweep`'s sweep.json.
+
+x: the swept parameter (log scale when the sweep was); y: PSNR of the final image against
+llvmpipe (dB). One line per side (each method set, and softpipe: GL against GL); points
+identical to llvmpipe have no PSNR (it is infinite) and are drawn on a marked ceiling above
+the highest finite value. The failure threshold is a dashed line; each side's first failing
+value is marked with a red X (a final image below the threshold, or a non-finite pixel); a
+value where llvmpipe itself holds non-finite pixels gets a grey band, since there GL is
+broken too.
+
+Usage: sweep_chart.py SWEEP.json --out PREFIX
+writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+STYLE = {"softpipe": dict(color="#d62728", linestyle="--", marker="D")}
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            sweep = json.load(f)
+        sweep["points"], sweep["param"], sweep["scene"]  # noqa: B018 (the fields the chart needs)
+        return sweep
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        sys.exit(f"sweep_chart.py: {path}: not a sweep.json ({e})")
+
+
+def draw(sweep):
+    points = sweep["points"]
+    sides = [p["method"] for p in points if p["value_index"] == points[0]["value_index"]] if points else []
+    finite = [p["psnr_vs_llvmpipe_db"] for p in points if p["psnr_vs_llvmpipe_db"] is not None]
+    ceiling = max(finite + [sweep["threshold_db"]]) + 10 if finite else sweep["threshold_db"] + 20
+    fig, ax = plt.subplots(figsize=(8.5, 5))
+    for side in sides:
+        if side == "llvmpipe":
+            continue
+        mine = [p for p in points if p["method"] == side]
+        xs = [p["value"] for p in mine]
+        ys = [ceiling if p["psnr_vs_llvmpipe_db"] is None else p["psnr_vs_llvmpipe_db"] for p in mine]
+        style = STYLE.get(side, dict(marker="o"))
+        ax.plot(xs, ys, label=side, markersize=4, linewidth=1.4, **style)
+        first = next((p for p in mine if p["fails"]), None)
+        if first is not None:
+            y = ceiling if first["psnr_vs_llvmpipe_db"] is None else first["psnr_vs_llvmpipe_db"]
+            ax.plot([first["value"]], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
+            ax.annotate(f"{side} fails\n{first['value']:.4g}", (first["value"], y), textcoords="offset points",
+                        xytext=(6, -24), fontsize=8, color="red")
+    for p in points:
+        if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
+            ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
+    ax.axhline(sweep["threshold_db"], color="black", linestyle=":", linewidth=1)
+    ax.text(0.01, sweep["threshold_db"], f" fails below {sweep['threshold_db']:g} dB", transform=ax.get_yaxis_transform(),
+            va="bottom", fontsize=8)
+    ax.axhline(ceiling, color="#999999", linewidth=0.8)
+    ax.text(0.01, ceiling, " identical to llvmpipe", transform=ax.get_yaxis_transform(), va="bottom", fontsize=8,
+            color="#555555")
+    if sweep["range"]["log"]:
+        ax.set_xscale("log")
+    ax.set_ylim(bottom=0, top=ceiling + 8)
+    ax.set_xlabel(sweep["param"])
+    ax.set_ylabel("final image PSNR against llvmpipe (dB)")
+    w, h = sweep["size"]
+    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {w}x{h}, t={sweep['time']:g}"
+                 + (" (grey: llvmpipe has non-finite pixels)" if any(
+                     p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0 for p in points) else ""), fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="lower left")
+    fig.tight_layout()
+    return fig
+
+
+def save(fig, path):
+    tmp = f"{path}.tmp-{os.getpid()}{os.path.splitext(path)[1]}"
+    try:
+        fig.savefig(tmp, dpi=130)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("sweep")
+    parser.add_argument("--out", required=True, help="PREFIX: writes PREFIX.png and PREFIX.svg")
+    args = parser.parse_args()
+    fig = draw(load(args.sweep))
+    for ext in ("png", "svg"):
+        save(fig, f"{args.out}.{ext}")
+
+
+if __name__ == "__main__":
+    main()

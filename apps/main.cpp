@@ -5,6 +5,7 @@
 //                             stats line and ours / gl / heat-map PNGs; optional thresholds;
 //   raster bench SCENE ...    frame times of this pipeline and a GL driver (bench.h);
 //   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
+//   raster soup --seeds A:B   random triangle soups, this pipeline against llvmpipe (soup.h);
 //   raster methods, scenes    the methods of each step and the presets; the scene names.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
 // A side of a comparison is rendered by sides.h: softpipe in a child process, because Mesa
@@ -24,6 +25,7 @@
 
 #include "apps/bench.h"
 #include "apps/sides.h"
+#include "apps/soup.h"
 #include "apps/tradeoff.h"
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
@@ -177,7 +179,9 @@ int main(int argc, char** argv) {
   CLI::App* methods = app.add_subcommand("methods", "List the methods of each pipeline step, and the presets");
   cli::TradeoffArgs tradeoffArgs;
   CLI::App* tradeoff = cli::addTradeoffCommand(app, tradeoffArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, methods, scenes).");
+  cli::SoupArgs soupArgs;
+  CLI::App* soup = cli::addSoupCommand(app, soupArgs);
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, soup, methods, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -197,6 +201,7 @@ int main(int argc, char** argv) {
     if (methods->parsed()) return listMethods();
     if (bench->parsed()) return cli::runBench(benchArgs);
     if (tradeoff->parsed()) return cli::runTradeoff(tradeoffArgs);
+    if (soup->parsed()) return cli::runSoup(soupArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

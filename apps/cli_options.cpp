@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <system_error>
+#include <tuple>
 
 #include "scenes/memory_budget.h"
 #include "scenes/scene.h"
@@ -153,17 +154,7 @@ Frame validateFrame(const FrameArgs& args) {
   }
   frame.scene = args.scene;
 
-  // --size: WxH, each side 1..kMaxSide.
-  const size_t x = args.size.find('x');
-  const auto width = parseUnsigned(args.size.substr(0, x));
-  const auto height = x == std::string::npos ? std::nullopt : parseUnsigned(args.size.substr(x + 1));
-  if (!width || !height)
-    throw UsageError("--size: '" + args.size + "' is not WxH (e.g. 640x480)");
-  if (*width < 1 || *height < 1 || *width > kMaxSide || *height > kMaxSide)
-    throw UsageError("--size: " + args.size + " is out of range (each side 1.." +
-                     std::to_string(kMaxSide) + ")");
-  frame.width = int(*width);
-  frame.height = int(*height);
+  std::tie(frame.width, frame.height) = parseSize("--size", args.size);
 
   // --time: finite, not negative, and still finite as a float.
   const double time = parseNumber("--time", args.time);
@@ -221,6 +212,19 @@ Frame validateFrame(const FrameArgs& args) {
   }
   return frame;
 }
+
+std::pair<int, int> parseSize(const std::string& option, const std::string& text) {
+  const size_t x = text.find('x');
+  const auto width = parseUnsigned(text.substr(0, x));
+  const auto height = x == std::string::npos ? std::nullopt : parseUnsigned(text.substr(x + 1));
+  if (!width || !height)
+    throw UsageError(option + ": '" + text + "' is not WxH (e.g. 640x480)");
+  if (*width < 1 || *height < 1 || *width > kMaxSide || *height > kMaxSide)
+    throw UsageError(option + ": " + text + " is out of range (each side 1.." + std::to_string(kMaxSide) + ")");
+  return {int(*width), int(*height)};
+}
+
+std::optional<uint64_t> parseWholeNumber(const std::string& text) { return parseUnsigned(text); }
 
 Thresholds validateThresholds(const CompareArgs& args) {
   Thresholds limits;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -87,6 +88,11 @@ CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
 // allocates nothing before this).
 Frame validateFrame(const FrameArgs& args);
 Thresholds validateThresholds(const CompareArgs& args);
+
+// WxH with each side 1..16384; UsageError naming the option otherwise.
+std::pair<int, int> parseSize(const std::string& option, const std::string& text);
+// A non-negative decimal integer, the whole text, that fits in 64 bits; nullopt otherwise.
+std::optional<uint64_t> parseWholeNumber(const std::string& text);
 
 // The method set of --preset and --method; UsageError naming the valid names otherwise.
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides);

@@ -2,7 +2,7 @@
 // early, as llvmpipe's is (lp_state_fs.c): no shader writes gl_FragDepth or discards, so a
 // fragment's depth is known before shading and a failed lane is never shaded.
 //
-// Per lane: window z (plane + polygon offset) clamped to [0, 1] (NaN -> 0), quantized to
+// Per lane: window z (plane + polygon offset, at most 1: NaN -> 1) clamped to [0, 1], quantized to
 // the depth buffer's code (format.h, as llvmpipe rounds), compared with the stored code
 // (LESS or LEQUAL on integers) and written where it passes and depth writes are on.
 //
@@ -21,7 +21,8 @@
 
 namespace raster {
 
-// z clamped for the test: max first, so NaN becomes 0 (maxps returns its second operand).
+// z clamped for the test: max first, as lp_build_clamp does (a NaN would become 0: maxps
+// returns its second operand; fragmentDepth has already made it 1).
 template <class F>
 F clampDepth(F z) {
   return simd::min(simd::max(z, F(0.0f)), F(1.0f));

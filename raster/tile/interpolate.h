@@ -4,7 +4,7 @@
 // fma(dady, y, fma(dadx, x, a0)), planes referenced to pixel (0, 0)'s centre, so lanes at
 // small integer pixel coordinates are exact; varyings are perspective-correct through an
 // exact 1/w, w itself interpolated from the 1/w plane; window z is the z plane plus the
-// polygon offset (clamped only for the depth test).
+// polygon offset, at most 1 (clamped to [0, 1] only for the depth test).
 #pragma once
 
 #include <cstddef>
@@ -21,10 +21,13 @@ F evaluatePlane(const Plane& p, F px, F py) {
   return simd::fma(F(p.dady), py, simd::fma(F(p.dadx), px, F(p.a0)));
 }
 
-// A fragment's window z: the z plane plus the polygon offset.
+// A fragment's window z: the z plane plus the polygon offset, then min(z, 1) as
+// lp_bld_interp.c takes it with depth clamping off (GL's default): minps returns its second
+// operand on NaN, so a NaN z (the planes of a triangle whose float area is 0 although its
+// snapped area is not) is 1.0 for the depth test and gl_FragCoord, not 0.
 template <class F>
 F fragmentDepth(const SetupTriangle& tri, F px, F py) {
-  return evaluatePlane(tri.z, px, py) + F(tri.depthOffset);
+  return simd::min(evaluatePlane(tri.z, px, py) + F(tri.depthOffset), F(1.0f));
 }
 
 // Fragment inputs of lanes at pixels (px, py) with window z: perspective-correct varyings

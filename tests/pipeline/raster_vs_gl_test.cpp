@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <sstream>
 #include <string>
@@ -480,6 +481,46 @@ TEST_SUITE("raster_vs_gl") {
           CHECK(both.raster.color->rgba8 == both.gl.color->rgba8);
         }
       }
+    }
+  }
+
+  TEST_CASE("(h) a NaN window z is 1 for the depth test, as llvmpipe's min(z, 1) makes it") {
+    // Found by `raster soup` (seed 71 at 64x64): a collinear triangle with its third vertex
+    // outside the viewport and beyond the far plane. Clipping bends it by an ulp, so its
+    // snapped area is not 0 but its float area is: the planes are NaN. llvmpipe takes
+    // min(z, 1) in interpolation (lp_bld_interp.c), so the NaN is 1.0: LESS fails against a
+    // clear of 1.0, LEQUAL passes and writes 1.0. A NaN made 0 would pass both and write 0.
+    auto fromBits = [](uint32_t bits) {
+      float f;
+      std::memcpy(&f, &bits, sizeof f);
+      return f;
+    };
+    const uint32_t clip[3][4] = {{0xbe880000, 0xbef00000, 0x3eee7823, 0x3f800000},
+                                 {0x3f5c0000, 0x3ea00000, 0xbea01d63, 0x3f800000},
+                                 {0xbfb20000, 0xbfa00000, 0x3f9f436a, 0x3f800000}};
+    std::vector<Vertex> vertices;
+    for (const auto& v : clip)
+      vertices.push_back({{fromBits(v[0]), fromBits(v[1]), fromBits(v[2]), fromBits(v[3])}, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)});
+    BackendPair backends;
+    const TargetDesc target{64, 64, TexelFormat::RGBA8, TexelFormat::Depth24};
+    ClearOp clear = clearAll();
+    clear.colorValue = glm::vec4(1.0f);   // the fragment's NaN colour writes 0, so it shows
+    for (const scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
+      DrawCall draw;
+      draw.mesh = makeMesh(vertices);
+      draw.state.depthFunc = func;
+      const BothRendered both = renderBoth(backends, target, {draw}, clear);
+      const char* funcName = func == scenes::DepthFunc::Less ? "LESS" : "LEQUAL";
+      INFO(funcName);
+      const uint8_t white[4] = {255, 255, 255, 255};
+      const Rgba8Comparison color = compareRgba8(*both.raster.color, *both.gl.color, white);
+      const DepthComparison depth = compareDepth(*both.raster.depth, *both.gl.depth);
+      CAPTURE(color.firstCoverageDiff);
+      CAPTURE(depth.firstDiff);
+      CHECK(color.coverageDiffs == 0);
+      CHECK(depth.diffs == 0);
+      CHECK(color.coveredB == (func == scenes::DepthFunc::Less ? 0 : 1));   // the pixel the sliver covers
+      CHECK(std::count(both.raster.depth->depth.begin(), both.raster.depth->depth.end(), 0xFFFFFFu) == 64 * 64);
     }
   }
 }

@@ -10,6 +10,7 @@ packages=(
   libglm-dev libstb-dev libtinyobjloader-dev libtbb-dev doctest-dev libcli11-dev nlohmann-json3-dev libssl-dev
   libosmesa6-dev mesa-common-dev libgl-dev
   python3-matplotlib
+  python3-distributed        # bench/dask_sweep.py: sweeps sharded on a Dask cluster
   libbenchmark-dev           # bench/micro: the microbenchmarks (raster_micro)
   clang libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang (tests/configs/fuzz.sh)
 )

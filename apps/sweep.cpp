@@ -324,6 +324,8 @@ CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
   command->add_option("--shard", args.shard, "Render only shard K of N (values i with i % N == K - 1); sweep-merge joins them")
       ->type_name("K/N");
   command->add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
+  command->add_flag("--check", args.check,
+                    "Check every option and value (exit 2 on bad input), render nothing: for a cluster runner");
   command->add_option("--out", args.out, "Folder for sweep.json, sweep.md, sweep.png, sweep.svg")->required()->type_name("DIR");
   command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
   command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")->type_name("SIZE");
@@ -358,6 +360,11 @@ int runSweep(const SweepArgs& args) {
   }
   checkOutputFolder("--out", args.out);
   if (!shard.sharded) checkChartTools(kChartScript);
+  if (args.check) {
+    std::cout << "sweep " << base.scene << " " << range.name << ": " << values.size() << " values x "
+              << (1 + methods.size() + (args.noSoftpipe ? 0 : 1)) << " sides; the options are valid\n";
+    return 0;
+  }
   fs::create_directories(args.out);
 
   json sweep = {{"scene", base.scene},

@@ -46,6 +46,7 @@ struct SweepArgs : FrameArgs {
   std::string out;
   std::string threshold = "30";  // dB of the final image against llvmpipe
   bool noSoftpipe = false;
+  bool check = false;            // check every option, render nothing, exit 0
 };
 
 struct SweepMergeArgs {

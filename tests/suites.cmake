@@ -18,3 +18,17 @@ if(benchmark_FOUND)
            "--filter=-:(65536|131072|262144)$")
   set_tests_properties(micro_smoke PROPERTIES TIMEOUT 60)
 endif()
+
+# Debian's Python, which has the Debian packages (matplotlib, distributed); a python3 earlier
+# in PATH, such as a pyenv shim, may not.
+if(EXISTS /usr/bin/python3)
+  set(TEST_PYTHON /usr/bin/python3)
+else()
+  set(TEST_PYTHON python3)
+endif()
+
+# bench/dask_sweep.py on a real 2-worker LocalCluster (python3-distributed), one worker
+# killed under a shard: the merged sweep must equal `raster sweep`'s byte for byte.
+add_test(NAME dask_sweep COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/dask_sweep_test.py $<TARGET_FILE:raster_cli>
+         ${CMAKE_SOURCE_DIR})
+set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""A sweep sharded on a 2-worker Dask LocalCluster equals the single-machine sweep, byte for
+byte, even when a worker dies under a shard (the task is rescheduled); bad input exits 2.
+
+Usage: dask_sweep_test.py RASTER_BINARY SOURCE_DIR
+"""
+import filecmp
+import os
+import subprocess
+import sys
+import tempfile
+
+raster, source = sys.argv[1], sys.argv[2]
+runner = os.path.join(source, "bench", "dask_sweep.py")
+sweep = ["shadow", "--param", "light_elevation=5:80:5"]
+options = ["--size", "96x72", "--methods", "gl,fast", "--threads", "1"]
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message, file=sys.stderr)
+
+
+with tempfile.TemporaryDirectory(prefix="dask-sweep-test-") as tmp:
+    single = os.path.join(tmp, "single")
+    done = subprocess.run([raster, "sweep"] + sweep + options + ["--out", single, "--quiet"], capture_output=True, text=True)
+    check(done.returncode == 0, f"raster sweep exited {done.returncode}: {done.stderr}")
+
+    dask = os.path.join(tmp, "dask")
+    done = subprocess.run([sys.executable, runner] + sweep + ["--shards", "3", "--local-workers", "2", "--out", dask,
+                          "--raster", raster, "--test-kill-worker-on-shard", "2", "--"] + options,
+                          capture_output=True, text=True)
+    check(done.returncode == 0, f"dask_sweep.py exited {done.returncode}: {done.stderr[-3000:]}")
+    check(os.path.exists(os.path.join(dask, ".killed-a-worker")), "the worker of shard 2 was not killed")
+    same = os.path.exists(os.path.join(dask, "sweep.json")) and filecmp.cmp(
+        os.path.join(single, "sweep.json"), os.path.join(dask, "sweep.json"), shallow=False)
+    check(same, "the Dask sweep.json differs from raster sweep's")
+    check(os.path.getsize(os.path.join(dask, "sweep.png")) > 0 if os.path.exists(os.path.join(dask, "sweep.png")) else False,
+          "no merged chart")
+
+    done = subprocess.run([sys.executable, runner, "shadow", "--param", "no_such=1:2:3", "--shards", "2",
+                           "--local-workers", "2", "--out", os.path.join(tmp, "bad"), "--raster", raster],
+                          capture_output=True, text=True)
+    check(done.returncode == 2, f"an unknown parameter exited {done.returncode}, not 2")
+    check("no_such" in done.stderr and "light_elevation" in done.stderr, f"the error does not list the parameters: {done.stderr}")
+    check(not os.path.exists(os.path.join(tmp, "bad", "sweep.json")), "bad input left a sweep.json")
+
+print("dask_sweep_test: " + ("passed" if not failures else f"{len(failures)} failed"))
+sys.exit(1 if failures else 0)

@@ -82,13 +82,17 @@ Range parseRange(const std::string& scene, const std::string& text) {
   return range;
 }
 
-// The values of the range, evenly spaced (or evenly in log), the last exactly TO; whole
-// numbers for whole-number parameters, repeats after rounding dropped.
+// The values of the range, evenly spaced (or evenly in log), rounded to 6 significant digits
+// (1e-05 rather than 1.0000000000000001e-05: a value a user can type back into --set), the
+// last exactly TO; whole numbers for whole-number parameters; repeats after rounding dropped.
 std::vector<double> rangeValues(const Range& range, bool integer) {
   std::vector<double> values;
   for (int i = 0; i < range.steps; ++i) {
     const double f = range.steps == 1 ? 0.0 : double(i) / double(range.steps - 1);
     double v = range.log ? range.from * std::pow(range.to / range.from, f) : range.from + (range.to - range.from) * f;
+    char rounded[32];
+    std::snprintf(rounded, sizeof rounded, "%.6g", v);
+    v = std::strtod(rounded, nullptr);
     if (i == range.steps - 1) v = range.to;
     if (integer) v = std::round(v);
     if (values.empty() || values.back() != v) values.push_back(v);

@@ -1,0 +1,183 @@
+// Scene parameters (`raster params`, --set), `raster sweep` and `raster sweep-merge`.
+//
+// What a user depends on: a --set reaches the scene (and an unset one leaves the seed's
+// bytes), every bad parameter, range or shard is refused before anything is written, a
+// sweep's JSON holds the fields with flags that agree with its numbers, and shards
+// merged in any order give the unsharded run's sweep.json byte for byte.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/apps/cli_test_helpers.h"
+
+namespace {
+
+using namespace cli_test;
+using nlohmann::json;
+
+// A command that must be refused as bad input: exit 2, one "raster: " line that contains
+// `mentions`, and nothing written.
+void expectRefused(const std::string& args, const std::string& mentions = "") {
+  TempFolder temp;
+  const fs::path cwd = temp.path / "cwd";
+  fs::create_directory(cwd);
+  const RunResult result = runCli(cwd, args);
+  INFO("raster " << args << "\nstderr: " << result.err);
+  CHECK(result.status == 2);
+  CHECK(result.err.rfind("raster: ", 0) == 0);
+  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+  CHECK(result.err.find(mentions) != std::string::npos);
+  CHECK(fs::is_empty(cwd));
+}
+
+}  // namespace
+
+TEST_SUITE("sweep") {
+  TEST_CASE("params: every scene lists time and size; --json holds the same names") {
+    TempFolder temp;
+    for (const char* scene : {"shadow", "deferred", "hdr"}) {
+      const RunResult text = runCli(temp.path, std::string("params ") + scene);
+      REQUIRE(text.status == 0);
+      const RunResult asJson = runCli(temp.path, std::string("params ") + scene + " --json");
+      REQUIRE(asJson.status == 0);
+      std::set<std::string> names;
+      for (const json& p : json::parse(asJson.out)) {
+        names.insert(p["name"].get<std::string>());
+        CHECK(text.out.find(p["name"].get<std::string>()) != std::string::npos);
+        CHECK(p["min"].get<double>() <= p["max"].get<double>());
+      }
+      CHECK(names.count("time") == 1);
+      CHECK(names.count("size") == 1);
+      CHECK(names.count("world_offset") == 1);
+    }
+    expectRefused("params no_such_scene", "known scenes");
+  }
+
+  TEST_CASE("--set reaches the scene; unset parameters keep the seed's bytes; size=WxH is --size") {
+    TempFolder temp;
+    REQUIRE(runCli(temp.path, "render shadow --size 80x60 --out plain.png").status == 0);
+    REQUIRE(runCli(temp.path, "render shadow --set size=80x60 --out set.png").status == 0);
+    REQUIRE(runCli(temp.path, "render shadow --size 80x60 --set light_elevation=10 --out low.png").status == 0);
+    REQUIRE(runCli(temp.path, "render shadow --size 80x60 --set offset_scale=1 --out same.png").status == 0);
+    REQUIRE(runCli(temp.path, "render hdr --size 80x60 --out hdr.png").status == 0);
+    REQUIRE(runCli(temp.path, "render hdr --size 80x60 --set intensity=50 --out bright.png").status == 0);
+    CHECK(readText(temp.path / "plain.png") == readText(temp.path / "set.png"));
+    CHECK(readText(temp.path / "plain.png") != readText(temp.path / "low.png"));
+    // offset_scale=1 multiplies the seed's offsets by one: the same frame.
+    CHECK(readText(temp.path / "plain.png") == readText(temp.path / "same.png"));
+    CHECK(readText(temp.path / "hdr.png") != readText(temp.path / "bright.png"));
+  }
+
+  TEST_CASE("bad --set values are refused, naming the scene's parameters or the range") {
+    expectRefused("render shadow --set no_such=1", "light_elevation");
+    expectRefused("render hdr --set light_elevation=10", "intensity");   // not an hdr parameter
+    expectRefused("render shadow --set near=0", "out of range");
+    expectRefused("render shadow --set near", "NAME=VALUE");
+    expectRefused("render hdr --set instances=2.5", "whole number");
+    expectRefused("render shadow --set size=0x5", "size");
+    expectRefused("render shadow --set time=nan", "finite");
+  }
+
+  TEST_CASE("sweep: bad ranges, method lists and shards are refused before anything is written") {
+    expectRefused("sweep shadow --param no_such=1:2:3 --out s", "offset_scale");
+    expectRefused("sweep shadow --param near=1:2 --out s", "NAME=FROM:TO:STEPS");
+    expectRefused("sweep shadow --param near=0.1:0.01:0 --out s", "STEPS");
+    expectRefused("sweep shadow --param near=0.1:0.01:3:cubic --out s", "log");
+    expectRefused("sweep shadow --param world_offset=-1:10:3:log --out s", "log range");
+    expectRefused("sweep shadow --param near=0.1:20:3 --out s", "out of range");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 0/2 --out s", "K = 0");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 3/2 --out s", "outside 1..2");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 1 --out s", "K/N");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --methods gl,nope --out s", "nope");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --methods gl,llvmpipe --out s", "driver");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --set near=1 --out s", "swept");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --out /nonexistent/dir/s", "--out");
+    expectRefused("sweep-merge missing_a missing_b --out m", "missing_a");
+  }
+
+  TEST_CASE("sweep: the JSON's fields, flags that agree with the numbers, and the failure threshold") {
+    TempFolder temp;
+    // A threshold no image can reach: every side not identical to llvmpipe fails.
+    const RunResult run = runCli(temp.path, "sweep hdr --param intensity=1:1e6:3:log --size 64x48 --methods gl,half=rne "
+                                            "--threshold 1000 --out s --quiet");
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    for (const char* file : {"sweep.json", "sweep.md", "sweep.png", "sweep.svg"}) CHECK(fs::file_size(temp.path / "s" / file) > 100);
+    const json sweep = json::parse(readText(temp.path / "s" / "sweep.json"));
+    CHECK(sweep["scene"] == "hdr");
+    CHECK(sweep["param"] == "intensity");
+    CHECK(sweep["size"] == json::array({64, 48}));
+    CHECK(sweep["methods"] == json::array({"gl", "half=rne"}));
+    REQUIRE(sweep["points"].size() == 3 * 4);   // llvmpipe, gl, half=rne, softpipe at each value
+    std::set<double> values;
+    for (const json& p : sweep["points"]) {
+      values.insert(p["value"].get<double>());
+      CHECK(p["identical_to_llvmpipe"].get<bool>() == p["psnr_vs_llvmpipe_db"].is_null());
+      const bool fails = p["fails"].get<bool>();
+      CHECK(fails == !p["failure"].get<std::string>().empty());
+      if (p["method"] == "llvmpipe" || p["method"] == "gl") CHECK(p["identical_to_llvmpipe"].get<bool>());
+      if (!p["identical_to_llvmpipe"].get<bool>()) CHECK(fails);   // below 1000 dB
+      if (p["nonfinite_pixels"].get<uint64_t>() > 0) CHECK(fails);
+    }
+    CHECK(values == std::set<double>{1, 1000, 1e6});
+    // At 1e6 the scene's colours pass the largest half (65504). llvmpipe converts to half
+    // toward zero, which saturates there; round-to-nearest-even overflows to infinity.
+    uint64_t llvmpipeNonFinite = 1, rneNonFinite = 0;
+    for (const json& p : sweep["points"]) {
+      if (p["value"] != 1e6) continue;
+      if (p["method"] == "llvmpipe") llvmpipeNonFinite = p["nonfinite_pixels"].get<uint64_t>();
+      if (p["method"] == "half=rne") rneNonFinite = p["nonfinite_pixels"].get<uint64_t>();
+    }
+    CHECK(llvmpipeNonFinite == 0);
+    CHECK(rneNonFinite > 0);
+    CHECK(sweep["first_failure"]["llvmpipe"].is_null());
+    CHECK(sweep["first_failure"]["gl"].is_null());
+    CHECK(readText(temp.path / "s" / "sweep.svg").find("<svg") != std::string::npos);
+  }
+
+  TEST_CASE("sweep-merge: shards in any order equal the unsharded sweep.json; missing, doubled or foreign shards refused") {
+    TempFolder temp;
+    const std::string sweep = "sweep shadow --param light_elevation=10:70:5 --size 48x36 --methods gl --no-softpipe --quiet";
+    REQUIRE(runCli(temp.path, sweep + " --out whole").status == 0);
+    for (int k = 1; k <= 3; ++k)
+      REQUIRE(runCli(temp.path, sweep + " --shard " + std::to_string(k) + "/3 --out part" + std::to_string(k)).status == 0);
+    // A shard holds only its own values, and no chart or first_failure.
+    const json part2 = json::parse(readText(temp.path / "part2" / "sweep.json"));
+    CHECK(part2["shard"] == "2/3");
+    CHECK(part2["shard_values"] == json::array({1, 4}));
+    CHECK(!part2.contains("first_failure"));
+    CHECK(!fs::exists(temp.path / "part2" / "sweep.png"));
+
+    const RunResult merged = runCli(temp.path, "sweep-merge part3 part1 part2 --out merged");
+    CAPTURE(merged.err);
+    REQUIRE(merged.status == 0);
+    CHECK(readText(temp.path / "merged" / "sweep.json") == readText(temp.path / "whole" / "sweep.json"));
+
+    RunResult refused = runCli(temp.path, "sweep-merge part1 part2 --out m2");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("3/3") != std::string::npos);
+    refused = runCli(temp.path, "sweep-merge part1 part1 part2 part3 --out m2");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("also in") != std::string::npos);
+    REQUIRE(runCli(temp.path, "sweep shadow --param light_elevation=10:70:5 --size 48x36 --methods gl,fast --no-softpipe "
+                              "--quiet --shard 3/3 --out other").status == 0);
+    refused = runCli(temp.path, "sweep-merge part1 part2 other --out m2");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("\"methods\"") != std::string::npos);
+    // A shard that lost a point (an interrupted or edited file) is named, not merged.
+    json cut = json::parse(readText(temp.path / "part1" / "sweep.json"));
+    cut["points"].erase(cut["points"].size() - 1);
+    {
+      std::ofstream out(temp.path / "part1" / "sweep.json");
+      out << cut.dump(2);
+    }
+    refused = runCli(temp.path, "sweep-merge part1 part2 part3 --out m2");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("part1") != std::string::npos);
+    CHECK(!fs::exists(temp.path / "m2"));
+  }
+}

@@ -248,6 +248,13 @@ json firstFailures(const json& sweep) {
   return first;
 }
 
+// A value for people: 6 significant digits, as the values were rounded (rangeValues).
+std::string shown(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
 std::string fixed(double v, int digits) {
   char text[48];
   std::snprintf(text, sizeof text, "%.*f", digits, v);
@@ -258,14 +265,14 @@ std::string markdown(const json& sweep) {
   std::ostringstream md;
   const json& r = sweep.at("range");
   md << "# Sweep of `" << sweep.at("param").get<std::string>() << "` in " << sweep.at("scene").get<std::string>()
-     << "\n\nFrom " << valueText(r.at("from")) << " to " << valueText(r.at("to")) << " in " << r.at("steps")
+     << "\n\nFrom " << shown(r.at("from")) << " to " << shown(r.at("to")) << " in " << r.at("steps")
      << (r.at("log").get<bool>() ? " log" : "") << " steps, " << sweep.at("size")[0] << "x" << sweep.at("size")[1]
-     << ", t=" << valueText(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
-     << valueText(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
+     << ", t=" << shown(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
+     << shown(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";
     for (const auto& [side, value] : sweep.at("first_failure").items())
-      md << "| " << side << " | " << (value.is_null() ? std::string("none") : valueText(value.get<double>())) << " |\n";
+      md << "| " << side << " | " << (value.is_null() ? std::string("none") : shown(value.get<double>())) << " |\n";
     md << "\n";
   }
   md << "| value | side | identical | PSNR (dB) | >1 step | max step | non-finite | worst target (dB) | fails |\n"
@@ -273,7 +280,7 @@ std::string markdown(const json& sweep) {
   for (const json& p : sweep.at("points")) {
     const json& db = p.at("psnr_vs_llvmpipe_db");
     const json& worst = p.at("worst_target");
-    md << "| " << valueText(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
+    md << "| " << shown(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
        << (p.at("identical_to_llvmpipe").get<bool>() ? "yes" : "no") << " | "
        << (db.is_null() ? std::string("-") : fixed(db.get<double>(), 1)) << " | "
        << fixed(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
@@ -302,7 +309,7 @@ void writeSweep(json sweep, const std::string& folder) {
   }
   if (sweep.contains("first_failure"))
     for (const auto& [side, value] : sweep.at("first_failure").items())
-      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + valueText(value.get<double>()))
+      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + shown(value.get<double>()))
                 << "\n";
   for (const std::string& file : written) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
 }

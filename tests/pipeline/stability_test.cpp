@@ -1,0 +1,72 @@
+// The failure points STABILITY.md names, pinned from both sides: each case sweeps two
+// values of a parameter, one where a method still holds and one where it has failed, and
+// checks which side fails where (a final image below 30 dB against llvmpipe, or a
+// non-finite pixel). If a change moves a method's breaking point, one of these says so.
+// They run the built `raster sweep` on small images, so they exercise what a user runs.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/apps/cli_test_helpers.h"
+
+namespace {
+
+using namespace cli_test;
+using nlohmann::json;
+
+json sweep(const std::string& args) {
+  TempFolder temp;
+  const RunResult run = runCli(temp.path, "sweep " + args + " --no-softpipe --quiet --out s");
+  INFO("raster sweep " << args << "\nstderr: " << run.err);
+  REQUIRE(run.status == 0);
+  return json::parse(readText(temp.path / "s" / "sweep.json"));
+}
+
+// The point of `method` at `value`.
+json pointOf(const json& sweep, const std::string& method, double value) {
+  for (const json& p : sweep["points"])
+    if (p["method"] == method && p["value"].get<double>() == value) return p;
+  FAIL("no point of " << method << " at " << value);
+  return {};
+}
+
+}  // namespace
+
+TEST_SUITE("stability") {
+  TEST_CASE("hdr intensity: llvmpipe's truncating half saturates at 65504; round-to-nearest overflows to inf") {
+    const json s = sweep("hdr --param intensity=3162.28:10000:2 --methods gl,half=rne --size 96x72");
+    for (double value : {3162.28, 10000.0}) {
+      CHECK(pointOf(s, "llvmpipe", value)["nonfinite_pixels"] == 0);
+      CHECK(pointOf(s, "gl", value)["identical_to_llvmpipe"] == true);
+    }
+    CHECK(pointOf(s, "half=rne", 3162.28)["fails"] == false);
+    CHECK(pointOf(s, "half=rne", 10000.0)["nonfinite_pixels"].get<uint64_t>() > 0);
+    CHECK(s["first_failure"]["half=rne"] == 10000.0);
+  }
+
+  TEST_CASE("hdr time: past 1e7 s llvmpipe's sin and cos leave their range; libm and fast sin part from them") {
+    const json s = sweep("hdr --param time=1e7:1e8:2 --methods gl,fast,math=libm --size 96x72");
+    for (const char* method : {"fast", "math=libm"}) {
+      CHECK(pointOf(s, method, 1e7)["fails"] == false);
+      CHECK(pointOf(s, method, 1e8)["fails"] == true);
+    }
+    CHECK(pointOf(s, "gl", 1e8)["identical_to_llvmpipe"] == true);
+  }
+
+  TEST_CASE("deferred world_offset: precise's rounding of the half-float G-buffer moves SSAO past 30 dB at 100") {
+    const json s = sweep("deferred --param world_offset=31.6228:100:2 --methods half=rne --size 160x120");
+    CHECK(pointOf(s, "half=rne", 31.6228)["fails"] == false);
+    CHECK(pointOf(s, "half=rne", 100.0)["fails"] == true);
+  }
+
+  TEST_CASE("deferred world_offset: at 1e5 GL itself makes non-finite pixels, and gl makes exactly as many") {
+    const json s = sweep("deferred --param world_offset=31622.8:100000:2 --methods gl --size 320x240");
+    CHECK(pointOf(s, "llvmpipe", 31622.8)["nonfinite_pixels"] == 0);
+    CHECK(pointOf(s, "gl", 31622.8)["nonfinite_pixels"] == 0);
+    const uint64_t broken = pointOf(s, "llvmpipe", 100000.0)["nonfinite_pixels"].get<uint64_t>();
+    CHECK(broken > 0);
+    CHECK(pointOf(s, "gl", 100000.0)["nonfinite_pixels"].get<uint64_t>() == broken);
+  }
+}

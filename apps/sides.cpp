@@ -59,8 +59,7 @@ Side renderInProcess(const Frame& frame, const std::string& backendKind, bool fi
 // Writes every target as NAME.png (+ NAME.exr for depth / float) and the manifest, and
 // says so on stdout, a line per file.
 void dumpTargets(const std::string& folder, const std::vector<Target>& targets) {
-  for (const std::string& path : compare::writeTargetDump(folder, targets))
-    std::cout << "wrote " << path << std::endl;
+  compare::writeTargetDump(folder, targets, [](const std::string& path) { std::cout << "wrote " << path << std::endl; });
 }
 
 // A temporary folder, removed with everything in it when this goes out of scope.

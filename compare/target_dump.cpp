@@ -34,26 +34,28 @@ std::string kindTag(const ImageData& image) {
 
 }  // namespace
 
-std::vector<std::string> writeTargetDump(const std::string& folder, const std::vector<Target>& targets) {
+void writeTargetDump(const std::string& folder, const std::vector<Target>& targets,
+                     const std::function<void(const std::string&)>& wrote) {
   fs::create_directory(folder);
-  std::vector<std::string> written;
+  const auto written = [&](const std::string& path) {
+    if (wrote) wrote(path);
+  };
   std::string manifest;
   for (const Target& target : targets) {
     if (target.name.empty() || target.name.find_first_of("/ \t\n") != std::string::npos)
       throw std::runtime_error("target name '" + target.name + "' cannot be a file name");
     const std::string base = (fs::path(folder) / target.name).string();
     writePng(base + ".png", target.image);
-    written.push_back(base + ".png");
+    written(base + ".png");
     if (target.image.format != TexelFormat::RGBA8) {
       writeExr(base + ".exr", target.image);
-      written.push_back(base + ".exr");
+      written(base + ".exr");
     }
     manifest += target.name + " " + kindTag(target.image) + "\n";
   }
   const std::string manifestPath = (fs::path(folder) / kManifest).string();
   writeOutputFile(manifestPath, manifest);
-  written.push_back(manifestPath);
-  return written;
+  written(manifestPath);
 }
 
 std::vector<Target> loadTargetDump(const std::string& folder) {

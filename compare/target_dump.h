@@ -9,6 +9,7 @@
 // formats, sizes, channels, depth bits and payload bytes.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,8 +18,9 @@
 namespace compare {
 
 // Writes the files above into folder (created if missing; its parent must exist), each
-// whole or not at all. Returns the paths written, in order (the manifest last).
-std::vector<std::string> writeTargetDump(const std::string& folder, const std::vector<scenes::Target>& targets);
+// whole or not at all, calling wrote(PATH) after each (the manifest last).
+void writeTargetDump(const std::string& folder, const std::vector<scenes::Target>& targets,
+                     const std::function<void(const std::string&)>& wrote = {});
 
 // Loads a folder written by writeTargetDump, in the same order. Throws std::runtime_error
 // naming the file for a missing or bad manifest or image, or an image of another kind than

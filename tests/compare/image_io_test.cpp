@@ -266,8 +266,15 @@ TEST_SUITE("image_io") {
 
     TempFolder temp;
     const std::string folder = temp.file("dump");
-    const std::vector<std::string> written = compare::writeTargetDump(folder, targets);
-    CHECK(written.back() == folder + "/targets.txt");
+    std::vector<std::string> written;
+    compare::writeTargetDump(folder, targets, [&](const std::string& path) { written.push_back(path); });
+    std::vector<std::string> expected;
+    for (const Target& t : targets) {
+      expected.push_back(folder + "/" + t.name + ".png");
+      if (t.image.format != TexelFormat::RGBA8) expected.push_back(folder + "/" + t.name + ".exr");
+    }
+    expected.push_back(folder + "/targets.txt");
+    CHECK(written == expected);
     const std::vector<Target> loaded = compare::loadTargetDump(folder);
     REQUIRE(loaded.size() == targets.size());
     for (size_t i = 0; i < targets.size(); ++i) {

@@ -8,6 +8,7 @@ cd "$(dirname "$0")"
 packages=(
   build-essential cmake pkg-config
   libglm-dev libstb-dev libtinyobjloader-dev libtbb-dev doctest-dev libcli11-dev nlohmann-json3-dev libssl-dev
+  libopenexr-dev openexr   # OpenEXR dumps, and exrheader (the cli tests read the dumps with it)
   libosmesa6-dev mesa-common-dev libgl-dev
   python3-matplotlib
   python3-distributed        # bench/dask_sweep.py: sweeps sharded on a Dask cluster

@@ -114,7 +114,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args) {
   command->add_option("--out", args.out, "PNG of the final image (default: SCENE.png)")
       ->type_name("FILE.png");
   command->add_option("--dump", args.dump,
-                      "Folder for every target: NAME.png, and NAME.pfm for depth/float targets")
+                      "Folder for every target: NAME.png, and a lossless OpenEXR NAME.exr for depth/float targets")
       ->type_name("DIR");
   return command;
 }

@@ -10,21 +10,16 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
-#include "compare/image_io.h"
-#include "compare/metrics.h"
-#include "compare/output_file.h"
+#include "compare/target_dump.h"
 #include "scenes/backends.h"
 #include "scenes/memory_budget.h"
 
 namespace cli {
 namespace fs = std::filesystem;
 using scenes::Target;
-
-constexpr const char* kManifest = "targets.txt";   // "NAME rgba8|half|depth<bits>" per line
 
 // "640x480, t=1.000"
 std::string sizeAndTime(const Frame& frame) {
@@ -62,53 +57,10 @@ Side renderInProcess(const Frame& frame, const std::string& backendKind, bool fi
   return side;
 }
 
-static std::string manifestTag(const scenes::ImageData& image) {
-  const std::string kind = compare::imageKind(image);
-  return kind == "depth" ? kind + std::to_string(image.depthBits) : kind;
-}
-
-// Writes every target as NAME.png (+ NAME.pfm for depth / float) and the manifest.
+// Writes every target as NAME.png (+ NAME.exr for depth / float) and the manifest, and
+// says so on stdout, a line per file.
 void dumpTargets(const std::string& folder, const std::vector<Target>& targets) {
-  fs::create_directory(folder);
-  std::string manifest;
-  for (const Target& target : targets) {
-    if (target.name.empty() || target.name.find_first_of("/ \t\n") != std::string::npos)
-      throw std::runtime_error("target name '" + target.name + "' cannot be a file name");
-    const std::string base = (fs::path(folder) / target.name).string();
-    compare::writePng(base + ".png", target.image);
-    std::cout << "wrote " << base << ".png" << std::endl;
-    if (compare::imageKind(target.image) != "rgba8") {
-      compare::writePfm(base + ".pfm", target.image);
-      std::cout << "wrote " << base << ".pfm" << std::endl;
-      if (fs::exists(compare::alphaPfmPath(base + ".pfm")))
-        std::cout << "wrote " << compare::alphaPfmPath(base + ".pfm") << std::endl;
-    }
-    manifest += target.name + " " + manifestTag(target.image) + "\n";
-  }
-  const std::string manifestPath = (fs::path(folder) / kManifest).string();
-  compare::writeOutputFile(manifestPath, manifest);
-  std::cout << "wrote " << manifestPath << std::endl;
-}
-
-// Loads a folder written by dumpTargets, in the same order.
-std::vector<Target> loadDump(const std::string& folder) {
-  const std::string manifestPath = (fs::path(folder) / kManifest).string();
-  std::ifstream manifest(manifestPath);
-  if (!manifest) throw std::runtime_error("cannot read " + manifestPath);
-  std::vector<Target> targets;
-  std::string name, tag;
-  while (manifest >> name >> tag) {
-    const std::string base = (fs::path(folder) / name).string();
-    if (tag == "rgba8")
-      targets.push_back({name, compare::readPng(base + ".png")});
-    else if (tag == "half")
-      targets.push_back({name, compare::readPfmFloat(base + ".pfm")});
-    else if (tag.rfind("depth", 0) == 0)
-      targets.push_back({name, compare::readPfmDepth(base + ".pfm", std::stoi(tag.substr(5)))});
-    else
-      throw std::runtime_error(manifestPath + ": unknown target kind '" + tag + "'");
-  }
-  return targets;
+  compare::writeTargetDump(folder, targets, [](const std::string& path) { std::cout << "wrote " << path << std::endl; });
 }
 
 // A temporary folder, removed with everything in it when this goes out of scope.
@@ -158,7 +110,7 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   // Its failure is ours: bad input stays bad input (2), anything else is internal (1).
   if (status == 2) throw UsageError(what + " failed with exit status 2");
   if (status != 0) throw std::runtime_error(what + " failed with exit status " + std::to_string(status));
-  return {driver, loadDump(dump.path)};
+  return {driver, compare::loadTargetDump(dump.path)};
 }
 
 // One side of a comparison: "raster" or "llvmpipe" in this process, "softpipe" in a child.

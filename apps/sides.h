@@ -30,9 +30,8 @@ Side renderInChild(const Frame& frame, const std::string& driver);
 // One side of a comparison: "raster" or "llvmpipe" in this process, "softpipe" in a child.
 Side renderSide(const Frame& frame, const std::string& which);
 
-// Writes every target as NAME.png (+ NAME.pfm for depth / float) and the manifest.
+// Writes every target as NAME.png (+ NAME.exr for depth / float) and the manifest
+// (compare/target_dump.h), printing a "wrote PATH" line per file.
 void dumpTargets(const std::string& folder, const std::vector<scenes::Target>& targets);
-// Loads a folder written by dumpTargets, in the same order.
-std::vector<scenes::Target> loadDump(const std::string& folder);
 
 }  // namespace cli

@@ -1,4 +1,4 @@
-// The one writer of every file the project writes (PNG, PFM, JSON, Markdown, manifests).
+// The one writer of every file the project writes (PNG, OpenEXR, JSON, Markdown, manifests).
 //
 // A file is written whole or not at all:
 //   - the path is checked first: an existing entry there must be a regular file (a symbolic

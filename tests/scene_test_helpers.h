@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compare/image_io.h"
+#include "compare/target_dump.h"
 #include "compare/metrics.h"
 #include "scenes/backends.h"
 #include "scenes/scene.h"
@@ -56,7 +56,7 @@ inline std::vector<compare::TargetStats> compareWithLlvmpipe(const std::string& 
 
 // The same frame rendered by softpipe, for scale. Mesa picks one Gallium driver per
 // process, so softpipe runs in a child (`raster render --backend gl --dump`) and its
-// lossless dumps are read back, each in the kind of the matching target of `like`.
+// lossless dump is loaded back (compare/target_dump.h); its targets must be those of `like`.
 inline std::vector<scenes::Target> renderWithSoftpipe(const std::string& scene, const std::vector<scenes::Target>& like) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("raster-softpipe-" + scene + "-" + std::to_string(getpid()));
@@ -65,13 +65,16 @@ inline std::vector<scenes::Target> renderWithSoftpipe(const std::string& scene, 
                               dir.string() + "' --out '" + (dir / "out.png").string() + "' > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0) throw std::runtime_error("softpipe render of " + scene + " failed");
   std::vector<scenes::Target> targets;
-  for (const scenes::Target& t : like) {
-    const fs::path file = dir / (t.name + (t.image.format == scenes::TexelFormat::RGBA8 ? ".png" : ".pfm"));
-    if (t.image.format == scenes::TexelFormat::RGBA8) targets.push_back({t.name, compare::readPng(file.string())});
-    else if (t.image.depthBits > 0) targets.push_back({t.name, compare::readPfmDepth(file.string(), t.image.depthBits)});
-    else targets.push_back({t.name, compare::readPfmFloat(file.string())});
+  try {
+    targets = compare::loadTargetDump(dir.string());
+  } catch (...) {
+    fs::remove_all(dir);
+    throw;
   }
   fs::remove_all(dir);
+  if (targets.size() != like.size()) throw std::runtime_error(scene + ": softpipe dumped another number of targets");
+  for (size_t i = 0; i < like.size(); ++i)
+    if (targets[i].name != like[i].name) throw std::runtime_error(scene + ": softpipe target " + targets[i].name + " vs " + like[i].name);
   return targets;
 }
 

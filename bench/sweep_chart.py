@@ -15,13 +15,14 @@ writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, t
 import argparse
 import json
 import math
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from chart_files import write_atomically  # noqa: E402
 
 STYLE = {"softpipe": dict(color="#d62728", linestyle="--", marker="D")}
 
@@ -80,16 +81,6 @@ def draw(sweep):
     return fig
 
 
-def save(fig, path):
-    tmp = f"{path}.tmp-{os.getpid()}{os.path.splitext(path)[1]}"
-    try:
-        fig.savefig(tmp, dpi=130)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("sweep")
@@ -97,7 +88,7 @@ def main():
     args = parser.parse_args()
     fig = draw(load(args.sweep))
     for ext in ("png", "svg"):
-        save(fig, f"{args.out}.{ext}")
+        write_atomically(fig, f"{args.out}.{ext}")
 
 
 if __name__ == "__main__":

@@ -15,13 +15,14 @@ A RESULT.json holds one scene's object, or a list of them (`raster tradeoff all`
 import argparse
 import json
 import math
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from chart_files import write_atomically  # noqa: E402
 
 FAST_THRESHOLD_DB = 40.0
 KIND_STYLE = {
@@ -110,16 +111,6 @@ def label_points(ax, names, xs, ys):
         else:
             ax.annotate(names[i], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3), fontsize=6.5)
             placed.append((ax_x, ax_y, 1))
-
-
-def write_atomically(fig, path):
-    tmp = f"{path}.tmp-{os.getpid()}{os.path.splitext(path)[1]}"
-    try:
-        fig.savefig(tmp, dpi=130)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
 
 
 def main():

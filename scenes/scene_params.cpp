@@ -49,9 +49,8 @@ std::vector<ParamSpec> sceneParams(const std::string& scene) {
   return {};
 }
 
-const ParamSpec& findParam(const std::string& scene, const std::string& name) {
-  static thread_local std::vector<ParamSpec> specs;
-  specs = sceneParams(scene);
+ParamSpec findParam(const std::string& scene, const std::string& name) {
+  const std::vector<ParamSpec> specs = sceneParams(scene);
   for (const ParamSpec& spec : specs)
     if (spec.name == name) return spec;
   std::string known;
@@ -74,7 +73,7 @@ bool parseSizeValue(const std::string& text, int& width, int& height) {
 }
 
 double parseParamValue(const std::string& scene, const std::string& name, const std::string& value) {
-  const ParamSpec& spec = findParam(scene, name);
+  const ParamSpec spec = findParam(scene, name);
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (value.empty() || *end != '\0' || !std::isfinite(v))

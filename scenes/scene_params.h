@@ -44,7 +44,7 @@ struct ParamError : std::invalid_argument {
 // The parameters of a scene, in the order `raster params` lists them. `time`, `size` and
 // `instances` are the frame's own options; the others land in SceneParams.
 std::vector<ParamSpec> sceneParams(const std::string& scene);
-const ParamSpec& findParam(const std::string& scene, const std::string& name);   // ParamError
+ParamSpec findParam(const std::string& scene, const std::string& name);   // ParamError
 
 // Parses and range-checks VALUE for parameter `name` of `scene` (ParamError naming both).
 // `size` is not a number: see parseSizeValue.

@@ -37,19 +37,6 @@ using namespace cli_test;
 using scenes::ImageData;
 using scenes::TexelFormat;
 
-// Runs a command that must be refused as bad input, and checks how it is refused.
-void expectRefused(const std::string& args) {
-  TempFolder temp;
-  const fs::path cwd = temp.path / "cwd";
-  fs::create_directory(cwd);
-  const RunResult result = runCli(cwd, args);
-  INFO("raster " << args << "\nstderr: " << result.err);
-  CHECK(result.status == 2);
-  CHECK(result.err.rfind("raster: ", 0) == 0);
-  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-  CHECK(fs::is_empty(cwd));
-}
-
 std::string aScene() { return scenes::sceneNames().front(); }
 
 ImageData rgba8Image(int width, int height, uint8_t value) {

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,22 @@ inline RunResult runShell(const fs::path& cwd, const std::string& script) {
 // Runs `raster ARGS` with the working folder `cwd`.
 inline RunResult runCli(const fs::path& cwd, const std::string& args) {
   return runShell(cwd, "exec \"$RASTER\" " + args);
+}
+
+// Runs a command that must be refused as bad input, in an empty folder, and checks how it is
+// refused: exit status 2, one "raster: ..." line on stderr that contains `mentions`, and
+// nothing written.
+inline void expectRefused(const std::string& args, const std::string& mentions = "") {
+  TempFolder temp;
+  const fs::path cwd = temp.path / "cwd";
+  fs::create_directory(cwd);
+  const RunResult result = runCli(cwd, args);
+  INFO("raster " << args << "\nstderr: " << result.err);
+  CHECK(result.status == 2);
+  CHECK(result.err.rfind("raster: ", 0) == 0);
+  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+  CHECK(result.err.find(mentions) != std::string::npos);
+  CHECK(fs::is_empty(cwd));
 }
 
 }  // namespace cli_test

@@ -19,21 +19,6 @@ namespace {
 using namespace cli_test;
 using nlohmann::json;
 
-// A command that must be refused as bad input: exit 2, one "raster: " line that contains
-// `mentions`, and nothing written.
-void expectRefused(const std::string& args, const std::string& mentions = "") {
-  TempFolder temp;
-  const fs::path cwd = temp.path / "cwd";
-  fs::create_directory(cwd);
-  const RunResult result = runCli(cwd, args);
-  INFO("raster " << args << "\nstderr: " << result.err);
-  CHECK(result.status == 2);
-  CHECK(result.err.rfind("raster: ", 0) == 0);
-  CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
-  CHECK(result.err.find(mentions) != std::string::npos);
-  CHECK(fs::is_empty(cwd));
-}
-
 }  // namespace
 
 TEST_SUITE("sweep") {

@@ -74,8 +74,8 @@ def table(data):
     context = data.get("context", {})
     print(f"{context.get('host_name', '?')}: {context.get('num_cpus', '?')} cpus at {context.get('mhz_per_cpu', '?')} MHz "
           f"(TSC), load {context.get('load_avg', '?')}")
-    print(f"| benchmark | per item | ns | items/ns | peak figure |")
-    print(f"| --- | --- | --- | --- | --- |")
+    print("| benchmark | per item | ns | items/ns | peak figure |")
+    print("| --- | --- | --- | --- | --- |")
     for bench in data["benchmarks"]:
         key, value = per_item(bench)
         rate = bench.get("items_per_second", 0.0) * 1e-9

@@ -14,7 +14,6 @@ writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, t
 """
 import argparse
 import json
-import math
 import sys
 
 import matplotlib

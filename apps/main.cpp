@@ -30,6 +30,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
+#include "apps/report_values.h"
 #include "apps/sides.h"
 #include "apps/soup.h"
 #include "apps/sweep.h"
@@ -53,6 +54,7 @@ using cli::dumpTargets;
 using cli::renderInProcess;
 using cli::renderSide;
 using cli::sizeAndTime;
+using cli::sixDigits;
 
 int runRender(const cli::RenderArgs& args) {
   const Frame frame = cli::validateFrame(args);
@@ -72,23 +74,17 @@ int runRender(const cli::RenderArgs& args) {
   return 0;
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
-
 // The thresholds a target exceeds, one message each (colour ones for rgba8, depth for depth).
 std::vector<std::string> exceeded(const compare::TargetStats& s, const cli::Thresholds& limits) {
   std::vector<std::string> failures;
   if (s.kind == "rgba8") {
     if (limits.maxRmse && s.rmse > *limits.maxRmse)
-      failures.push_back(s.name + ": rmse " + number(s.rmse) + " exceeds --max-rmse " + number(*limits.maxRmse));
+      failures.push_back(s.name + ": rmse " + sixDigits(s.rmse) + " exceeds --max-rmse " + sixDigits(*limits.maxRmse));
     if (limits.minPsnr && s.psnr < *limits.minPsnr)
-      failures.push_back(s.name + ": psnr " + number(s.psnr) + " is below --min-psnr " + number(*limits.minPsnr));
+      failures.push_back(s.name + ": psnr " + sixDigits(s.psnr) + " is below --min-psnr " + sixDigits(*limits.minPsnr));
     if (limits.maxShareOver1 && s.shareOver1 > *limits.maxShareOver1)
-      failures.push_back(s.name + ": share of pixels off by more than 1 step " + number(s.shareOver1) +
-                         " exceeds --max-share-over1 " + number(*limits.maxShareOver1));
+      failures.push_back(s.name + ": share of pixels off by more than 1 step " + sixDigits(s.shareOver1) +
+                         " exceeds --max-share-over1 " + sixDigits(*limits.maxShareOver1));
   }
   if (s.kind == "depth" && limits.maxDepthLsb && s.maxDepthLsb > *limits.maxDepthLsb)
     failures.push_back(s.name + ": depth differs by up to " + std::to_string(s.maxDepthLsb) +
@@ -182,7 +178,7 @@ int listParams(const std::string& scene, bool asJson) {
   for (const scenes::ParamSpec& p : specs) {
     char line[160];
     std::snprintf(line, sizeof line, "  %-16s %-16s default %-8s ", p.name.c_str(),
-                  (number(p.min) + ".." + number(p.max) + (p.unit.empty() ? "" : " " + p.unit)).c_str(), p.byDefault.c_str());
+                  (sixDigits(p.min) + ".." + sixDigits(p.max) + (p.unit.empty() ? "" : " " + p.unit)).c_str(), p.byDefault.c_str());
     std::cout << line << p.meaning << "\n";
   }
   return 0;

@@ -16,6 +16,7 @@
 
 #include "apps/charts.h"
 #include "apps/progress.h"
+#include "apps/report_values.h"
 #include "apps/sides.h"
 #include "compare/metrics.h"
 #include "compare/output_file.h"
@@ -180,8 +181,6 @@ uint64_t nonFinitePixels(const std::vector<scenes::Target>& targets) {
   return count;
 }
 
-json dbOrNull(double psnr) { return std::isfinite(psnr) ? json(psnr) : json(nullptr); }
-
 // One point: `side`'s targets against llvmpipe's.
 json scorePoint(double value, size_t valueIndex, const std::string& name, const std::vector<scenes::Target>& side,
                 const std::vector<scenes::Target>& reference, double thresholdDb) {
@@ -248,31 +247,18 @@ json firstFailures(const json& sweep) {
   return first;
 }
 
-// A value for people: 6 significant digits, as the values were rounded (rangeValues).
-std::string shown(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
-std::string fixed(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
 std::string markdown(const json& sweep) {
   std::ostringstream md;
   const json& r = sweep.at("range");
   md << "# Sweep of `" << sweep.at("param").get<std::string>() << "` in " << sweep.at("scene").get<std::string>()
-     << "\n\nFrom " << shown(r.at("from")) << " to " << shown(r.at("to")) << " in " << r.at("steps")
+     << "\n\nFrom " << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
      << (r.at("log").get<bool>() ? " log" : "") << " steps, " << sweep.at("size")[0] << "x" << sweep.at("size")[1]
-     << ", t=" << shown(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
-     << shown(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
+     << ", t=" << sixDigits(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
+     << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";
     for (const auto& [side, value] : sweep.at("first_failure").items())
-      md << "| " << side << " | " << (value.is_null() ? std::string("none") : shown(value.get<double>())) << " |\n";
+      md << "| " << side << " | " << (value.is_null() ? std::string("none") : sixDigits(value.get<double>())) << " |\n";
     md << "\n";
   }
   md << "| value | side | identical | PSNR (dB) | >1 step | max step | non-finite | worst target (dB) | fails |\n"
@@ -280,15 +266,15 @@ std::string markdown(const json& sweep) {
   for (const json& p : sweep.at("points")) {
     const json& db = p.at("psnr_vs_llvmpipe_db");
     const json& worst = p.at("worst_target");
-    md << "| " << shown(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
+    md << "| " << sixDigits(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
        << (p.at("identical_to_llvmpipe").get<bool>() ? "yes" : "no") << " | "
-       << (db.is_null() ? std::string("-") : fixed(db.get<double>(), 1)) << " | "
-       << fixed(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
+       << (db.is_null() ? std::string("-") : fixedDigits(db.get<double>(), 1)) << " | "
+       << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
        << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << p.at("nonfinite_pixels").get<uint64_t>() << " | "
        << (worst.is_null() ? std::string("-")
                            : worst.get<std::string>() + " (" +
                                  (p.at("worst_target_psnr_db").is_null() ? std::string("-")
-                                                                         : fixed(p.at("worst_target_psnr_db").get<double>(), 1)) +
+                                                                         : fixedDigits(p.at("worst_target_psnr_db").get<double>(), 1)) +
                                  ")")
        << " | " << (p.at("fails").get<bool>() ? p.at("failure").get<std::string>() : std::string("")) << " |\n";
   }
@@ -309,7 +295,7 @@ void writeSweep(json sweep, const std::string& folder) {
   }
   if (sweep.contains("first_failure"))
     for (const auto& [side, value] : sweep.at("first_failure").items())
-      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + shown(value.get<double>()))
+      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + sixDigits(value.get<double>()))
                 << "\n";
   for (const std::string& file : written) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
 }

@@ -22,6 +22,7 @@
 #include "apps/bench.h"
 #include "apps/charts.h"
 #include "apps/progress.h"
+#include "apps/report_values.h"
 #include "apps/child_process.h"
 #include "apps/sides.h"
 #include "compare/metrics.h"
@@ -117,9 +118,6 @@ std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int fram
   return {softpipe, gl};
 }
 
-// PSNR in dB for the JSON: null when identical (+inf), as the schema asks.
-json psnrOrNull(const compare::TargetStats& s) { return std::isfinite(s.psnr) ? json(s.psnr) : json(nullptr); }
-
 bool identical(const compare::TargetStats& s) { return s.maxAbs == 0; }
 
 // Pareto-optimal: no other point is at least as fast and at least as accurate, and better
@@ -134,12 +132,6 @@ std::vector<bool> paretoFront(const std::vector<double>& speed, const std::vecto
   return front;
 }
 
-std::string fixed(double value, int digits) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
-}
-
 // The markdown table of one scene's result, sorted by speed, Pareto-optimal rows marked.
 std::string markdownTable(const json& result) {
   std::vector<json> points(result.at("points").begin(), result.at("points").end());
@@ -151,12 +143,12 @@ std::string markdownTable(const json& result) {
      << ", t=" << result.at("time") << ", " << result.at("threads") << " threads\n\n"
      << "| point | kind | median ms | speed-up vs llvmpipe | PSNR vs llvmpipe (dB) | pixels off > 1 | max diff "
         "| PSNR vs precise (dB) | Pareto |\n|---|---|---:|---:|---:|---:|---:|---:|:---:|\n";
-  auto db = [](const json& v) { return v.is_null() ? std::string("identical") : fixed(v.get<double>(), 1); };
+  auto db = [](const json& v) { return v.is_null() ? std::string("identical") : fixedDigits(v.get<double>(), 1); };
   for (const json& p : points)
     md << "| " << p.at("name").get<std::string>() << " | " << p.at("kind").get<std::string>() << " | "
-       << fixed(p.at("median_ms").get<double>(), 2) << " | " << fixed(p.at("speedup_vs_llvmpipe").get<double>(), 2)
+       << fixedDigits(p.at("median_ms").get<double>(), 2) << " | " << fixedDigits(p.at("speedup_vs_llvmpipe").get<double>(), 2)
        << "x | " << db(p.at("psnr_vs_llvmpipe_db")) << " | "
-       << fixed(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
+       << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
        << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << db(p.at("psnr_vs_precise_db")) << " | "
        << (p.at("pareto").get<bool>() ? "*" : "") << " |\n";
   md << "\n";
@@ -242,10 +234,10 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
                                 {"median_ms", p.medianMs},
                                 {"speedup_vs_llvmpipe", speedup},
                                 {"identical_to_llvmpipe", identical(vsGl)},
-                                {"psnr_vs_llvmpipe_db", psnrOrNull(vsGl)},
+                                {"psnr_vs_llvmpipe_db", dbOrNull(vsGl.psnr)},
                                 {"share_over1_vs_llvmpipe", vsGl.shareOver1},
                                 {"max_diff_vs_llvmpipe", vsGl.maxAbs},
-                                {"psnr_vs_precise_db", psnrOrNull(vsPrecise)},
+                                {"psnr_vs_precise_db", dbOrNull(vsPrecise.psnr)},
                                 {"nonfinite_pixels", vsGl.nonFinitePixels}});
     speed.push_back(speedup);
     accuracy.push_back(std::isfinite(vsGl.psnr) ? vsGl.psnr : HUGE_VAL);

@@ -18,6 +18,7 @@
 #include "apps/progress.h"
 #include "apps/report_values.h"
 #include "apps/sides.h"
+#include "apps/sweep_file.h"
 #include "compare/metrics.h"
 #include "compare/output_file.h"
 #include "scenes/scene_params.h"
@@ -29,7 +30,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kMaxSteps = 10000;
-constexpr const char* kChartScript = "sweep_chart.py";
 
 // --param NAME=FROM:TO:STEPS[:log]
 struct Range {
@@ -106,29 +106,6 @@ std::string valueText(double v) {
   char text[40];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
-}
-
-struct ShardSpec {
-  int index = 1, count = 1;
-  bool sharded = false;
-};
-
-ShardSpec parseShard(const std::string& text) {
-  ShardSpec shard;
-  if (text.empty()) return shard;
-  const std::vector<std::string> parts = split(text, '/');
-  char* end1 = nullptr;
-  char* end2 = nullptr;
-  const long k = parts.size() == 2 ? std::strtol(parts[0].c_str(), &end1, 10) : 0;
-  const long n = parts.size() == 2 ? std::strtol(parts[1].c_str(), &end2, 10) : 0;
-  if (parts.size() != 2 || parts[0].empty() || parts[1].empty() || *end1 != '\0' || *end2 != '\0')
-    throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
-  if (n < 1 || n > kMaxSteps) throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxSteps) + ")");
-  if (k < 1 || k > n) throw UsageError("--shard: K = " + parts[0] + " is outside 1.." + std::to_string(n));
-  shard.index = int(k);
-  shard.count = int(n);
-  shard.sharded = true;
-  return shard;
 }
 
 // A method set named as a preset (gl, fast, ...) or as single steps changed from gl
@@ -225,81 +202,6 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
           {"failure", failure}};
 }
 
-// The sides of every value, in the order their points are written.
-std::vector<std::string> sideOrder(const json& sweep) {
-  std::vector<std::string> order = {"llvmpipe"};
-  for (const json& m : sweep.at("methods")) order.push_back(m.get<std::string>());
-  if (sweep.at("softpipe").get<bool>()) order.push_back("softpipe");
-  return order;
-}
-
-// For each side, the first value (in sweep order) at which it fails, or null.
-json firstFailures(const json& sweep) {
-  json first = json::object();
-  for (const std::string& side : sideOrder(sweep)) {
-    first[side] = nullptr;
-    for (const json& p : sweep.at("points"))
-      if (p.at("method") == side && p.at("fails").get<bool>()) {
-        first[side] = p.at("value");
-        break;
-      }
-  }
-  return first;
-}
-
-std::string markdown(const json& sweep) {
-  std::ostringstream md;
-  const json& r = sweep.at("range");
-  md << "# Sweep of `" << sweep.at("param").get<std::string>() << "` in " << sweep.at("scene").get<std::string>()
-     << "\n\nFrom " << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
-     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << sweep.at("size")[0] << "x" << sweep.at("size")[1]
-     << ", t=" << sixDigits(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
-     << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
-  if (sweep.contains("first_failure")) {
-    md << "| side | first failing value |\n|---|---|\n";
-    for (const auto& [side, value] : sweep.at("first_failure").items())
-      md << "| " << side << " | " << (value.is_null() ? std::string("none") : sixDigits(value.get<double>())) << " |\n";
-    md << "\n";
-  }
-  md << "| value | side | identical | PSNR (dB) | >1 step | max step | non-finite | worst target (dB) | fails |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
-  for (const json& p : sweep.at("points")) {
-    const json& db = p.at("psnr_vs_llvmpipe_db");
-    const json& worst = p.at("worst_target");
-    md << "| " << sixDigits(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
-       << (p.at("identical_to_llvmpipe").get<bool>() ? "yes" : "no") << " | "
-       << (db.is_null() ? std::string("-") : fixedDigits(db.get<double>(), 1)) << " | "
-       << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
-       << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << p.at("nonfinite_pixels").get<uint64_t>() << " | "
-       << (worst.is_null() ? std::string("-")
-                           : worst.get<std::string>() + " (" +
-                                 (p.at("worst_target_psnr_db").is_null() ? std::string("-")
-                                                                         : fixedDigits(p.at("worst_target_psnr_db").get<double>(), 1)) +
-                                 ")")
-       << " | " << (p.at("fails").get<bool>() ? p.at("failure").get<std::string>() : std::string("")) << " |\n";
-  }
-  return md.str();
-}
-
-// Writes sweep.json and sweep.md into `folder`, and the chart unless it is a shard.
-void writeSweep(json sweep, const std::string& folder) {
-  const bool shard = sweep.contains("shard");
-  if (!shard) sweep["first_failure"] = firstFailures(sweep);
-  const std::string jsonPath = (fs::path(folder) / "sweep.json").string();
-  compare::writeOutputFile(jsonPath, sweep.dump(2) + "\n");
-  compare::writeOutputFile((fs::path(folder) / "sweep.md").string(), markdown(sweep));
-  std::vector<std::string> written = {"sweep.json", "sweep.md"};
-  if (!shard) {
-    drawChart(kChartScript, jsonPath, (fs::path(folder) / "sweep").string());
-    written.insert(written.end(), {"sweep.png", "sweep.svg"});
-  }
-  if (sweep.contains("first_failure"))
-    for (const auto& [side, value] : sweep.at("first_failure").items())
-      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + sixDigits(value.get<double>()))
-                << "\n";
-  for (const std::string& file : written) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
-}
-
 }  // namespace
 
 CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
@@ -356,7 +258,7 @@ int runSweep(const SweepArgs& args) {
     frames.push_back(validateFrame(frameArgs));
   }
   checkOutputFolder("--out", args.out);
-  if (!shard.sharded) checkChartTools(kChartScript);
+  if (!shard.sharded) checkChartTools(kSweepChartScript);
   if (args.check) {
     std::cout << "sweep " << base.scene << " " << range.name << ": " << values.size() << " values x "
               << (1 + methods.size() + (args.noSoftpipe ? 0 : 1)) << " sides; the options are valid\n";
@@ -392,9 +294,8 @@ int runSweep(const SweepArgs& args) {
     const std::string at = range.name + "=" + valueText(values[i]) + ": ";
     progress.update(done, at + "llvmpipe");
     const Side reference = renderSide(frame, "llvmpipe");
-    json llvmpipe = scorePoint(values[i], i, "llvmpipe", reference.targets, reference.targets, threshold);
-    sweep["points"].push_back(llvmpipe);
-    progress.update(++done, at + methods.front().name);
+    sweep["points"].push_back(scorePoint(values[i], i, "llvmpipe", reference.targets, reference.targets, threshold));
+    ++done;
     for (const MethodSide& m : methods) {
       Frame withMethods = frame;
       withMethods.methods = m.set;
@@ -412,103 +313,6 @@ int runSweep(const SweepArgs& args) {
     progress.update(done, at + "done");
   }
   writeSweep(std::move(sweep), args.out);
-  return 0;
-}
-
-CLI::App* addSweepMergeCommand(CLI::App& app, SweepMergeArgs& args) {
-  CLI::App* command = app.add_subcommand("sweep-merge", "Join the shards of a sweep (raster sweep --shard K/N) into one");
-  command->add_option("shards", args.shards, "The shards' --out folders")->required()->type_name("DIR...");
-  command->add_option("--out", args.out, "Folder for the merged sweep.json, sweep.md, sweep.png, sweep.svg")
-      ->required()->type_name("DIR");
-  return command;
-}
-
-int runSweepMerge(const SweepMergeArgs& args) {
-  json merged;
-  std::map<int, std::string> seen;   // shard index -> folder
-  int count = 0;
-  size_t valueCount = 0;
-  for (const std::string& folder : args.shards) {
-    const std::string path = (fs::path(folder) / "sweep.json").string();
-    std::ifstream in(path);
-    if (!in) throw UsageError(path + ": cannot be read (is " + folder + " a sweep --shard folder?)");
-    json shard;
-    try {
-      shard = json::parse(in);
-    } catch (const json::exception& e) {
-      throw UsageError(path + ": not valid JSON (" + e.what() + ")");
-    }
-    if (!shard.is_object() || !shard.contains("shard") || !shard.contains("points"))
-      throw UsageError(path + ": not the sweep.json of a shard (no \"shard\" field)");
-    ShardSpec spec;
-    try {
-      spec = parseShard(shard.at("shard").get<std::string>());
-    } catch (const std::exception&) {
-      throw UsageError(path + ": its \"shard\" field is not K/N");
-    }
-    json header = shard;
-    for (const char* key : {"shard", "shard_values", "points"}) header.erase(key);
-    if (merged.is_null()) {
-      merged = header;
-      merged["points"] = json::array();
-      count = spec.count;
-    } else {
-      json common = merged;
-      common.erase("points");
-      for (const auto& [key, value] : common.items())
-        if (!header.contains(key) || header.at(key) != value)
-          throw UsageError(path + ": a shard of a different sweep (its \"" + key + "\" is " +
-                           (header.contains(key) ? header.at(key).dump() : std::string("missing")) + ", not " +
-                           value.dump() + ")");
-      if (header.size() != common.size()) throw UsageError(path + ": a shard of a different sweep (other fields)");
-      if (spec.count != count)
-        throw UsageError(path + ": shard of " + std::to_string(spec.count) + ", the others are of " + std::to_string(count));
-    }
-    if (seen.count(spec.index))
-      throw UsageError(path + ": shard " + std::to_string(spec.index) + "/" + std::to_string(count) + " is also in " +
-                       seen.at(spec.index));
-    seen[spec.index] = folder;
-    // Its points are exactly its values times the sides: none lost, none extra.
-    const std::vector<std::string> order = sideOrder(merged);
-    std::set<std::pair<size_t, std::string>> expected, found;
-    for (const json& v : shard.value("shard_values", json::array()))
-      for (const std::string& side : order) expected.insert({v.get<size_t>(), side});
-    for (const json& p : shard.at("points")) {
-      if (!found.insert({p.at("value_index").get<size_t>(), p.at("method").get<std::string>()}).second)
-        throw UsageError(path + ": holds value " + p.at("value").dump() + " of " + p.at("method").get<std::string>() + " twice");
-      merged["points"].push_back(p);
-    }
-    if (found != expected)
-      throw UsageError(path + ": its points are not its shard_values times the sides " +
-                       "(an interrupted or edited shard; run that shard again)");
-    valueCount += shard.value("shard_values", json::array()).size();
-  }
-  std::string missing;
-  for (int k = 1; k <= count; ++k)
-    if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(count);
-  if (!missing.empty()) throw UsageError("shards missing: " + missing);
-
-  // The unsharded order: value by value, each value's sides in the run's order.
-  const std::vector<std::string> order = sideOrder(merged);
-  auto rank = [&](const json& p) {
-    const auto at = std::find(order.begin(), order.end(), p.at("method").get<std::string>());
-    return std::make_pair(p.at("value_index").get<size_t>(), size_t(at - order.begin()));
-  };
-  std::vector<json> points = merged.at("points").get<std::vector<json>>();
-  std::stable_sort(points.begin(), points.end(), [&](const json& a, const json& b) { return rank(a) < rank(b); });
-  for (size_t i = 1; i < points.size(); ++i)
-    if (rank(points[i]) == rank(points[i - 1]))
-      throw UsageError("the shards hold value " + points[i].at("value").dump() + " of " +
-                       points[i].at("method").get<std::string>() + " twice");
-  for (size_t i = 0; i < points.size(); ++i)
-    if (rank(points[i]).first >= valueCount)
-      throw UsageError("the shards' values are not 0.." + std::to_string(valueCount) + " (value index " +
-                       std::to_string(rank(points[i]).first) + ")");
-  merged["points"] = points;
-  checkOutputFolder("--out", args.out);
-  checkChartTools(kChartScript);
-  fs::create_directories(args.out);
-  writeSweep(std::move(merged), args.out);
   return 0;
 }
 

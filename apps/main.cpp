@@ -8,6 +8,7 @@
 //   raster sweep SCENE ...    one parameter moved toward failure, every side scored (sweep.h);
 //   raster sweep-merge DIR... the shards of a sweep joined into one;
 //   raster soup --seeds A:B   random triangle soups, this pipeline against llvmpipe (soup.h);
+//   raster trace SCENE --pixel X,Y   pixel history: every fragment of every pass behind one pixel (trace.h);
 //   raster methods, scenes    the methods of each step and the presets; the scene names;
 //   raster params SCENE       the scene's parameters, set with --set NAME=VALUE.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
@@ -34,6 +35,7 @@
 #include "apps/sides.h"
 #include "apps/soup.h"
 #include "apps/sweep.h"
+#include "apps/trace.h"
 #include "apps/tradeoff.h"
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
@@ -218,7 +220,9 @@ int main(int argc, char** argv) {
   CLI::App* sweepMerge = cli::addSweepMergeCommand(app, sweepMergeArgs);
   cli::SoupArgs soupArgs;
   CLI::App* soup = cli::addSoupCommand(app, soupArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, soup, methods, params, scenes).");
+  cli::TraceArgs traceArgs;
+  CLI::App* trace = cli::addTraceCommand(app, traceArgs);
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, soup, trace, methods, params, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -242,6 +246,7 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) return cli::runSweep(sweepArgs);
     if (sweepMerge->parsed()) return cli::runSweepMerge(sweepMergeArgs);
     if (soup->parsed()) return cli::runSoup(soupArgs);
+    if (trace->parsed()) return cli::runTrace(traceArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "raster/pixel_history.h"
 #include "scenes/backend.h"
 
 namespace scenes {
@@ -12,6 +13,11 @@ namespace scenes {
 // shades every fragment that passes its depth test, in order, instead of only the visible
 // ones (raster::Renderer::setVisibilityFirst). The bytes are the same either way.
 std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true);
+
+// Turns pixel history on (null: off) in a backend made by makeRasterBackend
+// (raster::Renderer::setPixelHistory); passes get the labels the scene gives them.
+// Throws std::invalid_argument for any other backend.
+void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

@@ -48,6 +48,8 @@ class RasterBackend final : public Backend {
             memory::joined({"the ", std::to_string(width), "x", std::to_string(height), " window (RGBA8 colour, 24-bit depth)"}));
     defaultColor_ = raster::Texture(width, height, TexelFormat::RGBA8);
     defaultDepth_ = raster::Texture(width, height, TexelFormat::Depth24);
+    defaultColor_.label = "final";   // the names the scenes' targets give the window's buffers
+    defaultDepth_.label = "depth";
     raster::Framebuffer& fb = framebuffers_[kDefaultFramebuffer];
     fb.colors = {&defaultColor_};
     fb.depth = &defaultDepth_;
@@ -118,6 +120,16 @@ class RasterBackend final : public Backend {
     values.depth = clear.depth;
     values.depthValue = clear.depthValue;
     renderer_.beginPass(framebufferAt(framebuffer), {viewport.x, viewport.y, viewport.width, viewport.height}, values);
+    if (history_ && !history_->passes.empty()) history_->passes.back().label = nextPassLabel_;
+    nextPassLabel_.clear();
+  }
+
+  void labelTexture(Handle texture, const std::string& label) override { this->texture(texture)->label = label; }
+  void labelNextPass(const std::string& label) override { nextPassLabel_ = label; }
+  void setPixelHistory(raster::PixelHistory* history) {
+    renderer_.flush();
+    history_ = history;
+    renderer_.setPixelHistory(history);
   }
 
   void setUniform(Handle program, const std::string& name, const UniformValue& value) override {
@@ -262,9 +274,17 @@ class RasterBackend final : public Backend {
   std::vector<std::unique_ptr<Mesh>> meshes_;
   std::vector<std::unique_ptr<BoundProgram>> programs_;
   TextureUnits units_{};
+  raster::PixelHistory* history_ = nullptr;   // pixel history, when a trace asked for it
+  std::string nextPassLabel_;                 // labelNextPass, for the next beginPass
 };
 
 }  // namespace
+
+void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history) {
+  auto* backend = dynamic_cast<RasterBackend*>(&rasterBackend);
+  if (!backend) throw std::invalid_argument("pixel history needs this pipeline's backend, not " + rasterBackend.name());
+  backend->setPixelHistory(history);
+}
 
 std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst) {
   return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst);

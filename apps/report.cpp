@@ -22,6 +22,7 @@
 #include "apps/report_pixels.h"
 #include "apps/report_results.h"
 #include "apps/report_trace_panel.h"
+#include "apps/report_views.h"
 #include "apps/sides.h"
 #include "compare/exr_io.h"
 #include "compare/image_io.h"
@@ -119,44 +120,6 @@ struct Tools {
   std::string viewNote;   // why there are no views, when there are none
 };
 
-// The view names in the output of `render --view help`: one a line (first word) when it
-// succeeds, else the list its error gives ("... (valid views: a, b, c)" or "...: a, b, c").
-std::vector<std::string> parseViewNames(const ChildRun& run) {
-  const auto isName = [](const std::string& word) {
-    static const std::vector<std::string> notNames = {"valid", "views", "view", "are", "and", "or", "known", "names", "help"};
-    if (word.empty() || !std::islower(static_cast<unsigned char>(word[0]))) return false;
-    for (char c : word)
-      if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '_'))
-        return false;
-    return std::find(notNames.begin(), notNames.end(), word) == notNames.end();
-  };
-  std::vector<std::string> names;
-  const auto add = [&](const std::string& word) {
-    if (isName(word) && std::find(names.begin(), names.end(), word) == names.end()) names.push_back(word);
-  };
-  if (run.status == 0) {
-    std::istringstream lines(run.output);
-    std::string line;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string first;
-      if (words >> first) add(first);
-    }
-    return names;
-  }
-  std::string line = lastLine(run.output);
-  const size_t open = line.rfind('('), colon = line.rfind(':');
-  if (open != std::string::npos) line = line.substr(open + 1, line.find(')', open) - open - 1);
-  else if (colon != std::string::npos) line = line.substr(colon + 1);
-  const size_t colonInside = line.rfind(':');
-  if (colonInside != std::string::npos) line = line.substr(colonInside + 1);
-  for (char& c : line)
-    if (c == ',' || c == '|' || c == ';') c = ' ';
-  std::istringstream words(line);
-  for (std::string word; words >> word;) add(word);
-  return names;
-}
-
 Tools probeTools(const std::string& scene, const fs::path& scratch) {
   Tools tools;
   // `raster trace --help` succeeds even without the command (the program's own --help
@@ -171,7 +134,7 @@ Tools probeTools(const std::string& scene, const fs::path& scratch) {
   const ChildRun list = runThisProgram({"render", scene, "--view", "help", "--size", "8x8", "--out",
                                         (scratch / "view-help.png").string()},
                                        "raster render --view help", scratch);
-  tools.viewNames = parseViewNames(list);
+  tools.viewNames = report::parseViewNames(list.status, list.output);
   tools.views = !tools.viewNames.empty();
   if (!tools.views) tools.viewNote = "Stage views: cannot read the list of views from `raster render --view help`: " + lastLine(list.output);
   return tools;

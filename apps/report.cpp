@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 
@@ -217,11 +218,6 @@ std::string chartSection(const ChartResult& result, const fs::path& reportFolder
 
 // ---- one scene ------------------------------------------------------------------------------
 
-struct SceneWork {
-  const Frame& frame;
-  const Tools& tools;
-  const std::vector<report::ChosenPixel>* pixels = nullptr;
-};
 
 // The figure of one target image: the preview PNG and, for float / depth targets, its EXR.
 std::string targetFigure(const std::string& folder, const std::string& base, const std::string& side,
@@ -235,6 +231,106 @@ std::string targetFigure(const std::string& folder, const std::string& base, con
   const std::string how = depth ? " (preview: depth codes as grey, stretched between the nearest and farthest code present)"
                                 : " (preview: clamped to [0, 1], gamma 1/2.2, alpha dropped)";
   return report::figure(png, caption + how + "; the data:", exr, base + "_" + side + ".exr");
+}
+
+// What one scene's sections need: its frame, the report's options, the tools this build has,
+// where its files go (folder, relative to the report being made in `work`), and the progress.
+struct SceneWork {
+  const Frame& frame;
+  const ReportArgs& args;
+  const Tools& tools;
+  std::string folder;
+  fs::path work, scratch;
+  std::function<void(const std::string&)> step;
+};
+
+// The stage views, as `raster render --view` lists them, each with its sidecar JSON.
+std::string viewsHtml(const SceneWork& scene, json& record) {
+  const Frame& frame = scene.frame;
+  const ReportArgs& args = scene.args;
+  const Tools& tools = scene.tools;
+  const std::string& folder = scene.folder;
+  const fs::path& work = scene.work;
+  const fs::path& scratch = scene.scratch;
+  const auto& step = scene.step;
+  std::string html;
+  html += "<h3>Stage views</h3>\n";
+  if (!tools.views) html += report::note(tools.viewNote);
+  for (const std::string& view : tools.views ? tools.viewNames : std::vector<std::string>{}) {
+    step(frame.scene + ": view " + view);
+    const std::string png = folder + "/view-" + fileSafe(view) + ".png";
+    std::vector<std::string> childArgs = {"render", frame.scene, "--view", view, "--out", (work / png).string(),
+                                          "--quiet", "--threads", std::to_string(frame.threads)};
+    const std::vector<std::string> options = frameOptions(frame, args);
+    childArgs.insert(childArgs.end(), options.begin(), options.end());
+    const ChildRun run = runThisProgram(childArgs, "raster render --view " + view, scratch);
+    const fs::path sidecar = (work / png).replace_extension(".json");
+    if (run.status != 0 || !fs::is_regular_file(work / png)) {
+      html += report::note("View " + view + ": `raster render --view " + view + "` failed (exit status " +
+                           std::to_string(run.status) + "): " + lastLine(run.output));
+      continue;
+    }
+    std::string viewHtml = "<div class=\"row\">" + report::figure(png, view) + "<div>";
+    json sidecarRecord;
+    if (fs::is_regular_file(sidecar)) {
+      try {
+        sidecarRecord = json::parse(readFile(sidecar));
+        viewHtml += report::sidecarTable(sidecarRecord, "view-" + folder + "-" + fileSafe(view));
+      } catch (const json::exception& e) {
+        viewHtml += report::note("The sidecar " + sidecar.filename().string() + " is not JSON: " + e.what());
+      }
+      viewHtml += "<p><a href=\"" + report::escape(folder + "/" + sidecar.filename().string()) + "\">" +
+                  report::escape(sidecar.filename().string()) + "</a></p>";
+    }
+    html += "<h4>" + report::escape(view) + "</h4>" + viewHtml + "</div></div>\n";
+    record.push_back({{"view", view}, {"image", png}, {"sidecar", sidecarRecord}});
+  }
+
+  return html;
+}
+
+// The pixel histories of the chosen pixels, by `raster trace` in a child process each.
+std::string tracesHtml(const SceneWork& scene, const std::vector<report::ChosenPixel>& pixels,
+                       const std::string& reference, json& record) {
+  const Frame& frame = scene.frame;
+  const ReportArgs& args = scene.args;
+  const Tools& tools = scene.tools;
+  const std::string& folder = scene.folder;
+  const fs::path& work = scene.work;
+  const fs::path& scratch = scene.scratch;
+  const auto& step = scene.step;
+  std::string html;
+  html += "<h3>Pixel histories</h3>\n";
+  if (!tools.trace)
+    html += report::note("Pixel histories: this build has no `raster trace` command, so the report shows none.");
+  else if (!pixels.empty())
+    html += "<p>The worst differing pixels of the final image first (largest channel difference against " +
+            report::escape(reference) + "), then interior pixels. Open a pixel, then a pass.</p>\n";
+  for (const report::ChosenPixel& pixel : tools.trace ? pixels : std::vector<report::ChosenPixel>{}) {
+    const std::string at = std::to_string(pixel.x) + "," + std::to_string(pixel.y);
+    step(frame.scene + ": trace " + at);
+    const std::string file = folder + "/trace-" + std::to_string(pixel.x) + "-" + std::to_string(pixel.y) + ".json";
+    std::vector<std::string> childArgs = {"trace", frame.scene, "--pixel", at, "--json", (work / file).string()};
+    const std::vector<std::string> options = frameOptions(frame, args);
+    childArgs.insert(childArgs.end(), options.begin(), options.end());
+    const ChildRun run = runThisProgram(childArgs, "raster trace " + frame.scene + " --pixel " + at, scratch);
+    const std::string label = "pixel (" + at + "), difference " + std::to_string(pixel.difference);
+    if (run.status != 0 || !fs::is_regular_file(work / file)) {
+      html += report::note(label + ": `raster trace` failed (exit status " + std::to_string(run.status) + "): " +
+                           lastLine(run.output));
+      continue;
+    }
+    json trace;
+    try {
+      trace = json::parse(readFile(work / file));
+    } catch (const json::exception& e) {
+      throw std::runtime_error("raster trace wrote " + file + ", which is not JSON: " + e.what());
+    }
+    html += "<p>" + report::escape(label) + " (<a href=\"" + report::escape(file) + "\">JSON</a>)</p>\n" +
+            report::tracePanel(trace, "trace-" + folder + "-" + std::to_string(pixel.x) + "-" + std::to_string(pixel.y));
+    record.push_back({{"pixel", {pixel.x, pixel.y}}, {"difference", pixel.difference}, {"json", file}});
+  }
+  return html;
 }
 
 }  // namespace
@@ -364,72 +460,11 @@ int runReport(const ReportArgs& args) {
       sceneRecord["targets"].push_back(statsRecord);
     }
 
-    // Stage views, as `raster render --view` lists them.
-    html += "<h3>Stage views</h3>\n";
-    if (!tools.views) html += report::note(tools.viewNote);
-    for (const std::string& view : tools.views ? tools.viewNames : std::vector<std::string>{}) {
-      step(frame.scene + ": view " + view);
-      const std::string png = folder + "/view-" + fileSafe(view) + ".png";
-      std::vector<std::string> childArgs = {"render", frame.scene, "--view", view, "--out", (work.path / png).string(),
-                                            "--quiet", "--threads", std::to_string(frame.threads)};
-      const std::vector<std::string> options = frameOptions(frame, args);
-      childArgs.insert(childArgs.end(), options.begin(), options.end());
-      const ChildRun run = runThisProgram(childArgs, "raster render --view " + view, scratch);
-      const fs::path sidecar = (work.path / png).replace_extension(".json");
-      if (run.status != 0 || !fs::is_regular_file(work.path / png)) {
-        html += report::note("View " + view + ": `raster render --view " + view + "` failed (exit status " +
-                             std::to_string(run.status) + "): " + lastLine(run.output));
-        continue;
-      }
-      std::string viewHtml = "<div class=\"row\">" + report::figure(png, view) + "<div>";
-      json sidecarRecord;
-      if (fs::is_regular_file(sidecar)) {
-        try {
-          sidecarRecord = json::parse(readFile(sidecar));
-          viewHtml += report::sidecarTable(sidecarRecord, "view-" + folder + "-" + fileSafe(view));
-        } catch (const json::exception& e) {
-          viewHtml += report::note("The sidecar " + sidecar.filename().string() + " is not JSON: " + e.what());
-        }
-        viewHtml += "<p><a href=\"" + report::escape(folder + "/" + sidecar.filename().string()) + "\">" +
-                    report::escape(sidecar.filename().string()) + "</a></p>";
-      }
-      html += "<h4>" + report::escape(view) + "</h4>" + viewHtml + "</div></div>\n";
-      sceneRecord["views"].push_back({{"view", view}, {"image", png}, {"sidecar", sidecarRecord}});
-    }
-
-    // Pixel histories of the chosen pixels.
-    html += "<h3>Pixel histories</h3>\n";
+    const SceneWork scene{frame, args, tools, folder, work.path, scratch, step};
+    html += viewsHtml(scene, sceneRecord["views"]);
     const std::vector<report::ChosenPixel> pixels =
         report::choosePixels(ours.targets.back().image, gl.targets.back().image, args.pixels);
-    if (!tools.trace)
-      html += report::note("Pixel histories: this build has no `raster trace` command, so the report shows none.");
-    else if (!pixels.empty())
-      html += "<p>The worst differing pixels of the final image first (largest channel difference against " +
-              report::escape(gl.backend) + "), then interior pixels. Open a pixel, then a pass.</p>\n";
-    for (const report::ChosenPixel& pixel : tools.trace ? pixels : std::vector<report::ChosenPixel>{}) {
-      const std::string at = std::to_string(pixel.x) + "," + std::to_string(pixel.y);
-      step(frame.scene + ": trace " + at);
-      const std::string file = folder + "/trace-" + std::to_string(pixel.x) + "-" + std::to_string(pixel.y) + ".json";
-      std::vector<std::string> childArgs = {"trace", frame.scene, "--pixel", at, "--json", (work.path / file).string()};
-      const std::vector<std::string> options = frameOptions(frame, args);
-      childArgs.insert(childArgs.end(), options.begin(), options.end());
-      const ChildRun run = runThisProgram(childArgs, "raster trace " + frame.scene + " --pixel " + at, scratch);
-      const std::string label = "pixel (" + at + "), difference " + std::to_string(pixel.difference);
-      if (run.status != 0 || !fs::is_regular_file(work.path / file)) {
-        html += report::note(label + ": `raster trace` failed (exit status " + std::to_string(run.status) + "): " +
-                             lastLine(run.output));
-        continue;
-      }
-      json trace;
-      try {
-        trace = json::parse(readFile(work.path / file));
-      } catch (const json::exception& e) {
-        throw std::runtime_error("raster trace wrote " + file + ", which is not JSON: " + e.what());
-      }
-      html += "<p>" + report::escape(label) + " (<a href=\"" + report::escape(file) + "\">JSON</a>)</p>\n" +
-              report::tracePanel(trace, "trace-" + folder + "-" + std::to_string(pixel.x) + "-" + std::to_string(pixel.y));
-      sceneRecord["traces"].push_back({{"pixel", {pixel.x, pixel.y}}, {"difference", pixel.difference}, {"json", file}});
-    }
+    html += tracesHtml(scene, pixels, gl.backend, sceneRecord["traces"]);
     record["scenes"].push_back(std::move(sceneRecord));
     sections.push_back({"scene-" + folder, "Scene " + frame.scene, html});
   }

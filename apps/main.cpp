@@ -7,6 +7,7 @@
 //   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
 //   raster sweep SCENE ...    one parameter moved toward failure, every side scored (sweep.h);
 //   raster sweep-merge DIR... the shards of a sweep joined into one;
+//   raster report SCENE...    an HTML page: ours, GL and heat maps, metrics, views, traces (report.h);
 //   raster soup --seeds A:B   random triangle soups, this pipeline against llvmpipe (soup.h);
 //   raster trace SCENE --pixel X,Y   pixel history: every fragment of every pass behind one pixel (trace.h);
 //   raster methods, scenes    the methods of each step and the presets; the scene names;
@@ -31,6 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
+#include "apps/report.h"
 #include "apps/report_values.h"
 #include "apps/sides.h"
 #include "apps/soup.h"
@@ -218,11 +220,13 @@ int main(int argc, char** argv) {
   CLI::App* sweep = cli::addSweepCommand(app, sweepArgs);
   cli::SweepMergeArgs sweepMergeArgs;
   CLI::App* sweepMerge = cli::addSweepMergeCommand(app, sweepMergeArgs);
+  cli::ReportArgs reportArgs;
+  CLI::App* report = cli::addReportCommand(app, reportArgs);
   cli::SoupArgs soupArgs;
   CLI::App* soup = cli::addSoupCommand(app, soupArgs);
   cli::TraceArgs traceArgs;
   CLI::App* trace = cli::addTraceCommand(app, traceArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, soup, trace, methods, params, scenes).");
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, report, soup, trace, methods, params, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -247,6 +251,7 @@ int main(int argc, char** argv) {
     if (sweepMerge->parsed()) return cli::runSweepMerge(sweepMergeArgs);
     if (soup->parsed()) return cli::runSoup(soupArgs);
     if (trace->parsed()) return cli::runTrace(traceArgs);
+    if (report->parsed()) return cli::runReport(reportArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "raster/geometry/assemble.h"
-#include "raster/merge/clear.h"
 #include "raster/tile/rasterize_tile.h"
+#include "raster/tile/tile_clear.h"
 #include "raster/util/cycles.h"
 
 namespace raster {
@@ -213,11 +213,14 @@ void Renderer::flush() {
     pool_.parallelFor(bins_.tileCount(), [&](int tile) {
       const TileBounds bounds = bins_.bounds(tile);
       const std::span<const uint32_t> bin = bins_.bin(tile);
-      // A colour clear the tile's first triangle overwrites whole is skipped (same bytes).
-      if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, !firstTriangleOverwritesColor(job, bin, bounds));
-      if (bin.empty()) return;
-      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
-      else rasterizeTile<FastLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
+      // Clears the tile's first triangle overwrites are left out (tile/tile_clear.h); a
+      // depth-only first triangle may have done its own work in place of the depth clear.
+      size_t done = 0;
+      if (clearing)
+        done = scalarOnly_ ? clearTile<ScalarLanes>(job, bin, bounds, pendingClear_) : clearTile<FastLanes>(job, bin, bounds, pendingClear_);
+      if (bin.size() == done) return;
+      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
+      else rasterizeTile<FastLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
     });
     for (const PipelineCounters& c : tileCounters) counters_ += c;
   }

@@ -23,29 +23,12 @@ namespace raster {
 // the rest.
 template <class F, class VisitBlock>
 [[gnu::always_inline]] inline void walkTriangleBlocks(const TileJob& job, const SetupTriangle& tri, const TileBounds& tile, VisitBlock&& visitBlock) {
-  constexpr int kBlock = limits::kBlockSize, kRegion = limits::kRegionSize, kSmallBlocks = 3;
-  static_assert(kSmallBlocks * kBlock < kRegion, "a small triangle's bounds hold no whole region");
+  constexpr int kBlock = limits::kBlockSize, kRegion = limits::kRegionSize;
   using Edge = typename EdgeWalkOf<F>::type;
   const Framebuffer& fb = *job.framebuffer;
   const RasterState& state = job.draws[tri.drawIndex].state;
   const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
   const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
-  // A triangle within 3x3 blocks (hdr's small cubes, far triangles) goes straight to its
-  // blocks: the region level only skips blocks that have no covered pixel anyway and finds
-  // whole regions inside (none fits), so the same blocks get the same bits, in the same
-  // row-major order, for less than the region tests cost.
-  if ((x1 >> 2) - (x0 >> 2) < kSmallBlocks && (y1 >> 2) - (y0 >> 2) < kSmallBlocks) {
-    const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
-    const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
-    for (int blockY = y0 & ~(kBlock - 1); blockY <= y1; blockY += kBlock) {
-      for (int blockX = x0 & ~(kBlock - 1); blockX <= x1; blockX += kBlock) {
-        const uint32_t inside = smallSteps ? blockCoverageSmallSteps(edges, blockX, blockY) : blockCoverage(edges, blockX, blockY);
-        const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
-        if (coverage) visitBlock(blockX, blockY, coverage);
-      }
-    }
-    return;
-  }
   const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
   const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
   // Depth test and write, and no colour the shader writes is kept.

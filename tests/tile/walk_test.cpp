@@ -1,7 +1,7 @@
 // The tile walk (tile/walk.h) visits exactly the pixels whose centres are inside all three
-// edge functions, block by block in row-major order, for triangles small enough to take
-// the direct block path and for larger ones through the regions: at block, region, tile
-// and framebuffer edges, with both lane types' edge forms.
+// edge functions, block by block in row-major order, for triangles of a fraction of a pixel
+// to 40 pixels: at block, region, tile and framebuffer edges, with both lane types' edge
+// forms. (A walk that skips the region level for small triangles must pass it too.)
 #include <doctest/doctest.h>
 
 #include <random>

@@ -11,6 +11,7 @@
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
 #include "raster/tile/rasterize_tile.h"
+#include "raster/tile/tile_clear.h"
 #include "raster/tile/trace_tile.h"
 #include "raster/util/cycles.h"
 
@@ -252,11 +253,14 @@ void Renderer::flush() {
         traceTile(job, bounds, bin, drawBase, triangleOrigins_, *traced, tileCounters[size_t(tile)]);
         return;
       }
-      // A colour clear the tile's first triangle overwrites whole is skipped (same bytes).
-      if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, !firstTriangleOverwritesColor(job, bin, bounds));
-      if (bin.empty()) return;
-      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
-      else rasterizeTile<FastLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
+      // Clears the tile's first triangle overwrites are left out (tile/tile_clear.h); a
+      // depth-only first triangle may have done its own work in place of the depth clear.
+      size_t done = 0;
+      if (clearing)
+        done = scalarOnly_ ? clearTile<ScalarLanes>(job, bin, bounds, pendingClear_) : clearTile<FastLanes>(job, bin, bounds, pendingClear_);
+      if (bin.size() == done) return;
+      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
+      else rasterizeTile<FastLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
     });
     for (const PipelineCounters& c : tileCounters) counters_ += c;
     if (traced) traced->stored = readPixel(framebuffer_, traced->x, traced->y);

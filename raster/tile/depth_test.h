@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "raster/contract.h"
 #include "raster/texture/format.h"
@@ -90,6 +91,28 @@ void depthOnlyRegion(const SetupTriangle& tri, const RasterState& state, Texture
       uint32_t codes[F::kCount];
       depthCodes(clampDepth(fragmentDepth(tri, F(float(x + column)) + columns, py)), depth.format, codes);
       depthTest<F::kCount>(codes, dst + column, texel, (1u << F::kCount) - 1u, state.depthFunc == DepthFunc::Lequal, true);
+    }
+  }
+}
+
+// The depth codes of a triangle of a depth-only draw stored over the rectangle `rect`
+// (inclusive) without reading the buffer: what the walk writes when the triangle covers
+// every pixel centre there and every one of them passes the test (tile/tile_clear.cpp
+// proves it against a pending clear, which this store then replaces). Each pixel's code is
+// computed as depthTestGroup computes it; pixels are exact small integers in any lane.
+template <class F>
+void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const TileBounds& rect) {
+  alignas(64) float columnOffsets[F::kCount];
+  for (int i = 0; i < F::kCount; ++i) columnOffsets[i] = float(i);
+  const F columns = F::load(columnOffsets);
+  for (int y = rect.y0; y <= rect.y1; ++y) {
+    const F py = F(float(y));
+    uint32_t* row = depth.depth.data() + size_t(y) * size_t(width);
+    for (int x = rect.x0; x <= rect.x1; x += F::kCount) {
+      alignas(64) uint32_t codes[F::kCount];
+      depthCodes(clampDepth(fragmentDepth(tri, F(float(x)) + columns, py)), depth.format, codes);
+      if (x + F::kCount - 1 <= rect.x1) std::memcpy(row + x, codes, sizeof codes);
+      else std::memcpy(row + x, codes, size_t(rect.x1 + 1 - x) * sizeof(uint32_t));
     }
   }
 }

@@ -21,17 +21,6 @@ constexpr size_t kVisibilityFirstMinTriangles = 16;
 
 }  // namespace
 
-bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile) {
-  if (bin.empty()) return false;
-  const SetupTriangle& tri = job.triangles[bin.front()];
-  const DrawRecord& draw = job.draws[tri.drawIndex];
-  const Framebuffer& fb = *job.framebuffer;
-  if (draw.state.blendAdditive || (draw.state.depthTest && fb.depth) ||
-      colorOutputsWritten(draw, fb) != int(fb.colors.size()))
-    return false;
-  return triangleCoversRect(tri, tile);
-}
-
 template <class F>
 void rasterizeTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, PipelineCounters& counters) {
   const Framebuffer& fb = *job.framebuffer;

@@ -24,13 +24,6 @@
 
 namespace raster {
 
-// True when the bin's first triangle writes every colour texel of the tile: it covers
-// every pixel centre there, its draw writes every colour target of the framebuffer without
-// blending, and no depth test can reject one of its fragments. A colour clear of the tile
-// would be overwritten before anything reads it (the fullscreen triangles of the
-// post-processing passes).
-bool firstTriangleOverwritesColor(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile);
-
 // Rasterizes one tile with lane type F (FastLanes, or ScalarLanes for the reference path).
 template <class F>
 void rasterizeTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, PipelineCounters& counters);

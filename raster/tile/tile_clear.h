@@ -1,0 +1,44 @@
+// A tile's share of the pass's clear, carried out at the start of the tile's task: the
+// clears that the tile's first triangle overwrites before anything reads them are not
+// done at all (same bytes, less memory traffic).
+//
+//   colour  the first triangle covers every pixel centre of the tile, writes every colour
+//           target without blending, and every one of its fragments passes the depth test
+//           (it has none, or the tile's depth is being cleared to a value all of them pass:
+//           the floor under a camera, a post pass's fullscreen triangle);
+//   depth   the same first triangle belongs to a depth-only draw that writes depth: its
+//           codes are stored in place of the clear, without a test, and the walk starts
+//           at the second triangle (shadow maps whose first triangle fills the tile).
+//
+// Whether every fragment passes is proven from the z plane's extremes over the tile with a
+// bound on the float rounding of its evaluation, so a triangle near the cleared depth
+// keeps the clear.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "raster/contract.h"
+
+namespace raster {
+
+struct TileClearPlan {
+  ClearValues rest;              // the clears still to be done (merge::clearRect)
+  bool firstStoresDepth = false; // the first triangle's depth codes replace the depth clear
+};
+
+// What of `pending` the tile needs, given its bin (API order).
+TileClearPlan planTileClear(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile,
+                            const ClearValues& pending);
+
+// True when the triangle's depth test passes at every pixel centre of `rect` against a
+// buffer holding `stored` everywhere (the test as its draw's state asks for it).
+bool depthTestPassesEverywhere(const SetupTriangle& tri, const RasterState& state, TexelFormat format,
+                               uint32_t stored, const TileBounds& rect);
+
+// Clears the tile as planned; returns how many of the bin's first triangles that did the
+// work of (0 or 1), which the walk then skips. F is the lane type the tile is walked with.
+template <class F>
+size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending);
+
+}  // namespace raster

@@ -10,6 +10,7 @@
 
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
+#include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
 #include "raster/util/cycles.h"
 
@@ -210,16 +211,26 @@ void Renderer::flush() {
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
     std::vector<PipelineCounters> tileCounters(size_t(bins_.tileCount()));
+    // A stage view records the pass; its fragment counts take the instrumented walk.
+    ViewPass* view = viewRecorder_ ? &viewRecorder_->beginPass(job, bins_.tilesX(), bins_.tilesY()) : nullptr;
+    const bool inspect = view && viewRecorder_->what() == ViewRecorder::Record::Fragments;
     pool_.parallelFor(bins_.tileCount(), [&](int tile) {
+      const uint64_t viewStart = view ? cycleCount() : 0;
       const TileBounds bounds = bins_.bounds(tile);
       const std::span<const uint32_t> bin = bins_.bin(tile);
       // A colour clear the tile's first triangle overwrites whole is skipped (same bytes).
       if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, !firstTriangleOverwritesColor(job, bin, bounds));
-      if (bin.empty()) return;
-      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
-      else rasterizeTile<FastLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
+      if (!bin.empty()) {
+        if (inspect) inspectTile(job, bounds, bin, view->counts, tileCounters[size_t(tile)]);
+        else if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
+        else rasterizeTile<FastLanes>(job, bounds, bin, tileCounters[size_t(tile)]);
+      }
+      if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
     });
-    for (const PipelineCounters& c : tileCounters) counters_ += c;
+    PipelineCounters passCounters;
+    for (const PipelineCounters& c : tileCounters) passCounters += c;
+    counters_ += passCounters;
+    if (view) viewRecorder_->endPass(passCounters);
   }
   pendingClear_ = {};
   triangles_.clear();

@@ -24,6 +24,7 @@
 #include "raster/geometry/setup.h"
 #include "raster/shader/shader_instance.h"
 #include "raster/util/parallel.h"
+#include "raster/view_recorder.h"
 
 namespace raster {
 
@@ -51,6 +52,9 @@ class Renderer {
   // shaded in order. The output bytes are the same either way.
   void setVisibilityFirst(bool allowed) { visibilityFirstAllowed_ = allowed; }
   int threads() const { return pool_.threads(); }
+  // Records every pass flushed from now on for the stage views (view_recorder.h); null
+  // (the default) records nothing. The output bytes are the same either way.
+  void setViewRecorder(ViewRecorder* recorder) { viewRecorder_ = recorder; }
 
  private:
   // One chunk of a draw set up in parallel: its own lists, kept so no draw allocates them anew.
@@ -83,6 +87,7 @@ class Renderer {
   PipelineCounters counters_;
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
+  ViewRecorder* viewRecorder_ = nullptr;
 };
 
 }  // namespace raster

@@ -5,13 +5,20 @@
 
 #include "scenes/backend.h"
 
+namespace raster {
+class ViewRecorder;   // raster/view_recorder.h
+}
+
 namespace scenes {
 
 // This project's pipeline. threads = 0 uses every core; any count gives the same bytes.
 // scalarOnly turns every SIMD fast path off (plain C++ lanes); visibilityFirst = false
 // shades every fragment that passes its depth test, in order, instead of only the visible
 // ones (raster::Renderer::setVisibilityFirst). The bytes are the same either way.
-std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true);
+// A recorder, when given, records every pass for the stage views (raster/view_recorder.h),
+// and is told each draw's program; it must outlive the backend.
+std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true,
+                                           raster::ViewRecorder* recorder = nullptr);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

@@ -24,12 +24,15 @@ struct Mesh {
 
 class RasterBackend final : public Backend {
  public:
-  RasterBackend(int threads, bool scalarOnly, bool visibilityFirst) : renderer_(threads, scalarOnly) {
+  RasterBackend(int threads, bool scalarOnly, bool visibilityFirst, raster::ViewRecorder* recorder)
+      : renderer_(threads, scalarOnly), recorder_(recorder) {
     renderer_.setVisibilityFirst(visibilityFirst);
+    renderer_.setViewRecorder(recorder);
     textures_.emplace_back();     // handle 0: no texture
     framebuffers_.emplace_back(); // handle 0: the default framebuffer
     meshes_.emplace_back();
     programs_.emplace_back();
+    programNames_.emplace_back();
     resizeDefaultFramebuffer(640, 480);
   }
 
@@ -58,6 +61,7 @@ class RasterBackend final : public Backend {
 
   Handle createProgram(const std::string& program) override {
     programs_.push_back(makeBoundProgram(program));
+    programNames_.push_back(program);
     return Handle(programs_.size() - 1);
   }
 
@@ -141,7 +145,9 @@ class RasterBackend final : public Backend {
     rs.offsetFactor = state.offsetFactor;
     rs.offsetUnits = state.offsetUnits;
     rs.blendAdditive = state.blendAdditive;
-    renderer_.draw(programAt(program).instantiate(units_), m.stream, m.data.indices, rs, instanceCount);
+    BoundProgram& bound = programAt(program);
+    if (recorder_) recorder_->nameNextDraw(programNames_[size_t(program)]);
+    renderer_.draw(bound.instantiate(units_), m.stream, m.data.indices, rs, instanceCount);
   }
 
   void finish() override { renderer_.flush(); }
@@ -261,13 +267,16 @@ class RasterBackend final : public Backend {
   std::vector<raster::Framebuffer> framebuffers_;
   std::vector<std::unique_ptr<Mesh>> meshes_;
   std::vector<std::unique_ptr<BoundProgram>> programs_;
+  std::vector<std::string> programNames_;   // as created, for the stage views' pass records
+  raster::ViewRecorder* recorder_;          // null unless a stage view is recording
   TextureUnits units_{};
 };
 
 }  // namespace
 
-std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst) {
-  return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst);
+std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst,
+                                           raster::ViewRecorder* recorder) {
+  return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst, recorder);
 }
 
 }  // namespace scenes

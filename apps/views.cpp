@@ -270,7 +270,7 @@ PassFigures figuresOf(View view, const ViewPass& pass) {
       f.json["tile_cycles"] = statsJson(s);
       f.json["tiles"] = {pass.tilesX, pass.tilesY};
       f.scaleMax = s.max / 1000.0;
-      f.line = std::to_string(pass.tileCycles.size()) + " tiles, max " + fixedDigits(s.max / 1000.0, 0) + " kcyc, mean " +
+      f.line = std::to_string(pass.tileCycles.size()) + (pass.tileCycles.size() == 1 ? " tile, max " : " tiles, max ") + fixedDigits(s.max / 1000.0, 0) + " kcyc, mean " +
                fixedDigits(s.mean / 1000.0, 0) + " kcyc";
       break;
     }
@@ -392,12 +392,18 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
   if (info->view == View::Helpers) scaleMax = 0.75;
   if ((info->view == View::Overdraw || info->view == View::DepthKills) && scaleMax < 1) scaleMax = 1;
   if (info->view == View::TileCost && !(scaleMax > 0)) scaleMax = 1;
+  // Where a value sits on the ramp, 0..1. Tile times span decades (a tile of a fullscreen
+  // pass against one crossed by a thousand cubes), so their scale is logarithmic.
+  const bool logScale = info->view == View::TileCost;
+  auto position = [&](double v) {
+    return logScale ? std::log10(1.0 + std::max(v, 0.0)) / std::log10(1.0 + scaleMax) : v / scaleMax;
+  };
 
   // Layout: a cell per shown pass, in a grid; one pass alone keeps its own size.
   const bool native = shown.size() == 1;
   Layout layout;
   layout.columns = shown.size() <= 2 ? int(shown.size()) : shown.size() <= 4 ? 2 : 3;
-  layout.cellWidth = native ? shown[0]->width : std::min(frame.width, 480);
+  layout.cellWidth = native ? shown[0]->width : std::clamp(frame.width, 220, 480);   // room for the labels
   layout.cellHeight = native ? shown[0]->height : std::max(1, int(std::lround(double(layout.cellWidth) * frame.height / frame.width)));
   layout.scale = layout.columns * layout.cellWidth >= 1200 ? 2 : 1;
   layout.margin = 8 * layout.scale;
@@ -409,9 +415,10 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
   const Rgb background{24, 24, 24}, ink{230, 230, 230}, dim{160, 160, 160}, nothing{64, 64, 64};
   const std::string heading = std::string(info->title) + " - " + frame.scene + ", " + sizeAndTime(frame) +
                               (frame.scalar ? ", --scalar" : "");
+  const std::vector<std::string> headingLines = wrapText(heading, textWidth, layout.scale);
   const std::vector<std::string> notes = wrapText(info->notes, textWidth, layout.scale);
   const int rows = (int(shown.size()) + layout.columns - 1) / layout.columns;
-  const int headerHeight = layout.margin + line * (1 + int(notes.size())) + layout.margin;
+  const int headerHeight = layout.margin + line * int(headingLines.size() + notes.size()) + layout.margin;
   const int gridHeight = rows * (layout.labelHeight + layout.cellHeight + layout.margin);
 
   // The legend: a ramp with numbers for the heat maps, a swatch per program for triangles.
@@ -423,13 +430,26 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
       if (!programTriangles.count(name)) programs.push_back(name);
       ++programTriangles[name];
     }
+  const char* unit = info->view == View::Overdraw     ? "fragments shaded per pixel"
+                     : info->view == View::DepthKills ? "depth-test rejects per pixel"
+                     : info->view == View::Helpers    ? "helper lanes / lanes shaded, per quad"
+                                                      : "kcyc per tile (1000 time-stamp-counter cycles), log scale";
+  const std::vector<std::string> scaleLines = wrapText(
+      std::string("colour scale: ") + unit + (native ? "" : "; scaled-down cells show the mean of the pixels under them"),
+      textWidth, layout.scale);
   const int legendHeight = info->view == View::Triangles ? line * (int(programs.size()) + 1) + layout.margin
-                                                          : line * 4 + layout.margin;
+                                                          : line * (int(scaleLines.size()) + 3) + layout.margin;
   Canvas canvas(layout.width, headerHeight + gridHeight + legendHeight + layout.margin, background);
 
   int y = layout.margin;
-  canvas.text(layout.margin, y, heading, ink, layout.scale);
-  for (const std::string& n : notes) canvas.text(layout.margin, y += line, n, dim, layout.scale);
+  for (const std::string& h : headingLines) {
+    canvas.text(layout.margin, y, h, ink, layout.scale);
+    y += line;
+  }
+  for (const std::string& n : notes) {
+    canvas.text(layout.margin, y, n, dim, layout.scale);
+    y += line;
+  }
   const int gridTop = headerHeight;
 
   for (size_t i = 0; i < shown.size(); ++i) {
@@ -464,7 +484,7 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
     for (int v = 0; v < h; ++v)
       for (int u = 0; u < w; ++u) {
         const size_t at = size_t(v) * size_t(w) + size_t(u);
-        canvas.set(ix + u, iy + v, field.den[at] > 0 ? rampColor(field.num[at] / field.den[at] / scaleMax) : nothing);
+        canvas.set(ix + u, iy + v, field.den[at] > 0 ? rampColor(position(field.num[at] / field.den[at])) : nothing);
       }
   }
 
@@ -483,18 +503,18 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
     }
     legend["background"] = "black";
   } else {
-    const char* unit = info->view == View::Overdraw     ? "fragments shaded per pixel"
-                       : info->view == View::DepthKills ? "depth-test rejects per pixel"
-                       : info->view == View::Helpers    ? "helper lanes / lanes shaded, per quad"
-                                                        : "kcyc per tile (1 kcyc = 1000 time-stamp-counter cycles)";
-    canvas.text(layout.margin, y, std::string("colour scale: ") + unit + (native ? "" : "; scaled-down cells show the mean of the pixels under them"),
-                ink, layout.scale);
-    const int barX = layout.margin, barY = y + line + layout.scale * 2, barWidth = std::min(textWidth - 4 * line, 400 * layout.scale);
+    for (size_t i = 0; i < scaleLines.size(); ++i) canvas.text(layout.margin, y + int(i) * line, scaleLines[i], ink, layout.scale);
+    const int barX = layout.margin, barY = y + int(scaleLines.size()) * line + layout.scale * 2, barWidth = std::min(textWidth - 100 * layout.scale, 400 * layout.scale);
     for (int u = 0; u < barWidth; ++u) canvas.fill(barX + u, barY, 1, line, rampColor(double(u) / (barWidth - 1)));
     const bool whole = info->view == View::Overdraw || info->view == View::DepthKills;
-    const std::vector<double> ticks = ticksFor(scaleMax, whole);
+    std::vector<double> ticks = ticksFor(scaleMax, whole);
+    if (logScale) {   // 0, then each power of ten that leaves room before the largest value
+      ticks = {0.0};
+      for (double decade = 1; decade * 3 < scaleMax; decade *= 10) ticks.push_back(decade);
+      ticks.push_back(scaleMax);
+    }
     for (double t : ticks) {
-      const int tx = barX + int(std::lround(t / scaleMax * (barWidth - 1)));
+      const int tx = barX + int(std::lround(position(t) * (barWidth - 1)));
       canvas.fill(tx, barY + line, layout.scale, layout.scale * 3, ink);
       const std::string label = tickText(info->view, t);
       canvas.text(std::clamp(tx - Canvas::textWidth(label, layout.scale) / 2, 0, layout.width - Canvas::textWidth(label, layout.scale)),
@@ -504,7 +524,8 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
       canvas.fill(barX + barWidth + 2 * layout.margin, barY, line, line, nothing);
       canvas.text(barX + barWidth + 3 * layout.margin + line, barY + layout.scale, "no lane", ink, layout.scale);
     }
-    legend = {{"quantity", unit}, {"min", 0}, {"max", scaleMax}, {"ticks", ticks}, {"ramp", "viridis"}};
+    legend = {{"quantity", unit}, {"min", 0}, {"max", scaleMax}, {"ticks", ticks}, {"ramp", "viridis"},
+              {"scale", logScale ? "log10(1 + value)" : "linear"}};
     if (info->view == View::Helpers) legend["no_data_colour"] = "grey: no lane shaded in the quad";
   }
 

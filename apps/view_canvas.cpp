@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 // stb_easy_font is a header of static functions, some of which this file does not call.
 #pragma GCC diagnostic push
@@ -85,7 +86,8 @@ int Canvas::text(int x, int y, const std::string& text, Rgb c, int scale) {
   for (int q = 0; q < quads; ++q) {
     float minX = 1e9f, minY = 1e9f, maxX = -1e9f, maxY = -1e9f;
     for (int v = 0; v < 4; ++v) {
-      const float* vertex = reinterpret_cast<const float*>(buffer.data() + (q * 4 + v) * 16);
+      float vertex[2];   // x, y of a 16-byte vertex (then z and a colour)
+      std::memcpy(vertex, buffer.data() + (q * 4 + v) * 16, sizeof vertex);
       minX = std::min(minX, vertex[0]);
       maxX = std::max(maxX, vertex[0]);
       minY = std::min(minY, vertex[1]);

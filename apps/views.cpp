@@ -324,6 +324,80 @@ std::pair<int, int> cellImageSize(const Layout& layout, const ViewPass& pass, bo
   return {std::max(1, int(std::lround(pass.width * s))), std::max(1, int(std::lround(pass.height * s)))};
 }
 
+// Renders the frame with a recorder of the view's kind; returns the targets read back (the
+// final image, or every target for --dump).
+std::vector<scenes::Target> recordFrame(const Frame& frame, const ViewInfo& info, bool everyTarget, ViewRecorder& recorder) {
+  // Passes drawn while the scene sets up (none today) are not the frame's.
+  std::vector<scenes::Target> targets;
+  const raster::ScopedMethods methods(frame.methods);
+  std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, sceneOptions(frame));
+  std::unique_ptr<scenes::Backend> backend = scenes::makeRasterBackend(frame.threads, frame.scalar, true, &recorder);
+  if (!frame.quiet)
+    std::cerr << "rendering " << frame.scene << " with raster at " << sizeAndTime(frame) << ", recording the "
+              << info.name << " view ..." << std::endl;
+  backend->resizeDefaultFramebuffer(frame.width, frame.height);
+  scene->setup(*backend);
+  backend->finish();
+  if (!recorder.passes().empty())
+    throw std::runtime_error("scene " + frame.scene + " drew while setting up; the views cannot tell those passes from the frame's");
+  scene->renderFrame(*backend, frame.time);
+  if (everyTarget) return scene->readTargets(*backend);
+  targets.push_back(scene->readFinal(*backend));
+  return targets;
+}
+
+// The sidecar: the frame, every pass's figures, the legend, and the totals over the frame.
+Json sidecarOf(const ViewInfo* info, const Frame& frame, const std::vector<ViewPass>& passes,
+               const std::vector<const ViewPass*>& shown, const std::vector<PassFigures>& figures, const Json& legend) {
+  Json json;
+  json["view"] = info->name;
+  json["about"] = info->notes;
+  json["scene"] = frame.scene;
+  json["size"] = {frame.width, frame.height};
+  json["time"] = frame.time;
+  json["threads"] = frame.threads;
+  json["scalar"] = frame.scalar;
+  json["methods"] = raster::methodLabel(frame.methods);
+  json["semantics"] = info->record == ViewRecorder::Record::Fragments
+                          ? "GL: every fragment in API order, one 2x2 quad per lane group (the instrumented walk)"
+                          : "this pipeline's own path, fast paths included";
+  json["passes_shown"] = Json::array();
+  for (const ViewPass* p : shown) json["passes_shown"].push_back(p->index);
+  json["legend"] = legend;
+  json["passes"] = Json::array();
+  for (const PassFigures& f : figures) json["passes"].push_back(f.json);
+  Json totals = {{"passes", passes.size()}};
+  uint64_t lanesCovered = 0, lanesShaded = 0, triangles = 0, tileCycles = 0, shaded = 0, depthOnly = 0, kills = 0,
+           uncovered = 0, killed = 0;
+  for (const ViewPass& p : passes) {
+    lanesCovered += p.counters.lanesCovered;
+    lanesShaded += p.counters.lanesShaded;
+    triangles += p.triangles;
+    for (uint64_t c : p.tileCycles) tileCycles += c;
+    shaded += sum(p.counts.shaded);
+    depthOnly += sum(p.counts.depthOnly);
+    kills += sum(p.counts.depthKills);
+    uncovered += sum(p.counts.helpersUncovered);
+    killed += sum(p.counts.helpersKilled);
+  }
+  totals["lanes_covered"] = lanesCovered;
+  totals["lanes_shaded"] = lanesShaded;
+  totals["triangles"] = triangles;
+  switch (info->view) {
+    case View::Overdraw: totals["fragments_shaded"] = shaded; totals["depth_only_fragments"] = depthOnly; break;
+    case View::DepthKills: totals["depth_kills"] = kills; totals["early"] = kills; totals["late"] = 0; break;
+    case View::Helpers:
+      totals["helpers"] = {{"uncovered", uncovered}, {"depth_failed", killed}, {"off_framebuffer", lanesShaded - lanesCovered - uncovered - killed},
+                           {"total", lanesShaded - lanesCovered}};
+      break;
+    case View::TileCost: totals["tile_cycles"] = tileCycles; totals["varies"] = "timing: differs from run to run"; break;
+    case View::Triangles: break;
+  }
+  json["totals"] = totals;
+
+  return json;
+}
+
 }  // namespace
 
 const std::vector<std::string>& viewNames() {
@@ -357,24 +431,8 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
   checkOutputFile("--out (its sidecar JSON)", sidecar);
   if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);
 
-  // The frame, recorded. Passes drawn while the scene sets up (none today) are not the frame's.
   ViewRecorder recorder(info->record);
-  std::vector<scenes::Target> targets;
-  {
-    const raster::ScopedMethods methods(frame.methods);
-    std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, sceneOptions(frame));
-    std::unique_ptr<scenes::Backend> backend = scenes::makeRasterBackend(frame.threads, frame.scalar, true, &recorder);
-    if (!frame.quiet)
-      std::cerr << "rendering " << frame.scene << " with raster at " << sizeAndTime(frame) << ", recording the "
-                << info->name << " view ..." << std::endl;
-    backend->resizeDefaultFramebuffer(frame.width, frame.height);
-    scene->setup(*backend);
-    backend->finish();
-    if (!recorder.passes().empty()) throw std::runtime_error("scene " + frame.scene + " drew while setting up; the views cannot tell those passes from the frame's");
-    scene->renderFrame(*backend, frame.time);
-    if (args.dump.empty()) targets.push_back(scene->readFinal(*backend));
-    else targets = scene->readTargets(*backend);
-  }
+  const std::vector<scenes::Target> targets = recordFrame(frame, *info, !args.dump.empty(), recorder);
   const std::vector<ViewPass>& passes = recorder.passes();
   if (passes.empty()) throw std::runtime_error("scene " + frame.scene + " flushed no pass");
   if (onlyPass && *onlyPass >= passes.size())
@@ -529,53 +587,7 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
     if (info->view == View::Helpers) legend["no_data_colour"] = "grey: no lane shaded in the quad";
   }
 
-  // The sidecar: every pass, and the totals over the frame.
-  Json json;
-  json["view"] = info->name;
-  json["about"] = info->notes;
-  json["scene"] = frame.scene;
-  json["size"] = {frame.width, frame.height};
-  json["time"] = frame.time;
-  json["threads"] = frame.threads;
-  json["scalar"] = frame.scalar;
-  json["methods"] = raster::methodLabel(frame.methods);
-  json["semantics"] = info->record == ViewRecorder::Record::Fragments
-                          ? "GL: every fragment in API order, one 2x2 quad per lane group (the instrumented walk)"
-                          : "this pipeline's own path, fast paths included";
-  json["passes_shown"] = Json::array();
-  for (const ViewPass* p : shown) json["passes_shown"].push_back(p->index);
-  json["legend"] = legend;
-  json["passes"] = Json::array();
-  for (const PassFigures& f : figures) json["passes"].push_back(f.json);
-  Json totals = {{"passes", passes.size()}};
-  uint64_t lanesCovered = 0, lanesShaded = 0, triangles = 0, tileCycles = 0, shaded = 0, depthOnly = 0, kills = 0,
-           uncovered = 0, killed = 0;
-  for (const ViewPass& p : passes) {
-    lanesCovered += p.counters.lanesCovered;
-    lanesShaded += p.counters.lanesShaded;
-    triangles += p.triangles;
-    for (uint64_t c : p.tileCycles) tileCycles += c;
-    shaded += sum(p.counts.shaded);
-    depthOnly += sum(p.counts.depthOnly);
-    kills += sum(p.counts.depthKills);
-    uncovered += sum(p.counts.helpersUncovered);
-    killed += sum(p.counts.helpersKilled);
-  }
-  totals["lanes_covered"] = lanesCovered;
-  totals["lanes_shaded"] = lanesShaded;
-  totals["triangles"] = triangles;
-  switch (info->view) {
-    case View::Overdraw: totals["fragments_shaded"] = shaded; totals["depth_only_fragments"] = depthOnly; break;
-    case View::DepthKills: totals["depth_kills"] = kills; totals["early"] = kills; totals["late"] = 0; break;
-    case View::Helpers:
-      totals["helpers"] = {{"uncovered", uncovered}, {"depth_failed", killed}, {"off_framebuffer", lanesShaded - lanesCovered - uncovered - killed},
-                           {"total", lanesShaded - lanesCovered}};
-      break;
-    case View::TileCost: totals["tile_cycles"] = tileCycles; totals["varies"] = "timing: differs from run to run"; break;
-    case View::Triangles: break;
-  }
-  json["totals"] = totals;
-
+  const Json json = sidecarOf(info, frame, passes, shown, figures, legend);
   compare::writePng(out, canvas.image());
   compare::writeOutputFile(sidecar, json.dump(2) + "\n");
   std::cout << "wrote " << out << " and " << sidecar << " (" << info->name << ", " << shown.size() << " of "

@@ -12,6 +12,7 @@ packages=(
   libosmesa6-dev mesa-common-dev libgl-dev
   python3-matplotlib
   python3-distributed        # bench/dask_sweep.py: sweeps sharded on a Dask cluster
+  chromium chromium-driver python3-selenium   # the report_chromium test opens `raster report` in a browser
   libbenchmark-dev           # bench/micro: the microbenchmarks (raster_micro)
   clang libclang-rt-14-dev   # libFuzzer and the sanitizer runtimes for clang (tests/configs/fuzz.sh)
 )

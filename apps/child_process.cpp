@@ -35,7 +35,12 @@ int runChildProcess(const std::vector<std::string>& argv, const std::string& wha
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  if (options.silenceStdout) posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  if (!options.outputPath.empty()) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, options.outputPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  } else if (options.silenceStdout) {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  }
   pid_t pid = 0;
   const int error = options.searchPath
                         ? posix_spawnp(&pid, args[0].c_str(), &actions, nullptr, argvPointers.data(), envPointers.data())

@@ -14,6 +14,7 @@ struct ChildOptions {
   bool searchPath = false;             // look `argv[0]` up in PATH (python3), else a path
   bool silenceStdout = true;           // the child's stdout to /dev/null; stderr stays ours
   std::vector<std::string> setEnvironment;   // NAME=VALUE entries replacing this process's
+  std::string outputPath;              // non-empty: the child's stdout and stderr both into this file
 };
 
 // Runs argv[0] with argv and waits. Returns its exit status; throws std::runtime_error,

@@ -24,6 +24,8 @@ constexpr int kMaxSide = 16384;      // GL_MAX_TEXTURE_SIZE of llvmpipe
 constexpr int kMaxThreads = 1024;    // far above any machine this runs on
 constexpr int kMaxInstances = 200000;
 
+}  // namespace
+
 void addFrameOptions(CLI::App& command, FrameArgs& args) {
   std::string names;
   for (const auto& name : scenes::sceneNames()) names += (names.empty() ? "" : ", ") + name;
@@ -46,6 +48,8 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
   addSetOption(command, args.sets);
   addQuietOption(command, args.quiet);
 }
+
+namespace {
 
 // A non-negative decimal integer that fits in uint64_t.
 std::optional<uint64_t> parseUnsigned(const std::string& text) {

@@ -81,6 +81,10 @@ struct Thresholds {
   std::optional<uint64_t> maxDepthLsb;
 };
 
+// Adds the options every frame command shares (the scene, --time, --size, --threads,
+// --preset, --set, ...) to a command.
+void addFrameOptions(CLI::App& command, FrameArgs& args);
+
 // Adds the subcommands to app, bound to args (parsed by app.parse()).
 CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
 CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);

@@ -8,7 +8,9 @@
 //   raster tradeoff SCENE ... every method set against llvmpipe and softpipe (tradeoff.h);
 //   raster sweep SCENE ...    one parameter moved toward failure, every side scored (sweep.h);
 //   raster sweep-merge DIR... the shards of a sweep joined into one;
+//   raster report SCENE...    an HTML page: ours, GL and heat maps, metrics, views, traces (report.h);
 //   raster soup --seeds A:B   random triangle soups, this pipeline against llvmpipe (soup.h);
+//   raster trace SCENE --pixel X,Y   pixel history: every fragment of every pass behind one pixel (trace.h);
 //   raster methods, scenes    the methods of each step and the presets; the scene names;
 //   raster params SCENE       the scene's parameters, set with --set NAME=VALUE.
 // Options and their checks live in cli_options.*; everything is validated before rendering.
@@ -31,10 +33,12 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.h"
+#include "apps/report.h"
 #include "apps/report_values.h"
 #include "apps/sides.h"
 #include "apps/soup.h"
 #include "apps/sweep.h"
+#include "apps/trace.h"
 #include "apps/tradeoff.h"
 #include "apps/views.h"
 #include "apps/cli_options.h"
@@ -220,9 +224,13 @@ int main(int argc, char** argv) {
   CLI::App* sweep = cli::addSweepCommand(app, sweepArgs);
   cli::SweepMergeArgs sweepMergeArgs;
   CLI::App* sweepMerge = cli::addSweepMergeCommand(app, sweepMergeArgs);
+  cli::ReportArgs reportArgs;
+  CLI::App* report = cli::addReportCommand(app, reportArgs);
   cli::SoupArgs soupArgs;
   CLI::App* soup = cli::addSoupCommand(app, soupArgs);
-  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, soup, methods, params, scenes).");
+  cli::TraceArgs traceArgs;
+  CLI::App* trace = cli::addTraceCommand(app, traceArgs);
+  app.footer("Run 'raster COMMAND --help' for a command's options (render, compare, bench, tradeoff, sweep, sweep-merge, report, soup, trace, methods, params, scenes).");
 
   // Parse: --help prints and exits 0; a malformed command line is bad input.
   try {
@@ -246,6 +254,8 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) return cli::runSweep(sweepArgs);
     if (sweepMerge->parsed()) return cli::runSweepMerge(sweepMergeArgs);
     if (soup->parsed()) return cli::runSoup(soupArgs);
+    if (trace->parsed()) return cli::runTrace(traceArgs);
+    if (report->parsed()) return cli::runReport(reportArgs);
     return render->parsed() ? runRender(renderArgs) : runCompare(compareArgs);
   } catch (const UsageError& e) {
     std::cerr << "raster: " << oneLine(e.what()) << std::endl;

@@ -198,7 +198,7 @@ std::string programsOf(const ViewPass& pass) {
 }
 
 std::string passTitle(const ViewPass& pass) {
-  return "pass " + std::to_string(pass.index) + ": " + programsOf(pass) + " (" + std::to_string(pass.width) + "x" +
+  return "pass " + std::to_string(pass.index) + ": " + (pass.label.empty() ? "" : pass.label + " - ") + programsOf(pass) + " (" + std::to_string(pass.width) + "x" +
          std::to_string(pass.height) + (pass.window ? ", window" : "") + ")";
 }
 
@@ -214,6 +214,7 @@ struct PassFigures {
 PassFigures figuresOf(View view, const ViewPass& pass) {
   PassFigures f;
   f.json = {{"index", pass.index},
+            {"label", pass.label},
             {"programs", pass.drawPrograms},
             {"width", pass.width},
             {"height", pass.height},
@@ -331,7 +332,8 @@ std::vector<scenes::Target> recordFrame(const Frame& frame, const ViewInfo& info
   std::vector<scenes::Target> targets;
   const raster::ScopedMethods methods(frame.methods);
   std::unique_ptr<scenes::Scene> scene = scenes::makeScene(frame.scene, sceneOptions(frame));
-  std::unique_ptr<scenes::Backend> backend = scenes::makeRasterBackend(frame.threads, frame.scalar, true, &recorder);
+  std::unique_ptr<scenes::Backend> backend = scenes::makeRasterBackend(frame.threads, frame.scalar);
+  scenes::setViewRecorder(*backend, &recorder);
   if (!frame.quiet)
     std::cerr << "rendering " << frame.scene << " with raster at " << sizeAndTime(frame) << ", recording the "
               << info.name << " view ..." << std::endl;
@@ -341,8 +343,9 @@ std::vector<scenes::Target> recordFrame(const Frame& frame, const ViewInfo& info
   if (!recorder.passes().empty())
     throw std::runtime_error("scene " + frame.scene + " drew while setting up; the views cannot tell those passes from the frame's");
   scene->renderFrame(*backend, frame.time);
-  if (everyTarget) return scene->readTargets(*backend);
-  targets.push_back(scene->readFinal(*backend));
+  if (everyTarget) targets = scene->readTargets(*backend);
+  else targets.push_back(scene->readFinal(*backend));
+  scenes::setViewRecorder(*backend, nullptr);
   return targets;
 }
 

@@ -149,6 +149,11 @@ struct SetupTriangle {
   bool frontFacing;
 };
 
+// Where a set-up triangle came from, kept only for pixel history (the renderer's list runs
+// beside its triangles): the primitive, instance-major (instance * primitives per
+// instance + primitive), with kClippedOrigin set when the clipper cut it into pieces.
+constexpr uint32_t kClippedOrigin = 0x80000000u;
+
 // ---- draws and tile work (renderer -> tile) ------------------------------------------------------
 
 // A draw as the tiles need it after binning.
@@ -159,6 +164,7 @@ struct DrawRecord {
   bool samplesTextures = false;   // shader->samplesTextures()
   int varyingFloats = 0;          // shader->varyingFloats()
   int colorOutputs = 0;           // shader->colorOutputs()
+  uint32_t primitivesPerInstance = 0;   // the indices' triangles: SetupTriangle::primitive / this = instance
 };
 
 // The colour outputs a draw writes to a framebuffer: those both its shader and the

@@ -15,6 +15,7 @@ class ProgramInstance final : public ShaderInstance {
  public:
   explicit ProgramInstance(const typename Program::Uniforms& uniforms) : uniforms_(uniforms) {}
 
+  const char* name() const override { return Program::kName; }
   int varyingFloats() const override { return varyingFloatCount<Program>(); }
   int colorOutputs() const override { return Program::kColorOutputs; }
   bool samplesTextures() const override { return raster::samplesTextures<Program>(); }

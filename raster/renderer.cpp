@@ -12,6 +12,7 @@
 #include "raster/merge/clear.h"
 #include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
+#include "raster/tile/trace_tile.h"
 #include "raster/util/cycles.h"
 
 namespace raster {
@@ -57,6 +58,28 @@ void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewpor
     viewport_.translate[1] = float(framebuffer.height) - viewport_.translate[1];
   }
   pendingClear_ = clearValues;
+  if (history_) beginPassHistory();
+}
+
+// A new pass's record in the pixel history, probed when the history asks and the probe
+// pixel lies inside the framebuffer.
+void Renderer::beginPassHistory() {
+  PassHistory pass;
+  pass.pass = int(history_->passes.size());
+  pass.colors.assign(framebuffer_.colors.begin(), framebuffer_.colors.end());
+  pass.depth = framebuffer_.depth;
+  pass.width = framebuffer_.width;
+  pass.height = framebuffer_.height;
+  pass.flipY = framebuffer_.flipY;
+  pass.clear = pendingClear_;
+  const auto probe = history_->probes.find(pass.pass);
+  if (probe != history_->probes.end()) {
+    const auto [x, y] = probe->second;
+    pass.probed = x >= 0 && y >= 0 && x < framebuffer_.width && y < framebuffer_.height;
+    pass.x = x;
+    pass.y = y;
+  }
+  history_->passes.push_back(std::move(pass));
 }
 
 // Appends the first `chunks` setup chunks to the pass's triangles, in chunk order; each
@@ -70,6 +93,7 @@ void Renderer::appendChunks(int chunks) {
     triangleCount += chunk.triangles.size();
     planeCount += chunk.varyingPlanes.size();
     counters_ += chunk.counters;
+    if (history_) triangleOrigins_.insert(triangleOrigins_.end(), chunk.origins.begin(), chunk.origins.end());
   }
   triangles_.resize(triangleCount);
   varyingPlanes_.resize(planeCount);
@@ -116,9 +140,11 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   setup.drawIndex = uint32_t(draws_.size());
   const uint32_t firstTriangle = uint32_t(triangles_.size());
   setUpChunked(setup, indices, vertices.vertexCount, size_t(instanceCount) * (indices.size() / 3));
+  if (history_ && !history_->passes.empty()) history_->passes.back().programs.push_back(shader->name());
   const bool samplesTextures = shader->samplesTextures();
   const int colorOutputs = shader->colorOutputs();
-  draws_.push_back(DrawRecord{std::move(shader), state, samplesTextures, setup.varyingFloats, colorOutputs});
+  draws_.push_back(DrawRecord{std::move(shader), state, samplesTextures, setup.varyingFloats, colorOutputs,
+                              uint32_t(indices.size() / 3)});
 
   // 4. Binning.
   const uint64_t binStart = cycleCount();
@@ -154,7 +180,7 @@ void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> i
                          ? int(std::min<size_t>(primitives / kSetupChunkPrimitives, size_t(4 * pool_.threads())))
                          : 1;
   if (chunks == 1) {
-    assemblePrimitives(input, 0, primitives, {triangles_, varyingPlanes_}, counters_);
+    assemblePrimitives(input, 0, primitives, {triangles_, varyingPlanes_, history_ ? &triangleOrigins_ : nullptr}, counters_);
     return;
   }
   if (setupChunks_.size() < size_t(chunks)) setupChunks_.resize(size_t(chunks));
@@ -162,9 +188,10 @@ void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> i
     SetupChunk& chunk = setupChunks_[size_t(c)];
     chunk.triangles.clear();
     chunk.varyingPlanes.clear();
+    chunk.origins.clear();
     chunk.counters = {};
     assemblePrimitives(input, primitives * size_t(c) / size_t(chunks), primitives * size_t(c + 1) / size_t(chunks),
-                       {chunk.triangles, chunk.varyingPlanes}, chunk.counters);
+                       {chunk.triangles, chunk.varyingPlanes, history_ ? &chunk.origins : nullptr}, chunk.counters);
   });
   appendChunks(chunks);
 }
@@ -214,10 +241,22 @@ void Renderer::flush() {
     // A stage view records the pass; its fragment counts take the instrumented walk.
     ViewPass* view = viewRecorder_ ? &viewRecorder_->beginPass(job, bins_.tilesX(), bins_.tilesY()) : nullptr;
     const bool inspect = view && viewRecorder_->what() == ViewRecorder::Record::Fragments;
+    // Pixel history: the tile holding the pass's probe pixel is walked by trace_tile.h.
+    PassHistory* traced = history_ && !history_->passes.empty() && history_->passes.back().probed
+                              ? &history_->passes.back() : nullptr;
+    const int tracedTile = traced ? (traced->y / limits::kTileSize) * bins_.tilesX() + traced->x / limits::kTileSize : -1;
     pool_.parallelFor(bins_.tileCount(), [&](int tile) {
       const uint64_t viewStart = view ? cycleCount() : 0;
       const TileBounds bounds = bins_.bounds(tile);
       const std::span<const uint32_t> bin = bins_.bin(tile);
+      if (tile == tracedTile) {
+        if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, true);
+        if (clearing || traced->fragments.empty()) traced->afterClear = readPixel(framebuffer_, traced->x, traced->y);
+        // Draws of this job are counted from 0; the pass's list already holds all of them.
+        const uint32_t drawBase = uint32_t(traced->programs.size() - draws_.size());
+        traceTile(job, bounds, bin, drawBase, triangleOrigins_, *traced, tileCounters[size_t(tile)]);
+        return;
+      }
       // A colour clear the tile's first triangle overwrites whole is skipped (same bytes).
       if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, !firstTriangleOverwritesColor(job, bin, bounds));
       if (!bin.empty()) {
@@ -231,10 +270,12 @@ void Renderer::flush() {
     for (const PipelineCounters& c : tileCounters) passCounters += c;
     counters_ += passCounters;
     if (view) viewRecorder_->endPass(passCounters);
+    if (traced) traced->stored = readPixel(framebuffer_, traced->x, traced->y);
   }
   pendingClear_ = {};
   triangles_.clear();
   varyingPlanes_.clear();
+  triangleOrigins_.clear();
   draws_.clear();
   bins_.clear();
 }

@@ -22,6 +22,7 @@
 #include "raster/contract.h"
 #include "raster/geometry/bin.h"
 #include "raster/geometry/setup.h"
+#include "raster/pixel_history.h"
 #include "raster/shader/shader_instance.h"
 #include "raster/util/parallel.h"
 #include "raster/view_recorder.h"
@@ -55,12 +56,17 @@ class Renderer {
   // Records every pass flushed from now on for the stage views (view_recorder.h); null
   // (the default) records nothing. The output bytes are the same either way.
   void setViewRecorder(ViewRecorder* recorder) { viewRecorder_ = recorder; }
+  // Pixel history (pixel_history.h): from the next beginPass on, every pass is recorded in
+  // `history`, and a pass with a probe has every fragment at its probe pixel recorded too.
+  // Null turns it off. The output bytes are the same either way.
+  void setPixelHistory(PixelHistory* history) { history_ = history; }
 
  private:
   // One chunk of a draw set up in parallel: its own lists, kept so no draw allocates them anew.
   struct SetupChunk {
     std::vector<SetupTriangle> triangles;
     std::vector<Plane> varyingPlanes;
+    std::vector<uint32_t> origins;   // pixel history only
     PipelineCounters counters;
     size_t triangleAt = 0, planeAt = 0;   // where its lists land in the pass's
   };
@@ -68,6 +74,7 @@ class Renderer {
   static constexpr size_t kSetupChunkPrimitives = 1024;
 
   bool visibilityFirst() const;
+  void beginPassHistory();
   void shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount);
   void setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount, size_t primitives);
   void appendChunks(int chunks);
@@ -81,6 +88,7 @@ class Renderer {
   std::vector<DrawRecord> draws_;
   std::vector<SetupTriangle> triangles_;
   std::vector<Plane> varyingPlanes_;
+  std::vector<uint32_t> triangleOrigins_;   // beside triangles_, only while pixel history is on
   TileBins bins_;
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
   std::vector<SetupChunk> setupChunks_;
@@ -88,6 +96,7 @@ class Renderer {
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
   ViewRecorder* viewRecorder_ = nullptr;
+  PixelHistory* history_ = nullptr;
 };
 
 }  // namespace raster

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "raster/shader/shader_instance.h"
+
 
 namespace raster {
 namespace {
@@ -35,11 +37,9 @@ ViewPass& ViewRecorder::beginPass(const TileJob& job, int tilesX, int tilesY) {
   pass.window = fb.flipY;
   pass.colorTargets = int(fb.colors.size());
   pass.depth = fb.depth != nullptr;
-  // The backend names each draw before making it; a pass whose draws it did not name
-  // (a caller of the Renderer without a backend) gets empty names.
-  if (pendingPrograms_.size() == job.draws.size()) pass.drawPrograms = std::move(pendingPrograms_);
-  else pass.drawPrograms.assign(job.draws.size(), "");
-  pendingPrograms_.clear();
+  pass.label = std::move(pendingLabel_);
+  pendingLabel_.clear();
+  for (const DrawRecord& draw : job.draws) pass.drawPrograms.push_back(draw.shader ? draw.shader->name() : "");
   pass.triangles = job.triangles.size();
   pass.tilesX = tilesX;
   pass.tilesY = tilesY;

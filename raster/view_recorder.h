@@ -31,11 +31,12 @@ struct ViewTriangle {
 
 struct ViewPass {
   int index = 0;   // in the order the frame flushed its passes, from 0
+  std::string label;   // the scene's name for the pass (Backend::labelNextPass), "" if none
   int width = 0, height = 0;
   bool window = false;   // the window-system framebuffer (stored top row first: flipY)
   int colorTargets = 0;
   bool depth = false;
-  std::vector<std::string> drawPrograms;   // each draw's program, "" where the backend named none
+  std::vector<std::string> drawPrograms;   // each draw's program (ShaderInstance::name)
   uint64_t triangles = 0;                  // set up (after clipping and culling)
   int tilesX = 0, tilesY = 0;
   std::vector<uint64_t> tileCycles;        // per tile (tileY * tilesX + tileX): its clear and tile stage
@@ -50,9 +51,9 @@ class ViewRecorder {
   explicit ViewRecorder(Record what) : what_(what) {}
 
   Record what() const { return what_; }
-  // The program of the next draw (called by the backend before Renderer::draw), so a pass
-  // can say which programs drew it.
-  void nameNextDraw(std::string program) { pendingPrograms_.push_back(std::move(program)); }
+  // The scene's label of the pass now beginning (called by the backend after
+  // Renderer::beginPass), given to the record made when that pass is flushed.
+  void labelNextPass(std::string label) { pendingLabel_ = std::move(label); }
 
   // Renderer::flush: a pass begins (its triangles, draws and framebuffer are in `job`);
   // the tiles then fill the returned record, each only its own pixels and tile entry.
@@ -64,7 +65,7 @@ class ViewRecorder {
 
  private:
   Record what_;
-  std::vector<std::string> pendingPrograms_;
+  std::string pendingLabel_;
   std::vector<ViewPass> passes_;
 };
 

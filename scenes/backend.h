@@ -137,6 +137,13 @@ class Backend {
   virtual Handle createTexture(const TextureDesc& desc, const void* pixels = nullptr) = 0;
   virtual Handle createFramebuffer(const FramebufferDesc& desc) = 0;
 
+  // Names that debugging tools show, as glObjectLabel names a texture and a debug group
+  // (glPushDebugGroup) a pass: `raster trace` names targets and passes by them. A scene
+  // labels each texture and pass with the name of the target it reads back from it
+  // (readTargets). The GL backend ignores them: nothing here reads GL's labels.
+  virtual void labelTexture(Handle texture, const std::string& label) {}
+  virtual void labelNextPass(const std::string& label) {}
+
   // glBindFramebuffer + glViewport + glClear.
   virtual void beginPass(Handle framebuffer, const Viewport& viewport, const ClearOp& clear) = 0;
   virtual void setUniform(Handle program, const std::string& name, const UniformValue& value) = 0;

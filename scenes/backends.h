@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "raster/pixel_history.h"
 #include "scenes/backend.h"
 
 namespace raster {
@@ -15,10 +16,18 @@ namespace scenes {
 // scalarOnly turns every SIMD fast path off (plain C++ lanes); visibilityFirst = false
 // shades every fragment that passes its depth test, in order, instead of only the visible
 // ones (raster::Renderer::setVisibilityFirst). The bytes are the same either way.
-// A recorder, when given, records every pass for the stage views (raster/view_recorder.h),
-// and is told each draw's program; it must outlive the backend.
-std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true,
-                                           raster::ViewRecorder* recorder = nullptr);
+std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = false, bool visibilityFirst = true);
+
+// Turns pixel history on (null: off) in a backend made by makeRasterBackend
+// (raster::Renderer::setPixelHistory); passes get the labels the scene gives them.
+// Throws std::invalid_argument for any other backend.
+void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history);
+
+// Records every pass from now on for the stage views (raster/view_recorder.h; null: off) in
+// a backend made by makeRasterBackend; passes get the labels the scene gives them. The
+// recorder must outlive the backend or be turned off first. Throws std::invalid_argument
+// for any other backend.
+void setViewRecorder(Backend& rasterBackend, raster::ViewRecorder* recorder);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

@@ -24,15 +24,12 @@ struct Mesh {
 
 class RasterBackend final : public Backend {
  public:
-  RasterBackend(int threads, bool scalarOnly, bool visibilityFirst, raster::ViewRecorder* recorder)
-      : renderer_(threads, scalarOnly), recorder_(recorder) {
+  RasterBackend(int threads, bool scalarOnly, bool visibilityFirst) : renderer_(threads, scalarOnly) {
     renderer_.setVisibilityFirst(visibilityFirst);
-    renderer_.setViewRecorder(recorder);
     textures_.emplace_back();     // handle 0: no texture
     framebuffers_.emplace_back(); // handle 0: the default framebuffer
     meshes_.emplace_back();
     programs_.emplace_back();
-    programNames_.emplace_back();
     resizeDefaultFramebuffer(640, 480);
   }
 
@@ -51,6 +48,8 @@ class RasterBackend final : public Backend {
             memory::joined({"the ", std::to_string(width), "x", std::to_string(height), " window (RGBA8 colour, 24-bit depth)"}));
     defaultColor_ = raster::Texture(width, height, TexelFormat::RGBA8);
     defaultDepth_ = raster::Texture(width, height, TexelFormat::Depth24);
+    defaultColor_.label = "final";   // the names the scenes' targets give the window's buffers
+    defaultDepth_.label = "depth";
     raster::Framebuffer& fb = framebuffers_[kDefaultFramebuffer];
     fb.colors = {&defaultColor_};
     fb.depth = &defaultDepth_;
@@ -61,7 +60,6 @@ class RasterBackend final : public Backend {
 
   Handle createProgram(const std::string& program) override {
     programs_.push_back(makeBoundProgram(program));
-    programNames_.push_back(program);
     return Handle(programs_.size() - 1);
   }
 
@@ -122,6 +120,22 @@ class RasterBackend final : public Backend {
     values.depth = clear.depth;
     values.depthValue = clear.depthValue;
     renderer_.beginPass(framebufferAt(framebuffer), {viewport.x, viewport.y, viewport.width, viewport.height}, values);
+    if (history_ && !history_->passes.empty()) history_->passes.back().label = nextPassLabel_;
+    if (recorder_) recorder_->labelNextPass(nextPassLabel_);
+    nextPassLabel_.clear();
+  }
+
+  void labelTexture(Handle texture, const std::string& label) override { this->texture(texture)->label = label; }
+  void labelNextPass(const std::string& label) override { nextPassLabel_ = label; }
+  void setPixelHistory(raster::PixelHistory* history) {
+    renderer_.flush();
+    history_ = history;
+    renderer_.setPixelHistory(history);
+  }
+  void setViewRecorder(raster::ViewRecorder* recorder) {
+    renderer_.flush();
+    recorder_ = recorder;
+    renderer_.setViewRecorder(recorder);
   }
 
   void setUniform(Handle program, const std::string& name, const UniformValue& value) override {
@@ -145,9 +159,7 @@ class RasterBackend final : public Backend {
     rs.offsetFactor = state.offsetFactor;
     rs.offsetUnits = state.offsetUnits;
     rs.blendAdditive = state.blendAdditive;
-    BoundProgram& bound = programAt(program);
-    if (recorder_) recorder_->nameNextDraw(programNames_[size_t(program)]);
-    renderer_.draw(bound.instantiate(units_), m.stream, m.data.indices, rs, instanceCount);
+    renderer_.draw(programAt(program).instantiate(units_), m.stream, m.data.indices, rs, instanceCount);
   }
 
   void finish() override { renderer_.flush(); }
@@ -267,16 +279,28 @@ class RasterBackend final : public Backend {
   std::vector<raster::Framebuffer> framebuffers_;
   std::vector<std::unique_ptr<Mesh>> meshes_;
   std::vector<std::unique_ptr<BoundProgram>> programs_;
-  std::vector<std::string> programNames_;   // as created, for the stage views' pass records
-  raster::ViewRecorder* recorder_;          // null unless a stage view is recording
   TextureUnits units_{};
+  raster::PixelHistory* history_ = nullptr;   // pixel history, when a trace asked for it
+  std::string nextPassLabel_;                 // labelNextPass, for the next beginPass
+  raster::ViewRecorder* recorder_ = nullptr;  // stage views, when a view asked for them
 };
 
 }  // namespace
 
-std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst,
-                                           raster::ViewRecorder* recorder) {
-  return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst, recorder);
+void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history) {
+  auto* backend = dynamic_cast<RasterBackend*>(&rasterBackend);
+  if (!backend) throw std::invalid_argument("pixel history needs this pipeline's backend, not " + rasterBackend.name());
+  backend->setPixelHistory(history);
+}
+
+void setViewRecorder(Backend& rasterBackend, raster::ViewRecorder* recorder) {
+  auto* backend = dynamic_cast<RasterBackend*>(&rasterBackend);
+  if (!backend) throw std::invalid_argument("stage views need this pipeline's backend, not " + rasterBackend.name());
+  backend->setViewRecorder(recorder);
+}
+
+std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst) {
+  return std::make_unique<RasterBackend>(threads, scalarOnly, visibilityFirst);
 }
 
 }  // namespace scenes

@@ -1,5 +1,5 @@
 # Each doctest test suite is one ctest test, so `ctest` output names the area that failed.
-set(RASTER_TEST_SUITES format simd math_methods methods geometry texture hostile gl_backend raster_vs_gl derivatives shadow_compare shaders scene_shadow scene_deferred determinism cli assets gl_math hdr_features scene_hdr soup sweep stability image_io views)
+set(RASTER_TEST_SUITES format simd math_methods methods geometry texture hostile gl_backend raster_vs_gl derivatives shadow_compare shaders scene_shadow scene_deferred determinism cli assets gl_math hdr_features scene_hdr soup sweep stability image_io trace report views)
 foreach(suite ${RASTER_TEST_SUITES})
   add_test(NAME ${suite} COMMAND raster_tests --test-suite=${suite} --no-intro)
   set_tests_properties(${suite} PROPERTIES ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
@@ -32,3 +32,9 @@ endif()
 add_test(NAME dask_sweep COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/dask_sweep_test.py $<TARGET_FILE:raster_cli>
          ${CMAKE_SOURCE_DIR})
 set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+
+# `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
+# every image loads at its file's size, no console error, table values equal their JSON.
+add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py
+         $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
+set_tests_properties(report_chromium PROPERTIES TIMEOUT 180 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")

@@ -4,6 +4,14 @@
 #include "raster/geometry/clip.h"
 
 namespace raster {
+namespace {
+
+// Where the triangle just set up came from, when pixel history keeps it (kClippedOrigin).
+void labelLast(SetupLists out, size_t primitive, bool clipped) {
+  if (out.origins) out.origins->push_back(uint32_t(primitive) | (clipped ? kClippedOrigin : 0u));
+}
+
+}  // namespace
 
 void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, SetupLists out, PipelineCounters& counters) {
   const size_t perInstance = in.indices.size() / 3;
@@ -19,15 +27,21 @@ void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, Setup
       continue;
     }
     if ((m0 | m1 | m2) == 0) {
-      counters.trianglesSetUp += setupTriangle(in.setup, in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), out);
+      if (setupTriangle(in.setup, in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), out)) {
+        counters.trianglesSetUp++;
+        labelLast(out, p, /*clipped=*/false);
+      }
       continue;
     }
     counters.trianglesClipped++;
     const clip::Polygon& polygon =
         clipper.clipTriangle(in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), m0 | m1 | m2);
     // The fan (p[i-1], p[i], p[0]) keeps GL's last-vertex convention.
-    for (int i = 2; i < polygon.count; ++i)
-      counters.trianglesSetUp += setupTriangle(in.setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0], out);
+    for (int i = 2; i < polygon.count; ++i) {
+      if (!setupTriangle(in.setup, polygon.vertex[i - 1], polygon.vertex[i], polygon.vertex[0], out)) continue;
+      counters.trianglesSetUp++;
+      labelLast(out, p, /*clipped=*/true);
+    }
   }
 }
 

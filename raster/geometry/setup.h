@@ -46,6 +46,7 @@ struct SetupState {
 struct SetupLists {
   std::vector<SetupTriangle>& triangles;
   std::vector<Plane>& varyingPlanes;
+  std::vector<uint32_t>* origins = nullptr;   // pixel history only: each triangle's origin (contract.h)
 };
 
 // Polygon offset units in depth-buffer terms: (float)(units * mrd * 2) computed in double,

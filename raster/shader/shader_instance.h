@@ -13,6 +13,8 @@ namespace raster {
 class ShaderInstance {
  public:
   virtual ~ShaderInstance() = default;
+  // The program's name, as the scene created it: "shadow/main" (pixel history shows it).
+  virtual const char* name() const = 0;
   virtual int varyingFloats() const = 0;
   virtual int colorOutputs() const = 0;
   // Whether its fragment shader reads textures: the pipeline then shades lane groups two

@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "raster/texture/format.h"
+#include "raster/texture/sample_trace.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -169,7 +170,58 @@ void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
   }
 }
 
+// The texels a lookup reads and each one's share, for pixel history (sample_trace.h).
+void decodeTexel(const Texture& t, int x, int y, float out[4]) {
+  const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
+  for (int c = 0; c < 4; ++c) {
+    if (t.format == TexelFormat::RGBA8) out[c] = float(t.rgba8[i + size_t(c)]) * float(1.0 / 255.0);
+    else if (t.format == TexelFormat::RGBA32F) out[c] = t.f32[i + size_t(c)];
+    else out[c] = format::floatFromHalf(t.half[i + size_t(c)]);
+  }
+}
+
+void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int y1, float ws, float wt) {
+  r.weightS = ws;
+  r.weightT = wt;
+  r.texelCount = 4;
+  const int xs[4] = {x0, x1, x0, x1}, ys[4] = {y0, y0, y1, y1};
+  const float weights[4] = {(1 - ws) * (1 - wt), ws * (1 - wt), (1 - ws) * wt, ws * wt};
+  for (int k = 0; k < 4; ++k) {
+    r.texels[k].x = xs[k];
+    r.texels[k].y = ys[k];
+    r.texels[k].weight = weights[k];
+    decodeTexel(t, xs[k], ys[k], r.texels[k].value);
+  }
+}
+
 }  // namespace
+
+void explainColor(const Texture& texture, SampleRecord& record) {
+  const bool fixedPoint = texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8;
+  const float s = record.s, t = record.t;
+  if (texture.sampler.filter == Filter::Nearest) {
+    record.filter = "nearest";
+    record.texelCount = 1;
+    FootprintTexel& texel = record.texels[0];
+    texel.x = fixedPoint ? wrapNearestFixed(s, texture.width, texture.sampler.wrapS)
+                         : wrapNearestFloat(s, texture.width, texture.sampler.wrapS);
+    texel.y = fixedPoint ? wrapNearestFixed(t, texture.height, texture.sampler.wrapT)
+                         : wrapNearestFloat(t, texture.height, texture.sampler.wrapT);
+    texel.weight = 1.0f;
+    decodeTexel(texture, texel.x, texel.y, texel.value);
+  } else if (fixedPoint) {
+    record.filter = "unorm8 fixed point (weights in 1/256, each lerp rounded to 8 bits)";
+    const FixedTaps x = wrapLinearFixed(s, texture.width, texture.sampler.wrapS);
+    const FixedTaps y = wrapLinearFixed(t, texture.height, texture.sampler.wrapT);
+    setFootprint(texture, record, x.x0, x.x1, y.x0, y.x1, float(x.weight) / 256.0f, float(y.weight) / 256.0f);
+  } else {
+    record.filter = "float";
+    const FloatTaps x = wrapLinearFloat(s, texture.width, texture.sampler.wrapS);
+    const FloatTaps y = wrapLinearFloat(t, texture.height, texture.sampler.wrapT);
+    setFootprint(texture, record, x.x0, x.x1, y.x0, y.x1, x.weight, y.weight);
+  }
+  sampleColor(texture, s, t, record.explained);
+}
 
 void sampleColor(const Texture& texture, float s, float t, float out[4]) {
   if (texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8) sampleRgba8(texture, s, t, out);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "raster/texture/format.h"
+#include "raster/texture/sample_trace.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -53,6 +54,30 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
   const float row0 = maskLerp(x.weight, m00, m01);
   const float row1 = maskLerp(x.weight, m10, m11);
   return std::fma(y.weight, row1 - row0, row0);
+}
+
+// The footprint of compareLinearClamp, for pixel history (sample_trace.h).
+void explainCompare(const Texture& depth, SampleRecord& record) {
+  float ref = (record.ref > 0.0f) ? record.ref : 0.0f;
+  ref = (ref < 1.0f) ? ref : 1.0f;
+  const LinearTaps x = wrapLinearClampToEdge(record.s, depth.width);
+  const LinearTaps y = wrapLinearClampToEdge(record.t, depth.height);
+  record.filter = "compare (LEQUAL per texel, results weighted bilinearly)";
+  record.weightS = x.weight;
+  record.weightT = y.weight;
+  record.texelCount = 4;
+  const int xs[4] = {x.i0, x.i1, x.i0, x.i1}, ys[4] = {y.i0, y.i0, y.i1, y.i1};
+  const float weights[4] = {(1 - x.weight) * (1 - y.weight), x.weight * (1 - y.weight), (1 - x.weight) * y.weight,
+                            x.weight * y.weight};
+  for (int k = 0; k < 4; ++k) {
+    FootprintTexel& texel = record.texels[k];
+    texel.x = xs[k];
+    texel.y = ys[k];
+    texel.weight = weights[k];
+    texel.value[0] = texelAsFloat(depth, xs[k], ys[k]);
+    texel.compare = ref <= texel.value[0] ? 1 : 0;
+  }
+  record.explained[0] = compareLinearClamp(depth, record.s, record.t, record.ref);
 }
 
 }  // namespace raster::sampling

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "raster/simd/glsl.h"
+#include "raster/texture/sample_trace.h"
 #include "raster/texture/texture.h"
 
 namespace raster {
@@ -56,6 +57,8 @@ glsl::vec4<F> lookupColor(const Texture& texture, glsl::vec2<F> uv) {
     sampleColor(texture, s[i], t[i], rgba);
     for (int c = 0; c < 4; ++c) out[c][i] = rgba[c];
   }
+  const float* const lanes[4] = {out[0], out[1], out[2], out[3]};
+  recordColorLookup(texture, s, t, lanes);   // pixel history only (sample_trace.h)
   return {F::load(out[0]), F::load(out[1]), F::load(out[2]), F::load(out[3])};
 }
 
@@ -78,6 +81,7 @@ F lookupCompare(const Texture& depth, glsl::vec2<F> uv, F ref) {
   uv.y.store(t);
   ref.store(r);
   for (int i = 0; i < F::kCount; ++i) out[i] = compareLinearClamp(depth, s[i], t[i], r[i]);
+  recordCompareLookup(depth, s, t, r, out);   // pixel history only (sample_trace.h)
   return F::load(out);
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "raster/util/huge_pages.h"
@@ -59,6 +60,7 @@ struct Texture {
   std::vector<uint16_t, HugePageAllocator<uint16_t>> half;       // RGBA16F, 4 per texel
   std::vector<float> f32;           // RGBA32F, 4 per texel
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
+  std::string label;   // what the scene calls it ("shadow_map"), as glObjectLabel: pixel history names it
 
   Texture() = default;
   Texture(int w, int h, TexelFormat f) : width(w), height(h), format(f == TexelFormat::RGB16F ? TexelFormat::RGBA16F : f) {

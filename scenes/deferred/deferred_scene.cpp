@@ -7,6 +7,7 @@
 #include "scenes/deferred/deferred_scene.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
@@ -76,14 +77,17 @@ class DeferredScene final : public Scene {
       const TextureDesc desc{loaded[i].width, loaded[i].height, TexelFormat::RGBA8,
                              {Filter::Linear, Wrap::Repeat, Wrap::Repeat, false}};
       textures_[i] = b.createTexture(desc, loaded[i].pixels.data());
+      b.labelTexture(textures_[i], std::filesystem::path(images[i]).filename().string());
     }
     // load_hdr_texture: RGB16F, REPEAT on s, CLAMP_TO_EDGE on t, LINEAR.
     tex_env_ = b.createTexture({env.width, env.height, TexelFormat::RGB16F, {Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge, false}},
                                env.pixels.data());
+    b.labelTexture(tex_env_, std::filesystem::path(assetPath(options_, HDRI)).filename().string());
 
     // create_shadow_target
     shadow_tex_ = b.createTexture({SHADOW_DIM, SHADOW_DIM, TexelFormat::Depth24,
                                    {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, true}});
+    b.labelTexture(shadow_tex_, "shadow_map");
     shadow_fbo_ = b.createFramebuffer({{}, shadow_tex_});
 
     // setup_targets(w, h): G-buffer (3 MRT + depth 16) and the SSAO target.
@@ -94,8 +98,13 @@ class DeferredScene final : public Scene {
     g_normal_ = b.createTexture({w, h, TexelFormat::RGBA16F, nearest});
     g_worldpos_ = b.createTexture({w, h, TexelFormat::RGBA16F, nearest});
     g_depth_ = b.createTexture({w, h, TexelFormat::Depth16, nearest});
+    b.labelTexture(g_albedo_, "gbuffer_albedo");
+    b.labelTexture(g_normal_, "gbuffer_normal");
+    b.labelTexture(g_worldpos_, "gbuffer_worldpos");
+    b.labelTexture(g_depth_, "gbuffer_depth");
     g_fbo_ = b.createFramebuffer({{g_albedo_, g_normal_, g_worldpos_}, g_depth_});
     ssao_tex_ = b.createTexture({w, h, TexelFormat::RGBA8, linear});
+    b.labelTexture(ssao_tex_, "ssao");
     ssao_fbo_ = b.createFramebuffer({{ssao_tex_}, 0});
   }
 
@@ -119,6 +128,7 @@ class DeferredScene final : public Scene {
     // Pass 1: shadow map from the sun's POV, with slope-scaled depth bias.
     ClearOp clearDepth;
     clearDepth.depth = true;
+    b.labelNextPass("shadow_map");
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
@@ -134,6 +144,7 @@ class DeferredScene final : public Scene {
     clearAll.color = true;
     clearAll.colorValue = glm::vec4(0.0f);
     clearAll.depth = true;
+    b.labelNextPass("gbuffer");
     b.beginPass(g_fbo_, {0, 0, w, h}, clearAll);
     const char* const samplers[7] = {"cat_albedo", "cat_normal", "cat_arm", "floor_albedo",
                                      "floor_normal", "floor_ao", "floor_roughness"};
@@ -152,6 +163,7 @@ class DeferredScene final : public Scene {
     // Pass 3: SSAO into its own target, no depth test.
     DrawState fullscreen;
     fullscreen.depthTest = false;
+    b.labelNextPass("ssao");
     b.beginPass(ssao_fbo_, {0, 0, w, h}, ClearOp{});
     b.bindTexture(0, g_normal_);
     b.bindTexture(1, g_worldpos_);
@@ -165,6 +177,7 @@ class DeferredScene final : public Scene {
     ClearOp clearScreen;
     clearScreen.color = true;
     clearScreen.colorValue = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    b.labelNextPass("final");
     b.beginPass(kDefaultFramebuffer, {0, 0, w, h}, clearScreen);
     const Handle lightingInputs[6] = {g_albedo_, g_normal_, g_worldpos_, ssao_tex_, shadow_tex_, tex_env_};
     const char* const lightingSamplers[6] = {"lit_albedo", "lit_normal", "lit_worldpos", "lit_ssao", "shadow_map", "env_map"};

@@ -136,10 +136,12 @@ class HdrScene final : public Scene {
     // create_scene_target: RGBA16F colour (LINEAR, CLAMP_TO_EDGE) + 16-bit depth.
     hdr_color_ = makeHdrColor(b, HDR_W, HDR_H);
     hdr_depth_ = b.createTexture({HDR_W, HDR_H, TexelFormat::Depth16, {Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
+    b.labelTexture(hdr_color_, "hdr_scene");
+    b.labelTexture(hdr_depth_, "hdr_depth");
     hdr_fbo_ = b.createFramebuffer({{hdr_color_}, hdr_depth_});
     // create_bloom_chain, and the chain readTargets() re-runs the down passes into.
-    bloom_ = makeBloomChain(b);
-    capture_ = makeBloomChain(b);
+    bloom_ = makeBloomChain(b, "bloom_mip_");
+    capture_ = makeBloomChain(b, "bloom_capture_");
   }
 
   void renderFrame(Backend& b, float t) override {
@@ -162,6 +164,7 @@ class HdrScene final : public Scene {
     clearScene.color = true;
     clearScene.colorValue = glm::vec4(0.01f, 0.0f, 0.03f, 1.0f);
     clearScene.depth = true;
+    b.labelNextPass("hdr_scene");
     b.beginPass(hdr_fbo_, {0, 0, HDR_W, HDR_H}, clearScene);
     DrawState sceneState;
     sceneState.depthTest = true;
@@ -181,6 +184,7 @@ class HdrScene final : public Scene {
     blendState.blendAdditive = true;
     for (int k = 0; k < BLOOM_MIPS - 1; ++k) {
       const int i = BLOOM_MIPS - 1 - k;   // i = 4, 3, 2, 1; writes onto mip i-1
+      b.labelNextPass("bloom_up_" + std::to_string(i - 1));   // the target it reads back as
       b.beginPass(bloom_.fbo[size_t(i - 1)], {0, 0, bloom_w_[size_t(i - 1)], bloom_h_[size_t(i - 1)]}, ClearOp{});
       b.bindTexture(0, bloom_.tex[size_t(i)]);
       b.setUniform(prog_up_, "src0", 0);
@@ -192,6 +196,7 @@ class HdrScene final : public Scene {
     ClearOp clearScreen;
     clearScreen.color = true;
     clearScreen.colorValue = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    b.labelNextPass("final");
     b.beginPass(kDefaultFramebuffer, {0, 0, display_w, display_h}, clearScreen);
     b.bindTexture(0, hdr_color_);
     b.bindTexture(1, bloom_.tex[0]);
@@ -225,10 +230,11 @@ class HdrScene final : public Scene {
     return b.createTexture({w, h, TexelFormat::RGBA16F, {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, false}});
   }
 
-  BloomChain makeBloomChain(Backend& b) const {
+  BloomChain makeBloomChain(Backend& b, const std::string& label) const {
     BloomChain chain;
     for (int i = 0; i < BLOOM_MIPS; ++i) {
       chain.tex[size_t(i)] = makeHdrColor(b, bloom_w_[size_t(i)], bloom_h_[size_t(i)]);
+      b.labelTexture(chain.tex[size_t(i)], label + std::to_string(i));
       chain.fbo[size_t(i)] = b.createFramebuffer({{chain.tex[size_t(i)]}, 0});
     }
     return chain;
@@ -251,6 +257,7 @@ class HdrScene final : public Scene {
   // Pass 2 (bright pass from the HDR scene into mip 0) and pass 3 (5-tap downsamples
   // mip i -> i + 1), into `chain`. Neither clears: each fullscreen triangle covers its mip.
   void brightAndDownPasses(Backend& b, const BloomChain& chain) {
+    b.labelNextPass("bloom_down_0");
     b.beginPass(chain.fbo[0], {0, 0, bloom_w_[0], bloom_h_[0]}, ClearOp{});
     b.bindTexture(0, hdr_color_);
     b.setUniform(prog_bright_, "src0", 0);
@@ -259,6 +266,7 @@ class HdrScene final : public Scene {
     b.draw(prog_bright_, quad_, postState());
 
     for (int i = 0; i < BLOOM_MIPS - 1; ++i) {
+      b.labelNextPass("bloom_down_" + std::to_string(i + 1));
       b.beginPass(chain.fbo[size_t(i + 1)], {0, 0, bloom_w_[size_t(i + 1)], bloom_h_[size_t(i + 1)]}, ClearOp{});
       b.bindTexture(0, chain.tex[size_t(i)]);
       b.setUniform(prog_down_, "src0", 0);

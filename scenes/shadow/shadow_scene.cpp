@@ -71,6 +71,7 @@ class ShadowScene final : public Scene {
     depth.format = TexelFormat::Depth24;
     depth.sampler = {Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, /*compareLequal=*/true};
     shadow_tex_ = b.createTexture(depth);
+    b.labelTexture(shadow_tex_, "shadow_map");
     shadow_fbo_ = b.createFramebuffer({{}, shadow_tex_});
   }
 
@@ -103,6 +104,7 @@ class ShadowScene final : public Scene {
     // Pass 1: shadow map from the light's point of view, with slope-scaled depth bias.
     ClearOp clearDepth;
     clearDepth.depth = true;
+    b.labelNextPass("shadow_map");
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
@@ -119,6 +121,7 @@ class ShadowScene final : public Scene {
     clearAll.color = true;
     clearAll.colorValue = glm::vec4(0.04f, 0.05f, 0.09f, 1.0f);
     clearAll.depth = true;
+    b.labelNextPass("final");
     b.beginPass(kDefaultFramebuffer, {0, 0, display_w, display_h}, clearAll);
     const DrawState mainState;
     b.bindTexture(0, shadow_tex_);

@@ -35,8 +35,10 @@ struct Recorded {
 Recorded renderRecorded(const std::string& scene, Record what, int threads) {
   Recorded r;
   r.recorder = std::make_unique<ViewRecorder>(what);
-  auto backend = scenes::makeRasterBackend(threads, false, true, r.recorder.get());
+  auto backend = scenes::makeRasterBackend(threads);
+  scenes::setViewRecorder(*backend, r.recorder.get());
   r.targets = testing_support::renderScene(*backend, scene, 1.0f, kWidth, kHeight);
+  scenes::setViewRecorder(*backend, nullptr);
   return r;
 }
 

@@ -1,0 +1,22 @@
+// Which pixels the report traces (`raster report --pixels N`): the worst differing pixels of
+// the final image first (largest difference over the channels against GL, in the kind's unit,
+// compare::pixelDifference; ties by position, row by row from the top), then, when fewer than
+// N differ, interior points of a fixed pattern (the centre, then the quarter points).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scenes/backend.h"
+
+namespace report {
+
+struct ChosenPixel {
+  int x = 0, y = 0;            // image coordinates, row 0 at the top
+  uint64_t difference = 0;     // 0 for an interior point that does not differ
+};
+
+// At most `count` distinct pixels; ours and gl must be comparable (compare::checkComparable).
+std::vector<ChosenPixel> choosePixels(const scenes::ImageData& ours, const scenes::ImageData& gl, int count);
+
+}  // namespace report

@@ -1,0 +1,85 @@
+// `raster report` on the command line: what it writes, how it replaces an earlier report,
+// and the bad input it refuses before rendering (the browser test is report_chromium_test.py).
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/apps/cli_test_helpers.h"
+
+namespace {
+
+using namespace cli_test;
+
+// The names in `folder` that start with a dot: a temporary folder left behind.
+int hiddenEntries(const fs::path& folder) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) n += entry.path().filename().string()[0] == '.';
+  return n;
+}
+
+}  // namespace
+
+TEST_SUITE("report") {
+
+TEST_CASE("report: bad input exits 2 with one line before anything renders") {
+  expectRefused("report nosuch --out r", "unknown scene 'nosuch'");
+  expectRefused("report shadow all nosuch --out r", "nosuch");
+  expectRefused("report shadow --pixels 17 --out r", "--pixels");
+  expectRefused("report shadow --include no_such_folder --out r", "no_such_folder");
+  expectRefused("report shadow --size 0x5 --out r", "--size");
+  expectRefused("report shadow --out no/such/folder", "no/such");
+  expectRefused("report shadow --out .", "--out");
+
+  TempFolder temp;
+  fs::create_directory(temp.path / "mine");
+  { std::ofstream(temp.path / "mine" / "notes.txt") << "keep me"; }
+  fs::create_directory(temp.path / "real");
+  fs::create_directory_symlink(temp.path / "real", temp.path / "link");
+  { std::ofstream(temp.path / "file") << "x"; }
+  for (const char* out : {"mine", "link", "file"}) {
+    const RunResult result = runCli(temp.path, std::string("report shadow --size 16x12 --quiet --out ") + out);
+    INFO("--out " << out << ": " << result.err);
+    CHECK(result.status == 2);
+    CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+  }
+  CHECK(readText(temp.path / "mine" / "notes.txt") == "keep me");
+  CHECK(fs::is_empty(temp.path / "real"));
+  CHECK(readText(temp.path / "file") == "x");
+  CHECK(hiddenEntries(temp.path) == 0);
+}
+
+TEST_CASE("report: every target's images and metrics; a second run replaces the first whole") {
+  TempFolder temp;
+  const std::string command = "report shadow --size 32x24 --pixels 1 --threads 2 --no-default-include --quiet --out r";
+  RunResult result = runCli(temp.path, command);
+  REQUIRE_MESSAGE(result.status == 0, result.err);
+  const fs::path out = temp.path / "r";
+  std::ifstream in(out / "report.json");
+  const nlohmann::json record = nlohmann::json::parse(in);
+  REQUIRE(record.at("scenes").size() == 1);
+  const std::string page = readText(out / "index.html");
+  for (const auto& target : record.at("scenes")[0].at("targets")) {
+    const std::string name = target.at("name");
+    for (const char* side : {"_ours.png", "_gl.png", "_diff.png"}) CHECK(fs::is_regular_file(out / "shadow" / (name + side)));
+    if (target.at("kind") != "rgba8") CHECK(fs::is_regular_file(out / "shadow" / (name + "_ours.exr")));
+    CHECK(page.find("id=\"metrics-shadow-" + name + "\"") != std::string::npos);
+  }
+  // Stage views and traces: either shown, or a note says why not.
+  CHECK((page.find("Stage views: this build") != std::string::npos || page.find("<h4>") != std::string::npos));
+  CHECK((page.find("this build has no `raster trace`") != std::string::npos || page.find("class=\"trace\"") != std::string::npos));
+  CHECK(page.find("No tradeoff.json or sweep.json") != std::string::npos);
+
+  { std::ofstream(out / "stale.txt") << "from the first run"; }
+  result = runCli(temp.path, command);
+  REQUIRE_MESSAGE(result.status == 0, result.err);
+  CHECK(fs::is_regular_file(out / "index.html"));
+  CHECK(!fs::exists(out / "stale.txt"));
+  CHECK(hiddenEntries(temp.path) == 0);
+  CHECK(hiddenEntries(out) == 0);
+}
+
+}  // TEST_SUITE

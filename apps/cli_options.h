@@ -46,6 +46,8 @@ struct RenderArgs : FrameArgs {
   std::string backend = "raster";
   std::string out;             // empty: SCENE.png
   std::string dump;            // empty: no dump
+  std::string view;            // empty: the image; else a stage view (apps/views.h)
+  std::string pass;            // the view's pass: a number, or empty / "all" for every pass
 };
 
 struct CompareArgs : FrameArgs {

@@ -1,6 +1,7 @@
 // raster: the command-line program.
 //   raster render SCENE ...   one frame with this pipeline or GL; the final image as PNG,
 //                             and with --dump every target (PNG preview + lossless dump);
+//                             with --view NAME a stage view instead (views.h);
 //   raster compare SCENE ...  one frame with a test and a reference backend; per target a
 //                             stats line and ours / gl / heat-map PNGs; optional thresholds;
 //   raster bench SCENE ...    frame times of this pipeline and a GL driver (bench.h);
@@ -39,6 +40,7 @@
 #include "apps/sweep.h"
 #include "apps/trace.h"
 #include "apps/tradeoff.h"
+#include "apps/views.h"
 #include "apps/cli_options.h"
 #include "compare/image_io.h"
 #include "compare/metrics.h"
@@ -64,6 +66,8 @@ int runRender(const cli::RenderArgs& args) {
   const Frame frame = cli::validateFrame(args);
   if (args.backend != "raster" && args.backend != "gl")
     throw UsageError("--backend: '" + args.backend + "' is neither raster nor gl");
+  if (!args.view.empty()) return cli::runViewRender(args, frame);
+  if (!args.pass.empty()) throw UsageError("--pass chooses the pass of a --view");
   if (args.backend == "gl" && !(frame.methods == raster::MethodSet{}))
     throw UsageError("--preset/--method choose this pipeline's methods; --backend gl renders with GL's own");
   const std::string out = args.out.empty() ? frame.scene + ".png" : args.out;

@@ -10,6 +10,7 @@
 
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
+#include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
 #include "raster/tile/tile_clear.h"
 #include "raster/tile/trace_tile.h"
@@ -238,11 +239,15 @@ void Renderer::flush() {
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
     std::vector<PipelineCounters> tileCounters(size_t(bins_.tileCount()));
+    // A stage view records the pass; its fragment counts take the instrumented walk.
+    ViewPass* view = viewRecorder_ ? &viewRecorder_->beginPass(job, bins_.tilesX(), bins_.tilesY()) : nullptr;
+    const bool inspect = view && viewRecorder_->what() == ViewRecorder::Record::Fragments;
     // Pixel history: the tile holding the pass's probe pixel is walked by trace_tile.h.
     PassHistory* traced = history_ && !history_->passes.empty() && history_->passes.back().probed
                               ? &history_->passes.back() : nullptr;
     const int tracedTile = traced ? (traced->y / limits::kTileSize) * bins_.tilesX() + traced->x / limits::kTileSize : -1;
     pool_.parallelFor(bins_.tileCount(), [&](int tile) {
+      const uint64_t viewStart = view ? cycleCount() : 0;
       const TileBounds bounds = bins_.bounds(tile);
       const std::span<const uint32_t> bin = bins_.bin(tile);
       if (tile == tracedTile) {
@@ -255,14 +260,23 @@ void Renderer::flush() {
       }
       // Clears the tile's first triangle overwrites are left out (tile/tile_clear.h); a
       // depth-only first triangle may have done its own work in place of the depth clear.
+      // The instrumented walk of a stage view counts every fragment: a whole clear, then
+      // the whole bin.
       size_t done = 0;
-      if (clearing)
+      if (clearing && inspect) merge::clearRect(framebuffer_, pendingClear_, bounds, true);
+      else if (clearing)
         done = scalarOnly_ ? clearTile<ScalarLanes>(job, bin, bounds, pendingClear_) : clearTile<FastLanes>(job, bin, bounds, pendingClear_);
-      if (bin.size() == done) return;
-      if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
-      else rasterizeTile<FastLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
+      if (bin.size() > done) {
+        if (inspect) inspectTile(job, bounds, bin, view->counts, tileCounters[size_t(tile)]);
+        else if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
+        else rasterizeTile<FastLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);
+      }
+      if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
     });
-    for (const PipelineCounters& c : tileCounters) counters_ += c;
+    PipelineCounters passCounters;
+    for (const PipelineCounters& c : tileCounters) passCounters += c;
+    counters_ += passCounters;
+    if (view) viewRecorder_->endPass(passCounters);
     if (traced) traced->stored = readPixel(framebuffer_, traced->x, traced->y);
   }
   pendingClear_ = {};

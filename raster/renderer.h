@@ -25,6 +25,7 @@
 #include "raster/pixel_history.h"
 #include "raster/shader/shader_instance.h"
 #include "raster/util/parallel.h"
+#include "raster/view_recorder.h"
 
 namespace raster {
 
@@ -52,6 +53,9 @@ class Renderer {
   // shaded in order. The output bytes are the same either way.
   void setVisibilityFirst(bool allowed) { visibilityFirstAllowed_ = allowed; }
   int threads() const { return pool_.threads(); }
+  // Records every pass flushed from now on for the stage views (view_recorder.h); null
+  // (the default) records nothing. The output bytes are the same either way.
+  void setViewRecorder(ViewRecorder* recorder) { viewRecorder_ = recorder; }
   // Pixel history (pixel_history.h): from the next beginPass on, every pass is recorded in
   // `history`, and a pass with a probe has every fragment at its probe pixel recorded too.
   // Null turns it off. The output bytes are the same either way.
@@ -91,6 +95,7 @@ class Renderer {
   PipelineCounters counters_;
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
+  ViewRecorder* viewRecorder_ = nullptr;
   PixelHistory* history_ = nullptr;
 };
 

@@ -6,6 +6,10 @@
 #include "raster/pixel_history.h"
 #include "scenes/backend.h"
 
+namespace raster {
+class ViewRecorder;   // raster/view_recorder.h
+}
+
 namespace scenes {
 
 // This project's pipeline. threads = 0 uses every core; any count gives the same bytes.
@@ -18,6 +22,12 @@ std::unique_ptr<Backend> makeRasterBackend(int threads = 0, bool scalarOnly = fa
 // (raster::Renderer::setPixelHistory); passes get the labels the scene gives them.
 // Throws std::invalid_argument for any other backend.
 void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history);
+
+// Records every pass from now on for the stage views (raster/view_recorder.h; null: off) in
+// a backend made by makeRasterBackend; passes get the labels the scene gives them. The
+// recorder must outlive the backend or be turned off first. Throws std::invalid_argument
+// for any other backend.
+void setViewRecorder(Backend& rasterBackend, raster::ViewRecorder* recorder);
 
 // Real OpenGL 3.3 core through OSMesa. The Gallium driver is chosen by GALLIUM_DRIVER
 // (llvmpipe when unset; softpipe works too) and LP_NUM_THREADS sets llvmpipe's threads;

@@ -121,6 +121,7 @@ class RasterBackend final : public Backend {
     values.depthValue = clear.depthValue;
     renderer_.beginPass(framebufferAt(framebuffer), {viewport.x, viewport.y, viewport.width, viewport.height}, values);
     if (history_ && !history_->passes.empty()) history_->passes.back().label = nextPassLabel_;
+    if (recorder_) recorder_->labelNextPass(nextPassLabel_);
     nextPassLabel_.clear();
   }
 
@@ -130,6 +131,11 @@ class RasterBackend final : public Backend {
     renderer_.flush();
     history_ = history;
     renderer_.setPixelHistory(history);
+  }
+  void setViewRecorder(raster::ViewRecorder* recorder) {
+    renderer_.flush();
+    recorder_ = recorder;
+    renderer_.setViewRecorder(recorder);
   }
 
   void setUniform(Handle program, const std::string& name, const UniformValue& value) override {
@@ -276,6 +282,7 @@ class RasterBackend final : public Backend {
   TextureUnits units_{};
   raster::PixelHistory* history_ = nullptr;   // pixel history, when a trace asked for it
   std::string nextPassLabel_;                 // labelNextPass, for the next beginPass
+  raster::ViewRecorder* recorder_ = nullptr;  // stage views, when a view asked for them
 };
 
 }  // namespace
@@ -284,6 +291,12 @@ void setPixelHistory(Backend& rasterBackend, raster::PixelHistory* history) {
   auto* backend = dynamic_cast<RasterBackend*>(&rasterBackend);
   if (!backend) throw std::invalid_argument("pixel history needs this pipeline's backend, not " + rasterBackend.name());
   backend->setPixelHistory(history);
+}
+
+void setViewRecorder(Backend& rasterBackend, raster::ViewRecorder* recorder) {
+  auto* backend = dynamic_cast<RasterBackend*>(&rasterBackend);
+  if (!backend) throw std::invalid_argument("stage views need this pipeline's backend, not " + rasterBackend.name());
+  backend->setViewRecorder(recorder);
 }
 
 std::unique_ptr<Backend> makeRasterBackend(int threads, bool scalarOnly, bool visibilityFirst) {

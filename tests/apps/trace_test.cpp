@@ -181,7 +181,9 @@ TEST_SUITE("trace") {
         INFO(plain[i].name);
         CHECK(plain[i].image.rgba8 == traced[i].image.rgba8);
         CHECK(plain[i].image.depth == traced[i].image.depth);
-        CHECK(std::memcmp(plain[i].image.floats.data(), traced[i].image.floats.data(), plain[i].image.floats.size() * 4) == 0);
+        REQUIRE(plain[i].image.floats.size() == traced[i].image.floats.size());
+        if (!plain[i].image.floats.empty())   // bit for bit: a NaN pixel equals itself
+          CHECK(std::memcmp(plain[i].image.floats.data(), traced[i].image.floats.data(), plain[i].image.floats.size() * 4) == 0);
       }
     }
   }

@@ -106,9 +106,9 @@ std::vector<std::string> attachmentNames(const PassHistory& pass, const std::set
   return names;
 }
 
-json depthValue(uint32_t code, const Texture& depth) {
-  const double max = double((uint64_t(1) << depth.depthBits()) - 1);
-  return json{{"code", code}, {"value", double(code) / max}};
+// A depth code and the value it stands for, code / (2^bits - 1).
+json depthValue(uint32_t code, int bits) {
+  return json{{"code", code}, {"value", double(code) / double((uint64_t(1) << bits) - 1)}};
 }
 
 json colorValue(const std::array<float, 4>& rgba) { return json::array({rgba[0], rgba[1], rgba[2], rgba[3]}); }
@@ -116,7 +116,7 @@ json colorValue(const std::array<float, 4>& rgba) { return json::array({rgba[0],
 json pixelJson(const PixelValue& value, const PassHistory& pass, const std::vector<std::string>& names) {
   json out = json::object();
   for (size_t k = 0; k < value.colors.size(); ++k) out[names[k]] = colorValue(value.colors[k]);
-  if (value.hasDepth) out[names.back()] = depthValue(value.depthCode, *pass.depth);
+  if (value.hasDepth) out[names.back()] = depthValue(value.depthCode, pass.depth->depthBits());
   return out;
 }
 
@@ -125,10 +125,7 @@ json imageValue(const scenes::ImageData& image, const PassHistory& pass) {
   const int row = pass.flipY ? pass.y : pass.height - 1 - pass.y;   // images are top row first
   if (image.width != pass.width || image.height != pass.height) return nullptr;
   const size_t texel = size_t(row) * size_t(image.width) + size_t(pass.x);
-  if (!image.depth.empty()) {
-    const double max = double((uint64_t(1) << image.depthBits) - 1);
-    return json{{"code", image.depth[texel]}, {"value", double(image.depth[texel]) / max}};
-  }
+  if (!image.depth.empty()) return depthValue(image.depth[texel], image.depthBits);
   json rgba = json::array();
   for (int c = 0; c < 4; ++c) {
     if (!image.rgba8.empty()) rgba.push_back(float(image.rgba8[texel * 4 + size_t(c)]) * float(1.0 / 255.0));

@@ -171,15 +171,6 @@ void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
 }
 
 // The texels a lookup reads and each one's share, for pixel history (sample_trace.h).
-void decodeTexel(const Texture& t, int x, int y, float out[4]) {
-  const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
-  for (int c = 0; c < 4; ++c) {
-    if (t.format == TexelFormat::RGBA8) out[c] = float(t.rgba8[i + size_t(c)]) * float(1.0 / 255.0);
-    else if (t.format == TexelFormat::RGBA32F) out[c] = t.f32[i + size_t(c)];
-    else out[c] = format::floatFromHalf(t.half[i + size_t(c)]);
-  }
-}
-
 void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int y1, float ws, float wt) {
   r.weightS = ws;
   r.weightT = wt;
@@ -190,11 +181,20 @@ void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int
     r.texels[k].x = xs[k];
     r.texels[k].y = ys[k];
     r.texels[k].weight = weights[k];
-    decodeTexel(t, xs[k], ys[k], r.texels[k].value);
+    colorTexelValue(t, xs[k], ys[k], r.texels[k].value);
   }
 }
 
 }  // namespace
+
+void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
+  const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
+  for (int c = 0; c < 4; ++c) {
+    if (t.format == TexelFormat::RGBA8) out[c] = float(t.rgba8[i + size_t(c)]) * float(1.0 / 255.0);
+    else if (t.format == TexelFormat::RGBA32F) out[c] = t.f32[i + size_t(c)];
+    else out[c] = format::floatFromHalf(t.half[i + size_t(c)]);
+  }
+}
 
 void explainColor(const Texture& texture, SampleRecord& record) {
   const bool fixedPoint = texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8;
@@ -208,7 +208,7 @@ void explainColor(const Texture& texture, SampleRecord& record) {
     texel.y = fixedPoint ? wrapNearestFixed(t, texture.height, texture.sampler.wrapT)
                          : wrapNearestFloat(t, texture.height, texture.sampler.wrapT);
     texel.weight = 1.0f;
-    decodeTexel(texture, texel.x, texel.y, texel.value);
+    colorTexelValue(texture, texel.x, texel.y, texel.value);
   } else if (fixedPoint) {
     record.filter = "unorm8 fixed point (weights in 1/256, each lerp rounded to 8 bits)";
     const FixedTaps x = wrapLinearFixed(s, texture.width, texture.sampler.wrapS);

@@ -47,6 +47,10 @@ struct SampleTrace {
 // The trace recording on this thread, or null (the normal case).
 inline thread_local SampleTrace* tActiveSampleTrace = nullptr;
 
+// A colour texel (column x, memory row y) as the pipeline stores it, decoded: unorm8 / 255,
+// the half's value, or the float. What a footprint shows, and what pixel history reads.
+void colorTexelValue(const Texture& texture, int x, int y, float out[4]);
+
 // The footprint of a colour lookup (sampleColor) and of a compare lookup
 // (compareLinearClamp): fills a record's filter, weights, texels and explained result.
 void explainColor(const Texture& texture, SampleRecord& record);

@@ -73,8 +73,12 @@ struct SsaoPass : PostProgram {
         const float fi = (float(i) + 0.5f) / float(SSAO_K);
         const F ang = ang0 + F(float(i) * 2.3998277f);
         const float rr = SSAO_RADIUS * std::sqrt(fi);
-        const vec3<F> off = (cos(ang) * tangent + sin(ang) * bitangent) * F(rr) + n * F(rr * 0.5f);
-        sp[i] = p + off;
+        // off = (cos(ang) * tangent + sin(ang) * bitangent) * rr + n * (rr * 0.5), used only
+        // in p + off: Mesa's NIR rewrites a sum of two products used once, plus a
+        // non-product, as (product + p) + product ("Reassociate add chains",
+        // nir_opt_algebraic.py), so sp adds p to the first product before the second.
+        const vec3<F> along = (cos(ang) * tangent + sin(ang) * bitangent) * F(rr);
+        sp[i] = (along + p) + n * F(rr * 0.5f);
         clip[i] = u.u_proj * (u.u_view * vec4<F>(sp[i], F(1.0f)));
         const F wv = max(clip[i].w, F(0.0001f));
         suv[i] = vec2<F>(clip[i].x / wv * F(0.5f) + F(0.5f), clip[i].y / wv * F(0.5f) + F(0.5f));

@@ -17,6 +17,7 @@
 #include "compare/output_file.h"
 #include "raster/view_recorder.h"
 #include "scenes/backends.h"
+#include "scenes/memory_budget.h"
 #include "scenes/scene.h"
 
 namespace cli {
@@ -434,7 +435,10 @@ int runViewRender(const RenderArgs& args, const Frame& frame) {
   checkOutputFile("--out (its sidecar JSON)", sidecar);
   if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);
 
+  // The records are charged to --max-memory like the targets they describe.
+  std::vector<scenes::memory::Reservation> recordMemory;
   ViewRecorder recorder(info->record);
+  recorder.setReserve([&](uint64_t bytes, const std::string& what) { recordMemory.emplace_back(bytes, what); });
   const std::vector<scenes::Target> targets = recordFrame(frame, *info, !args.dump.empty(), recorder);
   const std::vector<ViewPass>& passes = recorder.passes();
   if (passes.empty()) throw std::runtime_error("scene " + frame.scene + " flushed no pass");

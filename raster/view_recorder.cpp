@@ -2,6 +2,7 @@
 #include "raster/view_recorder.h"
 
 #include <cmath>
+#include <string>
 
 #include "raster/shader/shader_instance.h"
 
@@ -30,6 +31,17 @@ bool edgeCrossing(const EdgeFunction& a, const EdgeFunction& b, float& x, float&
 
 ViewPass& ViewRecorder::beginPass(const TileJob& job, int tilesX, int tilesY) {
   const Framebuffer& fb = *job.framebuffer;
+  if (reserve_) {
+    const uint64_t pixels = uint64_t(fb.width) * uint64_t(fb.height);
+    const uint64_t bytes = uint64_t(tilesX) * uint64_t(tilesY) * sizeof(uint64_t) +
+                           (what_ == Record::Fragments ? pixels * FragmentCounts::kCountersPerPixel * sizeof(uint32_t) : 0) +
+                           (what_ == Record::Triangles ? job.triangles.size() * sizeof(ViewTriangle) : 0);
+    std::string what = "the view's record of pass ";
+    for (const std::string& part : {std::to_string(passes_.size()), std::string(" ("), std::to_string(fb.width),
+                                    std::string("x"), std::to_string(fb.height), std::string(")")})
+      what.append(part);
+    reserve_(bytes, what);
+  }
   ViewPass& pass = passes_.emplace_back();
   pass.index = int(passes_.size()) - 1;
   pass.width = fb.width;

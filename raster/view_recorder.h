@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,11 @@ class ViewRecorder {
   explicit ViewRecorder(Record what) : what_(what) {}
 
   Record what() const { return what_; }
+  // Called with the bytes a pass's record will hold (per-pixel counts, tile times, the
+  // triangle list) before they are allocated, so that the caller can charge them to its
+  // memory cap; an exception it throws aborts the pass before anything is allocated.
+  using Reserve = std::function<void(uint64_t bytes, const std::string& what)>;
+  void setReserve(Reserve reserve) { reserve_ = std::move(reserve); }
   // The scene's label of the pass now beginning (called by the backend after
   // Renderer::beginPass), given to the record made when that pass is flushed.
   void labelNextPass(std::string label) { pendingLabel_ = std::move(label); }
@@ -65,6 +71,7 @@ class ViewRecorder {
 
  private:
   Record what_;
+  Reserve reserve_;
   std::string pendingLabel_;
   std::vector<ViewPass> passes_;
 };

@@ -27,6 +27,7 @@ namespace raster {
 // y * width + x). Helper lanes (shaded only so dFdx / dFdy see whole quads) are counted
 // apart from fragments, and never in `shaded`.
 struct FragmentCounts {
+  static constexpr int kCountersPerPixel = 5;   // the arrays below
   int width = 0, height = 0;
   std::vector<uint32_t> shaded;            // covered, passed the depth test, fragment shader ran
   std::vector<uint32_t> depthOnly;         // covered and passed, in a draw that writes no colour (no shader runs)

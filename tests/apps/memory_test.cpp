@@ -51,6 +51,26 @@ TEST_SUITE("hostile") {
     CHECK(dump.err.find("memory: reading back a 4096x4096 target") != std::string::npos);
   }
 
+  // A stage view keeps five counters per pixel of every pass it records (20 bytes a pixel):
+  // at 2048x1536 the shadow frame's window pass alone needs 60 MiB of records beside its
+  // ~48 MiB of targets and read-backs. Under an 80 MiB cap the plain render succeeds; the
+  // overdraw view is refused when its record would pass the cap, and writes nothing.
+  TEST_CASE("memory: a stage view's per-pixel records count against the cap") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const std::string render = "render shadow --size 2048x1536 --max-memory 80M --quiet --out final.png";
+    const RunResult plain = runCli(cwd, render);
+    INFO(plain.err);
+    CHECK(plain.status == 0);
+    fs::remove(cwd / "final.png");
+    const RunResult view = runCli(cwd, render + " --view overdraw");
+    INFO(view.err);
+    CHECK(view.status == 2);
+    CHECK(view.err.find("memory: the view's record of pass 1 (2048x1536) needs 60.0 MiB") != std::string::npos);
+    CHECK(fs::is_empty(cwd));
+  }
+
   // Seven 16384x16384 JPEGs in the asset folder took 17 GB before anything failed. An image
   // is now refused from its header, before it is decoded: here a PNG whose header claims
   // 16384x16384 (1 GiB decoded) among the deferred scene's real assets.

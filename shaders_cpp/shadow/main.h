@@ -109,8 +109,11 @@ struct MainPass {
     // Blinn-Phong specular, killed in shadow along with the diffuse.
     const vec3<F> hvec = normalize(l + v);
     const F spec = pow(max(dot(n, hvec), F(0.0f)), F(48.0f)) * lit * spec_strength;
-    const vec3<F> diffuse = sun * ndotl * lit;
-    const vec3<F> col = ambient * albedo + albedo * diffuse + vec3<F>(spec, spec, spec);
+    // diffuse = sun * ndotl * lit is used once, so GLSL IR grafts it into albedo * diffuse:
+    // albedo * ((sun * ndotl) * lit), a tree of products alone, which Mesa's
+    // do_rebalance_tree (opt_rebalance_tree.cpp) balances as (albedo * sun) * (ndotl * lit).
+    const vec3<F> albedo_diffuse = (albedo * sun) * (ndotl * lit);
+    const vec3<F> col = ambient * albedo + albedo_diffuse + vec3<F>(spec, spec, spec);
     out.color[0] = vec4<F>(col, F(1.0f));
   }
 };

@@ -8,6 +8,18 @@
 //   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form)
 //   mat4 * vec4    = ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w   (column by column)
 // Uniform matrices are glm::mat4 (host math); they multiply lane vectors.
+//
+// Beyond single functions, Mesa's compiler rewrites whole expressions, and a port must write
+// them in the rewritten order to stay bit-exact (found with raster trace and float probes,
+// STABILITY.md "Where gl is not bit-identical"):
+//   - a tree of one operation alone (+ or *, one type, at most one constant, temporaries used
+//     once grafted in) of four or more leaves is balanced by GLSL IR's do_rebalance_tree:
+//     a * ((b * c) * d) becomes (a * b) * (c * d)      (shadow/main.h, hdr/down.h, up.h);
+//   - x + (a * b + c * d), the inner sum used once and x no product, becomes
+//     (a * b + x) + c * d (nir_opt_algebraic "Reassociate add chains")   (deferred/ssao.h);
+//   - a * b + a * c becomes a * (b + c) (nir_opt_algebraic).
+// An 8-bit target hides most such slips; rendering the pass into RGBA32F on both backends
+// shows them as one-float-step differences.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -26,7 +26,7 @@ void pcf(benchmark::State& state, Walk walk) {
       Lanes16 s, t;
       walk.next(s, t);
       Lanes16 taps[N][N];
-      raster::textureCompareGrid<R>(sampler, raster::glsl::vec2<Lanes16>(s, t), texel, ref, taps);
+      raster::textureCompareGrid<R>(sampler, raster::glsl::vec2<Lanes16>(s, t), 0.0f, texel, ref, taps);
       for (int j = 0; j < N; ++j)   // the shader's own sum of the taps
         for (int i = 0; i < N; ++i) sum = sum + taps[j][i];
     }

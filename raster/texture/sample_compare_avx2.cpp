@@ -80,7 +80,7 @@ namespace {
 // grid's size and its loops unroll (a 3x3 grid's compare results stay in registers instead
 // of a 6x6 array on the stack).
 template <int N, int R>
-void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float8* t, float step, const simd::Float8* ref8,
+void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float8* t, float origin, float step, const simd::Float8* ref8,
                   simd::Float8* const* taps) {
   constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
   LinearTaps8 x[N][count], y[N][count];
@@ -89,8 +89,9 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
   WindowTaps<count> wx[N], wy[N];
   for (int h = 0; h < N; ++h) {
     for (int k = 0; k < count; ++k) {
-      // uv + vec2(i, j) * step: the offset is exact, the sum rounds as the shader's does.
-      const __m256 offset = _mm256_set1_ps(float(k - radius) * step);
+      // (origin + k * step) + base: the constant folded in float, then one rounding add, as
+      // the compiled shader does (textureCompareGrid in sampler.h).
+      const __m256 offset = _mm256_set1_ps(origin + float(k - radius) * step);
       x[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(s[h].v, offset), depth.width);
       y[h][k] = wrapLinearClampToEdge8(_mm256_add_ps(t[h].v, offset), depth.height);
     }
@@ -103,8 +104,9 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
     for (int j = 0; j < count; ++j)
       for (int i = 0; i < count; ++i)
         taps[h][j * count + i] =
-            compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s[h].v, _mm256_set1_ps(float(i - radius) * step))),
-                                simd::Float8(_mm256_add_ps(t[h].v, _mm256_set1_ps(float(j - radius) * step))), ref8[h]);
+            compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s[h].v, _mm256_set1_ps(origin + float(i - radius) * step))),
+                                simd::Float8(_mm256_add_ps(t[h].v, _mm256_set1_ps(origin + float(j - radius) * step))),
+                                ref8[h]);
   }
 
   const float scale = depthCodeScale(depth);
@@ -175,25 +177,25 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
 }  // namespace
 
 template <int R>
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref,
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
                   simd::Float8* taps) {
-  compareGridN<1, R>(depth, &s, &t, step, &ref, &taps);
+  compareGridN<1, R>(depth, &s, &t, origin, step, &ref, &taps);
 }
 
 template <int R>
-void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
   simd::Float8* const taps[2] = {lo, hi};
-  compareGridN<2, R>(depth, s, t, step, ref, taps);
+  compareGridN<2, R>(depth, s, t, origin, step, ref, taps);
 }
 
 // The grids the shaders use: 3x3 (shadow) and 5x5 (deferred).
-template void compareGrid8<1>(const Texture&, simd::Float8, simd::Float8, float, simd::Float8, simd::Float8*);
-template void compareGrid8<2>(const Texture&, simd::Float8, simd::Float8, float, simd::Float8, simd::Float8*);
-template void compareGrid8x2<1>(const Texture&, const simd::Float8*, const simd::Float8*, float, const simd::Float8*,
-                                simd::Float8*, simd::Float8*);
-template void compareGrid8x2<2>(const Texture&, const simd::Float8*, const simd::Float8*, float, const simd::Float8*,
-                                simd::Float8*, simd::Float8*);
+template void compareGrid8<1>(const Texture&, simd::Float8, simd::Float8, float, float, simd::Float8, simd::Float8*);
+template void compareGrid8<2>(const Texture&, simd::Float8, simd::Float8, float, float, simd::Float8, simd::Float8*);
+template void compareGrid8x2<1>(const Texture&, const simd::Float8*, const simd::Float8*, float, float,
+                                const simd::Float8*, simd::Float8*, simd::Float8*);
+template void compareGrid8x2<2>(const Texture&, const simd::Float8*, const simd::Float8*, float, float,
+                                const simd::Float8*, simd::Float8*, simd::Float8*);
 
 }  // namespace raster::sampling
 #endif

@@ -93,13 +93,15 @@ void lookupColorGrid3x3(const Texture& texture, glsl::vec2<F> uv, glm::vec2 step
       taps[j + 1][i + 1] = lookupColor(texture, uv + glsl::vec2<F>(F(float(i) * step.x), F(float(j) * step.y)));
 }
 
-// taps[j + R][i + R] = the compare lookup at uv + (i, j) * step, i and j in -R..R (N = 2R + 1).
+// taps[j + R][i + R] = the compare lookup at (origin + (i, j) * step) + base, i and j in -R..R
+// (N = 2R + 1), each constant offset folded in float first.
 template <int N, class F>
-void lookupCompareGrid(const Texture& depth, glsl::vec2<F> uv, float step, F ref, F (&taps)[N][N]) {
+void lookupCompareGrid(const Texture& depth, glsl::vec2<F> base, float origin, float step, F ref, F (&taps)[N][N]) {
   constexpr int R = N / 2;
   for (int j = -R; j <= R; ++j)
     for (int i = -R; i <= R; ++i)
-      taps[j + R][i + R] = lookupCompare(depth, uv + glsl::vec2<F>(F(float(i) * step), F(float(j) * step)), ref);
+      taps[j + R][i + R] = lookupCompare(
+          depth, glsl::vec2<F>(F(origin + float(i) * step) + base.x, F(origin + float(j) * step) + base.y), ref);
 }
 
 }  // namespace sampling
@@ -144,15 +146,19 @@ template <class F>
 }
 
 // The PCF loops of the seeds' shaders, their lookups made at once:
-//   taps[j + R][i + R] = texture(shadow, vec3(uv + vec2(i, j) * step, ref)),  i, j in -R..R.
-// Every tap equals that lone lookup bit for bit; the vector forms only share the texel
-// loads and compares that neighbouring taps have in common (a 3x3 grid of 2x2 footprints
-// covers 4x4 texels, not 36). The shader still sums the taps itself, in its own order.
+//   taps[j + R][i + R] = texture(shadow, vec3((origin + vec2(i, j) * step) + base, ref)),
+// i, j in -R..R. That is GLSL's uv + vec2(i, j) * step where uv = base + origin and origin
+// is a constant (the seeds' ndc * 0.5 + 0.5): Mesa's compiler folds each tap's constant
+// offset into origin first (nir_opt_algebraic, "Reassociate constants in add chains"), and
+// adds base last. Every tap equals that lone lookup bit for bit; the vector forms only share
+// the texel loads and compares that neighbouring taps have in common (a 3x3 grid of 2x2
+// footprints covers 4x4 texels, not 36). The shader still sums the taps itself, in its own
+// order.
 template <int R, class F>
-void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> uv, float step, F ref,
+void textureCompareGrid(const Sampler2DShadow& sampler, glsl::vec2<F> base, float origin, float step, F ref,
                         F (&taps)[2 * R + 1][2 * R + 1]) {
   static_assert(R == 1 || R == 2, "3x3 and 5x5 grids");
-  sampling::lookupCompareGrid(*sampler.texture, uv, step, ref, taps);
+  sampling::lookupCompareGrid(*sampler.texture, base, origin, step, ref, taps);
 }
 
 }  // namespace raster

@@ -16,16 +16,16 @@ namespace raster::sampling {
 // The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
 
-// The (2R + 1)^2 lookups at (s + i * step, t + j * step), i and j in -R..R, each
-// bit-identical to compareLinearClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
+// The (2R + 1)^2 lookups at ((origin + i * step) + s, (origin + j * step) + t), i and j in
+// -R..R, each bit-identical to compareLinearClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
 // Overlapping taps share their texels. Defined for R = 1 and 2 (sample_compare.cpp).
 template <int R>
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float step, simd::Float8 ref,
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
                   simd::Float8* taps);
 // Two such grids (Float8x2 shading), each bit-identical to compareGrid8: both groups'
 // texel rows are loaded before either blends, so their cache misses overlap.
 template <int R>
-void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float step,
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
 
 // The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
@@ -134,18 +134,19 @@ inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) {
 }
 
 template <int N>
-void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8> uv, float step, simd::Float8 ref,
+void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8> base, float origin, float step, simd::Float8 ref,
                        simd::Float8 (&taps)[N][N]) {
-  compareGrid8<N / 2>(depth, uv.x, uv.y, step, ref, &taps[0][0]);
+  compareGrid8<N / 2>(depth, base.x, base.y, origin, step, ref, &taps[0][0]);
 }
 
 template <int N>
-void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8x2> uv, float step, simd::Float8x2 ref,
+void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8x2> base, float origin, float step, simd::Float8x2 ref,
                        simd::Float8x2 (&taps)[N][N]) {
   constexpr int R = N / 2, kTaps = N * N;
   simd::Float8 lo[kTaps], hi[kTaps];
-  const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()}, refs[2] = {ref.low(), ref.high()};
-  compareGrid8x2<R>(depth, s, t, step, refs, lo, hi);
+  const simd::Float8 s[2] = {base.x.low(), base.x.high()}, t[2] = {base.y.low(), base.y.high()},
+                     refs[2] = {ref.low(), ref.high()};
+  compareGrid8x2<R>(depth, s, t, origin, step, refs, lo, hi);
   for (int k = 0; k < kTaps; ++k) taps[k / N][k % N] = {lo[k], hi[k]};
 }
 

@@ -53,14 +53,16 @@ struct LightingPass : PostProgram {
     return vec2<F>(u, v);
   }
 
+  // GLSL's uv is ndc.xy * 0.5 + 0.5; it comes here as half_ndc = ndc.xy * 0.5, because
+  // Mesa compiles each tap's uv + off as (0.5 + off) + half_ndc (textureCompareGrid).
   template <class F>
-  static F pcf_shadow(const Uniforms& u, vec2<F> uv, F ref) {
+  static F pcf_shadow(const Uniforms& u, vec2<F> half_ndc, F ref) {
     const float texel = 1.0f / SHADOW_DIM_F;
     // The 25 texture() calls of the loop below, made at once so the sampler can share the
     // texels that neighbouring taps read: taps[j + 2][i + 2] is
     // texture(shadow_map, vec3(uv + vec2(i, j) * texel, ref)), bit for bit.
     F taps[5][5];
-    raster::textureCompareGrid<2>(u.shadow_map, uv, texel, ref, taps);
+    raster::textureCompareGrid<2>(u.shadow_map, half_ndc, 0.5f, texel, ref, taps);
     F sum = F(0.0f);
     for (int j = -2; j < 3; j++) {
       for (int i = -2; i < 3; i++) {
@@ -95,10 +97,12 @@ struct LightingPass : PostProgram {
     const vec4<F> lc = u.u_light_vp * vec4<F>(p, F(1.0f));
     const F lw = max(lc.w, F(0.0001f));
     const vec3<F> ndc = vec3<F>(lc.x / lw, lc.y / lw, lc.z / lw);
-    const vec2<F> shadow_uv = vec2<F>(ndc.x * F(0.5f) + F(0.5f), ndc.y * F(0.5f) + F(0.5f));
+    // shadow_uv = vec2(ndc.x * 0.5 + 0.5, ndc.y * 0.5 + 0.5), handed to pcf_shadow without
+    // its + 0.5.
+    const vec2<F> shadow_half_ndc = vec2<F>(ndc.x * F(0.5f), ndc.y * F(0.5f));
     const F ref_depth = clamp(ndc.z * F(0.5f) + F(0.5f), F(0.0f), F(1.0f));
     const F bias = max(F(0.0025f) * (F(1.0f) - ndotl_sun), F(0.0009f));
-    F shadow = pcf_shadow(u, shadow_uv, ref_depth - bias);
+    F shadow = pcf_shadow(u, shadow_half_ndc, ref_depth - bias);
     shadow = select(ndotl_sun < F(0.05f), F(0.0f), shadow);
     const vec3<F> hv_sun = normalize(sun_dir + view_dir);
     const F spec_sun = pow(max(dot(n, hv_sun), F(0.0f)), shininess) * spec_i;
@@ -120,13 +124,18 @@ struct LightingPass : PostProgram {
     const vec3<F> hemi = mix(vec3<F>(glm::vec3(0.08f, 0.06f, 0.05f)), vec3<F>(glm::vec3(0.22f, 0.24f, 0.36f)),
                              vec3<F>(amb_t, amb_t, amb_t));
     const vec3<F> env_amb = raster::texture(u.env_map, equirect_uv(n)).xyz();
-    const vec3<F> ambient = mix(hemi, env_amb, vec3<F>(F(0.4f), F(0.4f), F(0.4f)));
+    // mix with a constant t: nir_lower_flrp takes the strict form x * (1 - t) + y * t there
+    // (nir_lower_flrp.c, "If t is constant"), with 1 - t folded in float.
+    const vec3<F> ambient = hemi * F(1.0f - 0.4f) + env_amb * F(0.4f);
 
     const vec3<F> inc = vec3<F>(-view_dir.x, -view_dir.y, -view_dir.z);
     const vec3<F> rdir = reflect3(inc, n);
     const vec3<F> env_refl = raster::texture(u.env_map, equirect_uv(rdir)).xyz();
-    const F fres = pow<4.0f>(F(1.0f) - max(dot(n, view_dir), F(0.0f)));
-    const vec3<F> env_spec = env_refl * (spec_i * (F(0.10f) + F(0.7f) * fres));
+    // fres = pow(x, 4.0) is (x * x) * (x * x) (gl_math.h), used once, in 0.7 * fres:
+    // nir_opt_algebraic moves the constant into the product, (x2 * 0.7) * x2.
+    const F fres_base = F(1.0f) - max(dot(n, view_dir), F(0.0f));
+    const F fres_squared = pow<2.0f>(fres_base);
+    const vec3<F> env_spec = env_refl * (spec_i * (F(0.10f) + (fres_squared * F(0.7f)) * fres_squared));
 
     const vec3<F> lighting = (ambient * ao) + (sun + pts) * (F(0.55f) + F(0.45f) * ao) + env_spec * ao;
     // linear -> sRGB for the display (the default GL framebuffer does no sRGB encode)

@@ -53,14 +53,16 @@ struct MainPass {
   static constexpr float SHADOW_DIM_F = 1024.0f;
 
   // 3x3 PCF: average 9 taps over a one-texel radius; each tap is a hardware 2x2 compare.
+  // GLSL's uv is ndc.xy * 0.5 + 0.5; it comes here as half_ndc = ndc.xy * 0.5, because
+  // Mesa compiles each tap's uv + off as (0.5 + off) + half_ndc (textureCompareGrid).
   template <class F>
-  static F pcf_shadow(const Uniforms& u, vec2<F> uv, F ref) {
+  static F pcf_shadow(const Uniforms& u, vec2<F> half_ndc, F ref) {
     const float texel = 1.0f / SHADOW_DIM_F;
     // The 9 texture() calls of the loop below, made at once so the sampler can share the
     // texels that neighbouring taps read: taps[j + 1][i + 1] is
     // texture(shadow_map, vec3(uv + vec2(i, j) * texel, ref)), bit for bit.
     F taps[3][3];
-    raster::textureCompareGrid<1>(u.shadow_map, uv, texel, ref, taps);
+    raster::textureCompareGrid<1>(u.shadow_map, half_ndc, 0.5f, texel, ref, taps);
     F sum = F(0.0f);
     for (int j = -1; j < 2; j++) {
       for (int i = -1; i < 2; i++) {
@@ -80,11 +82,12 @@ struct MainPass {
     // Light-space NDC -> [0, 1] uv and depth reference.
     const F w = max(in.v_light_space.w, F(0.0001f));
     const vec3<F> ndc = in.v_light_space.xyz() / vec3<F>(w, w, w);
-    const vec2<F> shadow_uv = ndc.xy() * F(0.5f) + glm::vec2(0.5f, 0.5f);
+    // shadow_uv = ndc.xy * 0.5 + vec2(0.5, 0.5), handed to pcf_shadow without its + 0.5.
+    const vec2<F> shadow_half_ndc = ndc.xy() * F(0.5f);
     const F ref_depth = ndc.z * F(0.5f) + F(0.5f);
     // N.L-scaled bias on top of the pipeline's polygon offset.
     const F bias = max(F(0.0025f) * (F(1.0f) - ndotl), F(0.0008f));
-    F lit = pcf_shadow(u, shadow_uv, ref_depth - bias);
+    F lit = pcf_shadow(u, shadow_half_ndc, ref_depth - bias);
     // Faces turned away from the light are in shadow regardless of the depth test.
     lit = select(ndotl < F(0.05f), F(0.0f), lit);
     // Hemisphere ambient: warm-ish sky overhead blended to a dim ground bounce, by n.y.

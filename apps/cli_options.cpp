@@ -47,6 +47,9 @@ void addFrameOptions(CLI::App& command, FrameArgs& args) {
   addMethodOptions(command, args.preset, args.method);
   addSetOption(command, args.sets);
   addQuietOption(command, args.quiet);
+  command.add_flag("--float-final", args.floatFinal,
+                   "Draw the final pass into an RGBA32F target instead of the RGBA8 window: the shaders' "
+                   "outputs before 8-bit rounding, compared bit for bit");
 }
 
 namespace {
@@ -97,7 +100,9 @@ void addQuietOption(CLI::App& command, bool& quiet) {
 }
 
 scenes::SceneOptions sceneOptions(const Frame& frame) {
-  return scenes::SceneOptions{frame.time, frame.width, frame.height, frame.assets, frame.instances, frame.params};
+  scenes::SceneOptions options{frame.time, frame.width, frame.height, frame.assets, frame.instances, frame.params};
+  options.floatFinal = frame.floatFinal;
+  return options;
 }
 
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides) {
@@ -213,6 +218,7 @@ Frame validateFrame(const FrameArgs& args) {
   }
   frame.sets = args.sets;
   frame.quiet = args.quiet;
+  frame.floatFinal = args.floatFinal;
 
   if (!args.maxMemory.empty()) {
     uint64_t bytes = 0;

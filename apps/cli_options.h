@@ -40,6 +40,7 @@ struct FrameArgs {
   std::string method;          // STEP=NAME[,STEP=NAME]: overrides of the preset's steps
   std::vector<std::string> sets;   // --set NAME=VALUE, in order (scenes/scene_params.h)
   bool quiet = false;          // no progress or announcements on stderr
+  bool floatFinal = false;     // the final pass into RGBA32F (scenes::SceneOptions::floatFinal)
 };
 
 struct RenderArgs : FrameArgs {
@@ -70,6 +71,7 @@ struct Frame {
   scenes::SceneParams params;  // --set, beyond time, size and instances
   std::vector<std::string> sets;   // the --set texts, for a child process to get the same frame
   bool quiet = false;
+  bool floatFinal = false;
 };
 
 // The scene options of a validated frame.

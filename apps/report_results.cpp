@@ -33,9 +33,9 @@ json statsJson(const compare::TargetStats& s) {
     j["depth_texels_differing"] = s.depthTexelsDiffering;
     j["max_depth_lsb"] = s.maxDepthLsb;
   }
-  if (s.kind == "half") {
+  if (s.kind == "half" || s.kind == "float") {
     j["share_bit_identical"] = s.shareBitIdentical;
-    j["max_half_ulps"] = s.maxHalfUlps;
+    j[s.kind == "half" ? "max_half_ulps" : "max_float_ulps"] = s.kind == "half" ? s.maxHalfUlps : s.maxFloatUlps;
     j["nonfinite_pixels"] = s.nonFinitePixels;
   }
   return j;
@@ -46,7 +46,7 @@ std::string psnrText(const json& db) { return db.is_null() ? "identical" : cli::
 std::string metricsTable(const json& s, const std::string& id) {
   const std::string kind = s.at("kind");
   // The unit of a difference, as compare/metrics.h defines it per kind.
-  const std::string unit = kind == "depth" ? "depth LSBs" : kind == "half" ? "float value" : "8-bit steps";
+  const std::string unit = kind == "depth" ? "depth LSBs" : kind == "half" || kind == "float" ? "float value" : "8-bit steps";
   Table t{id, "", {"metric", "value"}, {}};
   t.rows.push_back({escape("size"), escape(jsonText(s.at("size")[0]) + "x" + jsonText(s.at("size")[1]))});
   t.rows.push_back({escape("largest difference (" + unit + ")"), cell(s.at("max_abs"), cli::sixDigits(s.at("max_abs")))});
@@ -58,9 +58,10 @@ std::string metricsTable(const json& s, const std::string& id) {
   if (kind == "depth") {
     t.rows.push_back({escape("texels differing"), cell(s.at("depth_texels_differing"), jsonText(s.at("depth_texels_differing")))});
   }
-  if (kind == "half") {
+  if (kind == "half" || kind == "float") {
+    const std::string ulps = kind == "half" ? "max_half_ulps" : "max_float_ulps";
     t.rows.push_back({escape("pixels bit-identical"), cell(s.at("share_bit_identical"), percent(s.at("share_bit_identical")))});
-    t.rows.push_back({escape("largest difference (half ULPs)"), cell(s.at("max_half_ulps"), jsonText(s.at("max_half_ulps")))});
+    t.rows.push_back({escape("largest difference (" + kind + " ULPs)"), cell(s.at(ulps), jsonText(s.at(ulps)))});
     t.rows.push_back({escape("non-finite pixels"), cell(s.at("nonfinite_pixels"), jsonText(s.at("nonfinite_pixels")))});
   }
   return t.html();

@@ -97,6 +97,7 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
   for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
   if (frame.quiet) args.push_back("--quiet");
+  if (frame.floatFinal) args.push_back("--float-final");
 
   // Run it with stdout (its "wrote" lines) silenced; its progress and errors go to stderr.
   if (!frame.quiet)

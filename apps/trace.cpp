@@ -320,6 +320,8 @@ CLI::App* addTraceCommand(CLI::App& app, TraceArgs& args) {
 
 int runTrace(const TraceArgs& args) {
   const Frame frame = validateFrame(args);
+  if (frame.floatFinal)
+    throw UsageError("--float-final: the pixel history follows the window's final image; use render or compare with it");
   const auto [pixelX, pixelY] = parsePixel(args.pixel, frame.width, frame.height);
   if (!args.json.empty()) checkOutputFile("--json", args.json);
   if (!args.noReference) scenes::checkGalliumEnvironment();

@@ -15,7 +15,7 @@ namespace {
 using scenes::ImageData;
 using scenes::TexelFormat;
 
-enum class Kind { Rgba8, Depth, Half };
+enum class Kind { Rgba8, Depth, Half, Float };
 
 Kind kindOf(const ImageData& image) {
   const size_t pixels = size_t(image.width) * size_t(image.height);
@@ -32,7 +32,7 @@ Kind kindOf(const ImageData& image) {
     case TexelFormat::RGB16F:
     case TexelFormat::RGBA32F:
       if (image.channels > 0 && image.floats.size() == pixels * size_t(image.channels))
-        return Kind::Half;
+        return image.format == TexelFormat::RGBA32F ? Kind::Float : Kind::Half;
       break;
   }
   throw std::invalid_argument("image payload does not match its format and size");
@@ -64,6 +64,10 @@ SampleDiff sampleDiff(Kind kind, const ImageData& a, const ImageData& b, size_t 
       const uint16_t ha = halfBits(a.floats[i]), hb = halfBits(b.floats[i]);
       return {halfUlpDistance(ha, hb), double(a.floats[i]) - double(b.floats[i]), ha == hb};
     }
+    case Kind::Float: {
+      const uint32_t fa = floatBits(a.floats[i]), fb = floatBits(b.floats[i]);
+      return {floatUlpDistance(fa, fb), double(a.floats[i]) - double(b.floats[i]), fa == fb};
+    }
   }
   return {0, 0, true};
 }
@@ -93,8 +97,20 @@ std::string imageKind(const ImageData& image) {
     case Kind::Rgba8: return "rgba8";
     case Kind::Depth: return "depth";
     case Kind::Half: return "half";
+    case Kind::Float: return "float";
   }
   return "";
+}
+
+uint32_t floatBits(float value) {
+  const uint32_t bits = std::bit_cast<uint32_t>(value);
+  return (bits & 0x7fffffff) > 0x7f800000 ? (bits & 0x80000000) | 0x7fc00000 : bits;   // one NaN
+}
+
+uint64_t floatUlpDistance(uint32_t a, uint32_t b) {
+  // Signed order of the patterns: negatives mirrored below zero, -0 == +0.
+  auto order = [](uint32_t bits) { return (bits & 0x80000000) ? -int64_t(bits & 0x7fffffff) : int64_t(bits); };
+  return uint64_t(std::abs(order(a) - order(b)));
 }
 
 uint16_t halfBits(float value) {
@@ -132,7 +148,7 @@ void checkComparable(const std::string& name, const ImageData& a, const ImageDat
     throw std::invalid_argument(name + ": the two images are of different kinds");
   if (a.width != b.width || a.height != b.height)
     throw std::invalid_argument(name + ": the two images differ in size");
-  if ((kind == Kind::Half && a.channels != b.channels) ||
+  if (((kind == Kind::Half || kind == Kind::Float) && a.channels != b.channels) ||
       (kind == Kind::Depth && a.depthBits != b.depthBits))
     throw std::invalid_argument(name + ": the two images differ in layout");
 }
@@ -160,7 +176,7 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
       const SampleDiff d = sampleDiff(kind, a, b, i);
       pixelUnits = std::max(pixelUnits, d.units);
       sameBits = sameBits && d.sameBits;
-      if (kind == Kind::Half && !(std::isfinite(a.floats[i]) && std::isfinite(b.floats[i]))) {
+      if ((kind == Kind::Half || kind == Kind::Float) && !(std::isfinite(a.floats[i]) && std::isfinite(b.floats[i]))) {
         finitePixel = false;   // NaN - NaN or inf - inf is no distance: kept out of RMSE
         continue;
       }
@@ -186,12 +202,13 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
   stats.rmse = std::sqrt(sumSquares / samples);
   stats.psnr = stats.rmse == 0 ? std::numeric_limits<double>::infinity()
                                : 20.0 * std::log10(peakOf(kind, a) / stats.rmse);
-  stats.maxAbs = kind == Kind::Half ? maxValue : double(maxUnits);
+  stats.maxAbs = kind == Kind::Half || kind == Kind::Float ? maxValue : double(maxUnits);
   if (kind == Kind::Depth) {
     stats.depthTexelsDiffering = differing;
     stats.maxDepthLsb = maxUnits;
   }
   if (kind == Kind::Half) stats.maxHalfUlps = maxUnits;
+  if (kind == Kind::Float) stats.maxFloatUlps = maxUnits;
   stats.nonFinitePixels = nonFinite;
   return stats;
 }
@@ -201,8 +218,9 @@ std::string formatStatsLine(const TargetStats& s) {
   char largest[48];
   if (s.kind == "depth")
     std::snprintf(largest, sizeof largest, "%llu lsb", (unsigned long long)s.maxDepthLsb);
-  else if (s.kind == "half")
-    std::snprintf(largest, sizeof largest, "%llu ulp", (unsigned long long)s.maxHalfUlps);
+  else if (s.kind == "half" || s.kind == "float")
+    std::snprintf(largest, sizeof largest, "%llu ulp",
+                  (unsigned long long)(s.kind == "half" ? s.maxHalfUlps : s.maxFloatUlps));
   else
     std::snprintf(largest, sizeof largest, "%.0f", s.maxAbs);
 
@@ -224,7 +242,7 @@ std::string formatStatsLine(const TargetStats& s) {
   std::string text = line;
   if (s.kind == "depth")
     text += "  texels " + std::to_string(s.depthTexelsDiffering);
-  if (s.kind == "half") {
+  if (s.kind == "half" || s.kind == "float") {
     std::snprintf(line, sizeof line, "  identical%s  max|d| %.4g",
                   percent(s.shareBitIdentical).c_str(), s.maxAbs);
     text += line;

@@ -19,8 +19,8 @@ namespace compare {
 
 struct TargetStats {
   std::string name;
-  std::string kind;                    // "rgba8", "depth", "half"
-  double maxAbs = 0;                   // rgba8: steps; depth: LSBs; half: float value
+  std::string kind;                    // "rgba8", "depth", "half" (RGBA16F), "float" (RGBA32F)
+  double maxAbs = 0;                   // rgba8: steps; depth: LSBs; half, float: value
   double rmse = 0;                     // over every channel sample, in the same unit
   double psnr = 0;                     // peak 255, 2^bits - 1 or 1.0; +inf when identical
   double shareDiffering = 0;           // of pixels: any channel differs at all
@@ -30,6 +30,7 @@ struct TargetStats {
   uint64_t maxDepthLsb = 0;            // depth only
   double shareBitIdentical = 0;        // of pixels whose every channel has the same bits
   uint64_t maxHalfUlps = 0;            // half only
+  uint64_t maxFloatUlps = 0;           // float only: ULPs of float32 (half ULPs would hide them)
   // Float images: pixels with a NaN or infinite channel in either image. Their channels
   // count in the shares and ULPs (NaN = NaN, +inf = +inf), but not in RMSE, PSNR or maxAbs,
   // which are over the finite samples only, so no metric is ever NaN.
@@ -37,7 +38,7 @@ struct TargetStats {
   int width = 0, height = 0;
 };
 
-// "rgba8", "depth" or "half"; throws std::invalid_argument for an inconsistent image.
+// "rgba8", "depth", "half" or "float"; throws std::invalid_argument for an inconsistent image.
 std::string imageKind(const scenes::ImageData& image);
 
 // Throws std::invalid_argument (naming `name`) unless a and b have the same size, kind and
@@ -57,6 +58,9 @@ uint64_t pixelDifference(const scenes::ImageData& a, const scenes::ImageData& b,
 // distance in ULPs between two halves (0 between +0 and -0).
 uint16_t halfBits(float value);
 uint64_t halfUlpDistance(uint16_t a, uint16_t b);
+// The same for float32: its bits with every NaN made one, and the ULP distance.
+uint32_t floatBits(float value);
+uint64_t floatUlpDistance(uint32_t a, uint32_t b);
 
 // One aligned, human-readable line; depth lines add "texels N" (differing), half lines
 // "identical P%  max|d| X" and, when there are any, "nonfinite N". E.g.

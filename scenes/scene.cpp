@@ -1,10 +1,21 @@
 // The scene names and the asset folder lookup (the factory is scene_factory.cpp).
 #include "scenes/scene.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 
 namespace scenes {
+
+void Scene::createFinalTarget(Backend& backend, const SceneOptions& options, bool depth) {
+  if (!options.floatFinal) return;
+  const SamplerState nearest{Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge, false};
+  const int w = std::max(options.width, 1), h = std::max(options.height, 1);
+  const Handle color = backend.createTexture({w, h, TexelFormat::RGBA32F, nearest});
+  backend.labelTexture(color, "final");
+  const Handle depthBuffer = depth ? backend.createTexture({w, h, TexelFormat::Depth24, nearest}) : 0;
+  final_ = backend.createFramebuffer({{color}, depthBuffer});
+}
 
 std::vector<std::string> sceneNames() { return {"shadow", "deferred", "hdr"}; }
 

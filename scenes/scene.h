@@ -21,6 +21,10 @@ struct SceneOptions {
   std::string assetDir;   // empty: the default (see assetDirectory())
   int instances = 1000;   // the HDR scene's cube count (the seed's N_INSTANCES)
   SceneParams params;     // --set NAME=VALUE (scene_params.h); unset: the seed's scene
+  // The final pass into an RGBA32F framebuffer of the final size instead of the RGBA8
+  // window (--float-final): the shaders' outputs before 8-bit rounding, which hides nearly
+  // every one-float-step difference. Every other pass is unchanged.
+  bool floatFinal = false;
 };
 
 // One image the scene exposes for inspection and comparison.
@@ -42,8 +46,14 @@ class Scene {
   // Only the final image (the window's colour), for a render that writes nothing else.
   Target readFinal(Backend& backend) {
     backend.finish();
-    return {"final", backend.readColor(kDefaultFramebuffer)};
+    return {"final", backend.readColor(final_)};
   }
+
+ protected:
+  // Where the final pass draws: the window, or with options.floatFinal an RGBA32F
+  // framebuffer (and a Depth24 buffer when the pass depth-tests) made here.
+  void createFinalTarget(Backend& backend, const SceneOptions& options, bool depth);
+  Handle final_ = kDefaultFramebuffer;
 };
 
 // A problem a user can fix (missing or corrupt asset, unknown scene): one clear line.

@@ -21,11 +21,12 @@ namespace testing_support {
 
 // Renders one frame of `scene` at time t and size w x h, and reads every target back.
 inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const std::string& scene, float t, int w,
-                                               int h) {
+                                               int h, bool floatFinal = false) {
   scenes::SceneOptions options;
   options.time = t;
   options.width = w;
   options.height = h;
+  options.floatFinal = floatFinal;
   std::unique_ptr<scenes::Scene> s = scenes::makeScene(scene, options);
   backend.resizeDefaultFramebuffer(w, h);
   s->setup(backend);
@@ -33,9 +34,22 @@ inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const s
   return s->readTargets(backend);
 }
 
-inline std::vector<scenes::Target> renderWithLlvmpipe(const std::string& scene, float t, int w, int h) {
+inline std::vector<scenes::Target> renderWithLlvmpipe(const std::string& scene, float t, int w, int h,
+                                                       bool floatFinal = false) {
   std::unique_ptr<scenes::Backend> gl = scenes::makeGlBackend();
-  return renderScene(*gl, scene, t, w, h);
+  return renderScene(*gl, scene, t, w, h, floatFinal);
+}
+
+// The final pass of both backends into RGBA32F (SceneOptions::floatFinal): the shaders'
+// outputs before 8-bit rounding, which hides nearly every one-step difference of a port
+// from the code Mesa compiles. The stats of that final target.
+inline compare::TargetStats compareFloatFinal(const std::string& scene, float t, int w, int h) {
+  auto ours = scenes::makeRasterBackend(0);
+  const std::vector<scenes::Target> mine = renderScene(*ours, scene, t, w, h, true);
+  const std::vector<scenes::Target> gl = renderWithLlvmpipe(scene, t, w, h, true);
+  const compare::TargetStats stats = compare::compareImages("final", mine.back().image, gl.back().image);
+  MESSAGE(compare::formatStatsLine(stats));
+  return stats;
 }
 
 // Renders a frame with this pipeline and with llvmpipe and compares every target (in the

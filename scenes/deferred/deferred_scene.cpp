@@ -106,6 +106,7 @@ class DeferredScene final : public Scene {
     ssao_tex_ = b.createTexture({w, h, TexelFormat::RGBA8, linear});
     b.labelTexture(ssao_tex_, "ssao");
     ssao_fbo_ = b.createFramebuffer({{ssao_tex_}, 0});
+    createFinalTarget(b, options_, /*depth=*/false);
   }
 
   void renderFrame(Backend& b, float t) override {
@@ -178,7 +179,7 @@ class DeferredScene final : public Scene {
     clearScreen.color = true;
     clearScreen.colorValue = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     b.labelNextPass("final");
-    b.beginPass(kDefaultFramebuffer, {0, 0, w, h}, clearScreen);
+    b.beginPass(final_, {0, 0, w, h}, clearScreen);
     const Handle lightingInputs[6] = {g_albedo_, g_normal_, g_worldpos_, ssao_tex_, shadow_tex_, tex_env_};
     const char* const lightingSamplers[6] = {"lit_albedo", "lit_normal", "lit_worldpos", "lit_ssao", "shadow_map", "env_map"};
     for (int i = 0; i < 6; ++i) {
@@ -202,7 +203,7 @@ class DeferredScene final : public Scene {
     targets.push_back({"gbuffer_worldpos", b.readColor(g_fbo_, 2)});
     targets.push_back({"gbuffer_depth", b.readDepth(g_fbo_)});
     targets.push_back({"ssao", b.readColor(ssao_fbo_, 0)});
-    targets.push_back({"final", b.readColor(kDefaultFramebuffer)});
+    targets.push_back({"final", b.readColor(final_)});
     return targets;
   }
 

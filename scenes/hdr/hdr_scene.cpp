@@ -114,7 +114,7 @@ class HdrScene final : public Scene {
  public:
   explicit HdrScene(const SceneOptions& options)
       : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)), N_INSTANCES(options.instances),
-        params_(options.params) {
+        params_(options.params), options_(options) {
     // bloom mip chain: mip i lives at (HDR >> (i+1)) -- mip 0 is half res, then halving.
     for (int i = 0; i < BLOOM_MIPS; ++i) {
       bloom_w_[size_t(i)] = std::max(HDR_W >> (i + 1), 1);
@@ -142,6 +142,7 @@ class HdrScene final : public Scene {
     // create_bloom_chain, and the chain readTargets() re-runs the down passes into.
     bloom_ = makeBloomChain(b, "bloom_mip_");
     capture_ = makeBloomChain(b, "bloom_capture_");
+    createFinalTarget(b, options_, /*depth=*/false);
   }
 
   void renderFrame(Backend& b, float t) override {
@@ -197,7 +198,7 @@ class HdrScene final : public Scene {
     clearScreen.color = true;
     clearScreen.colorValue = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     b.labelNextPass("final");
-    b.beginPass(kDefaultFramebuffer, {0, 0, display_w, display_h}, clearScreen);
+    b.beginPass(final_, {0, 0, display_w, display_h}, clearScreen);
     b.bindTexture(0, hdr_color_);
     b.bindTexture(1, bloom_.tex[0]);
     b.setUniform(prog_composite_, "src0", 0);
@@ -220,7 +221,7 @@ class HdrScene final : public Scene {
     for (int i = 0; i < BLOOM_MIPS; ++i)
       targets.push_back({"bloom_down_" + std::to_string(i), b.readColor(capture_.fbo[size_t(i)])});
     for (Target& t : up) targets.push_back(std::move(t));
-    targets.push_back({"final", b.readColor(kDefaultFramebuffer)});
+    targets.push_back({"final", b.readColor(final_)});
     return targets;
   }
 
@@ -278,6 +279,7 @@ class HdrScene final : public Scene {
   const int HDR_W, HDR_H;   // the HDR target: the scene's width x height (see the file header)
   const int N_INSTANCES;    // 1000 in the seed; --instances scales the swarm for benchmarks
   const SceneParams params_;  // --set (scene_params.h)
+  const SceneOptions options_;
   std::array<int, BLOOM_MIPS> bloom_w_{}, bloom_h_{};
   Handle prog_scene_ = 0, prog_bright_ = 0, prog_down_ = 0, prog_up_ = 0, prog_composite_ = 0;
   Handle scene_mesh_ = 0, quad_ = 0;

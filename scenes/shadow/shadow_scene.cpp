@@ -73,6 +73,7 @@ class ShadowScene final : public Scene {
     shadow_tex_ = b.createTexture(depth);
     b.labelTexture(shadow_tex_, "shadow_map");
     shadow_fbo_ = b.createFramebuffer({{}, shadow_tex_});
+    createFinalTarget(b, options_, /*depth=*/true);
   }
 
   void renderFrame(Backend& b, float t) override {
@@ -122,7 +123,7 @@ class ShadowScene final : public Scene {
     clearAll.colorValue = glm::vec4(0.04f, 0.05f, 0.09f, 1.0f);
     clearAll.depth = true;
     b.labelNextPass("final");
-    b.beginPass(kDefaultFramebuffer, {0, 0, display_w, display_h}, clearAll);
+    b.beginPass(final_, {0, 0, display_w, display_h}, clearAll);
     const DrawState mainState;
     b.bindTexture(0, shadow_tex_);
     b.setUniform(prog_main_, "shadow_map", 0);
@@ -144,8 +145,8 @@ class ShadowScene final : public Scene {
     // Appended one by one: a braced list would copy every image (its elements are const).
     std::vector<Target> targets;
     targets.push_back({"shadow_map", b.readDepth(shadow_fbo_)});
-    targets.push_back({"depth", b.readDepth(kDefaultFramebuffer)});
-    targets.push_back({"final", b.readColor(kDefaultFramebuffer)});
+    targets.push_back({"depth", b.readDepth(final_)});
+    targets.push_back({"final", b.readColor(final_)});
     return targets;
   }
 

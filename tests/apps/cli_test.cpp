@@ -262,6 +262,23 @@ TEST_SUITE("cli") {
     CHECK(compare::compareImages("z", halfImage({0, 0, 0, 1}), halfImage({-0.0f, 0, 0, 1})).maxHalfUlps == 0);
   }
 
+  // --float-final's targets: one float step must show, which half ULPs would round away.
+  TEST_CASE("float ULPs: RGBA32F targets are measured in float32 steps, not half") {
+    ImageData a = halfImage({0.0f, 1.0f, 0.5f, std::nanf("")}), b = halfImage({-0.0f, std::nextafter(1.0f, 2.0f), 0.5f, std::nanf("")});
+    a.format = b.format = TexelFormat::RGBA32F;
+    const compare::TargetStats s = compare::compareImages("f", a, b);
+    CHECK(s.kind == "float");
+    CHECK(s.maxFloatUlps == 1);
+    CHECK(s.shareBitIdentical == 0);
+    CHECK(s.nonFinitePixels == 1);
+    CHECK(compare::floatUlpDistance(compare::floatBits(0.0f), compare::floatBits(-0.0f)) == 0);
+    CHECK(compare::floatBits(std::nanf("")) == compare::floatBits(std::nanf("1")));
+    CHECK(compare::formatStatsLine(s).find("float") != std::string::npos);
+    // The same pair as half targets: one float step is no half ULP.
+    a.format = b.format = TexelFormat::RGBA16F;
+    CHECK(compare::compareImages("h", a, b).maxHalfUlps == 0);
+  }
+
   TEST_CASE("halfBits rounds every half value back to its own bits") {
     for (uint32_t bits = 0; bits <= 0xffff; ++bits) {
       if ((bits & 0x7c00) == 0x7c00 && (bits & 0x3ff)) continue;   // NaNs have no single pattern

@@ -5,21 +5,28 @@
 // the GLSL (NIR with ffma lowered: plain multiply and add, no fusion):
 //   dot(a, b)      = a.x*b.x + (a.y*b.y + a.z*b.z)   (measured against llvmpipe)
 //   normalize(v)   = v * (1 / sqrt(dot(v, v)))          (GLSL IR: v * rsq(dot); rsq = 1/sqrt)
-//   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form)
+//   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form; t not constant)
 //   mat4 * vec4    = ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w   (column by column)
 // Uniform matrices are glm::mat4 (host math); they multiply lane vectors.
 //
 // Beyond single functions, Mesa's compiler rewrites whole expressions, and a port must write
-// them in the rewritten order to stay bit-exact (found with raster trace and float probes,
+// them in the rewritten order to stay bit-exact (found with raster trace and --float-final,
 // STABILITY.md "Where gl is not bit-identical"):
 //   - a tree of one operation alone (+ or *, one type, at most one constant, temporaries used
 //     once grafted in) of four or more leaves is balanced by GLSL IR's do_rebalance_tree:
 //     a * ((b * c) * d) becomes (a * b) * (c * d)      (shadow/main.h, hdr/down.h, up.h);
 //   - x + (a * b + c * d), the inner sum used once and x no product, becomes
 //     (a * b + x) + c * d (nir_opt_algebraic "Reassociate add chains")   (deferred/ssao.h);
-//   - a * b + a * c becomes a * (b + c) (nir_opt_algebraic).
-// An 8-bit target hides most such slips; rendering the pass into RGBA32F on both backends
-// shows them as one-float-step differences.
+//   - a * b + a * c becomes a * (b + c) (nir_opt_algebraic);
+//   - #k * (x * y) with the product used once becomes (x * #k) * y (nir_opt_algebraic)
+//                                                                   (deferred/lighting.h);
+//   - #a + (x + #c) becomes (#a + #c) + x, the constants folded in float ("Reassociate
+//     constants in add chains"): every PCF tap's (0.5 + off) + ndc * 0.5 (sampler.h);
+//   - mix(x, y, t) with a constant t is x * (1 - t) + y * t (nir_lower_flrp.c), not the
+//     a + t * (b - a) above                                       (deferred/lighting.h).
+// An 8-bit target hides most such slips; `raster compare --float-final` draws the final
+// pass into RGBA32F on both backends and shows them as one-float-step differences (the
+// scene tests check it bit for bit).
 #pragma once
 
 #include <glm/glm.hpp>

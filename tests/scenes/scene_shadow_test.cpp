@@ -4,10 +4,9 @@
 //   shadow_map, depth (Z24 codes): bit-identical. Coverage, clipping, snapping, plane setup
 //     and depth conversion follow llvmpipe's arithmetic exactly; measured 0 differing texels
 //     at t = 0.5, 1, 3.7, 10, 25.3 and at 333x217 and 1021x769.
-//   final (RGBA8): at most 1 step anywhere, at most 0.1% of pixels differing, PSNR >= 60 dB.
-//     Measured: identical at these times; at t = 10, 8 pixels differ by 1. The residue
-//     is pow(): llvmpipe evaluates exp2(y * log2(x)) with polynomial approximations, we
-//     use the C library.
+//   final (RGBA8): bit-identical at these times (also measured at t = 10 and 25, and at
+//     6000x4500 and 8192x6144, where one pixel differed until the port balanced
+//     albedo * diffuse as Mesa does: raster/simd/glsl.h). In RGBA32F (--float-final) too.
 //   For scale, softpipe against llvmpipe (another real GL): PSNR 50.5 dB, max 245 steps,
 //   0.13% of pixels off by more than 1 at t = 1; the last test holds us closer than that.
 #include <doctest/doctest.h>
@@ -30,13 +29,7 @@ using testing_support::renderWithLlvmpipe;
 void checkAgainstLlvmpipe(float t, int w, int h) {
   for (const compare::TargetStats& s : testing_support::compareWithLlvmpipe("shadow", t, w, h)) {
     INFO(s.name);
-    if (s.kind == "depth") {
-      CHECK(s.depthTexelsDiffering == 0);
-    } else {
-      CHECK(s.maxAbs <= 1.0);
-      CHECK(s.shareDiffering <= 0.001);
-      CHECK(s.psnr >= 60.0);
-    }
+    CHECK(s.shareDiffering == 0.0);   // depth codes and final bytes alike
   }
 }
 

@@ -94,6 +94,10 @@ class RasterBackend final : public Backend {
     t->sampler = desc.sampler;
     if (pixels) upload(*t, pixels, desc.format == TexelFormat::RGB16F ? 3 : 4);
     else if (desc.format == TexelFormat::RGB16F) upload(*t, nullptr, 3);
+    // A grey texture also gets the samplers' one-byte-a-texel copy (texture.h).
+    if (pixels && raster::makeGreyCopy(*t))
+      reserve(t->grey8.size(), memory::joined({"the grey copy of a ", std::to_string(desc.width), "x",
+                                               std::to_string(desc.height), " texture"}));
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
   }
@@ -102,6 +106,13 @@ class RasterBackend final : public Backend {
     raster::Framebuffer fb;
     auto attach = [&](Handle h) {
       raster::Texture* t = texture(h);
+      // Drawing writes rgba8 only: a grey copy would go stale, so a render target has none.
+      if (t->hasGreyCopy()) {
+        const uint64_t bytes = t->grey8.size();
+        raster::dropGreyCopy(*t);
+        memory::release(bytes);
+        reserved_ -= std::min<uint64_t>(reserved_, bytes);
+      }
       if (fb.width == 0) { fb.width = t->width; fb.height = t->height; }
       if (t->width != fb.width || t->height != fb.height) throw std::runtime_error("framebuffer attachments differ in size");
       return t;

@@ -76,11 +76,62 @@ __m256i lerp8(__m256i weight128, __m256i a, __m256i b) {
 
 __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
 
+// RGBA8 read from the grey copy (texture.h): the taps, weights and lerps of sampleRgba8
+// below on the one channel that r, g and b share, so each of the three gets the bits it
+// would get there; alpha is 255 at every texel. One 32-bit gather element at a texel's
+// byte holds it and, one byte up, its right neighbour: a bilinear row is one element.
+template <int N>
+[[gnu::always_inline]] inline void sampleGrey8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
+  const int* bytes = reinterpret_cast<const int*>(t.grey8.data());
+  const __m256i width = splat(t.width);
+  const __m256i low8 = splat(0xFF);
+  // Four bytes from texel `index` on (scale 1: the indices are byte offsets).
+  auto fetch4 = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(bytes, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 1); };
+  const __m256 kUnorm8 = splat(float(1.0 / 255.0));
+  const simd::Float8 opaque(_mm256_mul_ps(_mm256_cvtepi32_ps(splat(255)), kUnorm8));
+  auto put = [&](int h, __m256i grey) {
+    const simd::Float8 v(_mm256_mul_ps(_mm256_cvtepi32_ps(grey), kUnorm8));
+    out[h][0] = out[h][1] = out[h][2] = v;
+    out[h][3] = opaque;
+  };
+  if (t.sampler.filter == Filter::Nearest) {
+    __m256i p[N];
+    for (int h = 0; h < N; ++h)
+      p[h] = fetch4(wrapNearest(s[h], t.width, t.sampler.wrapS, true), wrapNearest(tc[h], t.height, t.sampler.wrapT, true));
+    for (int h = 0; h < N; ++h) put(h, _mm256_and_si256(p[h], low8));
+    return;
+  }
+  FixedTaps8 x[N], y[N];
+  __m256i p00[N], p01[N], p10[N], p11[N];
+  for (int h = 0; h < N; ++h) {
+    x[h] = wrapLinearFixed(s[h], t.width, t.sampler.wrapS);
+    y[h] = wrapLinearFixed(tc[h], t.height, t.sampler.wrapT);
+    const __m256i adjacent = _mm256_cmpeq_epi32(x[h].x1, _mm256_add_epi32(x[h].x0, splat(1)));
+    if (_mm256_movemask_epi8(adjacent) == -1) {
+      const __m256i row0 = fetch4(x[h].x0, y[h].x0), row1 = fetch4(x[h].x0, y[h].x1);
+      p00[h] = _mm256_and_si256(row0, low8);
+      p01[h] = _mm256_and_si256(_mm256_srli_epi32(row0, 8), low8);
+      p10[h] = _mm256_and_si256(row1, low8);
+      p11[h] = _mm256_and_si256(_mm256_srli_epi32(row1, 8), low8);
+      continue;
+    }
+    p00[h] = _mm256_and_si256(fetch4(x[h].x0, y[h].x0), low8);
+    p01[h] = _mm256_and_si256(fetch4(x[h].x1, y[h].x0), low8);
+    p10[h] = _mm256_and_si256(fetch4(x[h].x0, y[h].x1), low8);
+    p11[h] = _mm256_and_si256(fetch4(x[h].x1, y[h].x1), low8);
+  }
+  for (int h = 0; h < N; ++h) {
+    const __m256i weightX = _mm256_slli_epi32(x[h].weight, 7), weightY = _mm256_slli_epi32(y[h].weight, 7);
+    put(h, lerp8(weightY, lerp8(weightX, p00[h], p01[h]), lerp8(weightX, p10[h], p11[h])));
+  }
+}
+
 // N independent 8-lane lookups (N = 2 for Float8x2 shading). Each phase runs over all of
 // them before the next, so the texel loads of every lookup are in flight together: one
 // lookup's cache misses overlap the other's instead of following them.
 template <int N>
 [[gnu::always_inline]] inline void sampleRgba8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
+  if (t.hasGreyCopy()) return sampleGrey8<N>(t, s, tc, out);
   const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
   const __m256i width = splat(t.width);
   auto fetch = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4); };

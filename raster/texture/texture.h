@@ -8,6 +8,7 @@
 // backends and the pipeline share.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -60,6 +61,8 @@ struct Texture {
   std::vector<uint16_t, HugePageAllocator<uint16_t>> half;       // RGBA16F, 4 per texel
   std::vector<float> f32;           // RGBA32F, 4 per texel
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
+  // A second layout of a grey RGBA8 texture, for the samplers: see makeGreyCopy().
+  std::vector<uint8_t, HugePageAllocator<uint8_t>> grey8;
   std::string label;   // what the scene calls it ("shadow_map"), as glObjectLabel: pixel history names it
 
   Texture() = default;
@@ -74,8 +77,37 @@ struct Texture {
       case TexelFormat::Depth24: depth.assign(texels, 0); break;
     }
   }
+  bool hasGreyCopy() const { return !grey8.empty(); }
   bool isDepth() const { return format == TexelFormat::Depth16 || format == TexelFormat::Depth24; }
   int depthBits() const { return format == TexelFormat::Depth24 ? 24 : (format == TexelFormat::Depth16 ? 16 : 0); }
 };
+
+// Zero bytes after a grey copy's last texel, so that a 4-byte load at any texel stays
+// inside the array.
+inline constexpr size_t kGreyCopyPadding = 3;
+
+// An RGBA8 texture whose every texel is grey and opaque (r = g = b, a = 255: a
+// one-channel JPEG, such as an ambient-occlusion or roughness map, uploaded as RGBA) also
+// keeps its r bytes in grey8, one byte a texel. A bilinear footprint there spans two bytes
+// a row instead of eight, so it touches a quarter of the cache lines, and one 32-bit gather
+// element fetches a row's two texels. rgba8 stays whole and is what every writer, reader
+// and reference path uses; grey8 is a read-only copy, made at upload when the texels
+// allow it (returns whether they did) and dropped when the texture becomes a render target
+// (dropGreyCopy), so it never goes stale. The values sampled from it are the same bits:
+// the AVX2 sampler filters the one channel as it would each of r, g and b, and alpha is 255.
+inline bool makeGreyCopy(Texture& t) {
+  t.grey8 = {};
+  if (t.format != TexelFormat::RGBA8 || t.rgba8.empty()) return false;
+  const size_t texels = t.rgba8.size() / 4;
+  for (size_t i = 0; i < texels; ++i) {
+    const uint8_t* p = &t.rgba8[i * 4];
+    if (p[0] != p[1] || p[0] != p[2] || p[3] != 255) return false;
+  }
+  t.grey8.resize(texels + kGreyCopyPadding, 0);
+  for (size_t i = 0; i < texels; ++i) t.grey8[i] = t.rgba8[i * 4];
+  return true;
+}
+
+inline void dropGreyCopy(Texture& t) { t.grey8 = {}; }
 
 }  // namespace raster

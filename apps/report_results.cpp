@@ -17,6 +17,9 @@ std::string percent(double share) { return cli::fixedDigits(100.0 * share, 3) + 
 // A number cell: `shown` from `value`, the value itself in data-value.
 std::string cell(const json& value, const std::string& shown) { return numberCell(shown, value); }
 
+// The JSON key of a float kind's largest ULP distance: the unit is named in the key.
+std::string ulpsKey(const std::string& kind) { return kind == "half" ? "max_half_ulps" : "max_float_ulps"; }
+
 }  // namespace
 
 json statsJson(const compare::TargetStats& s) {
@@ -33,9 +36,9 @@ json statsJson(const compare::TargetStats& s) {
     j["depth_texels_differing"] = s.depthTexelsDiffering;
     j["max_depth_lsb"] = s.maxDepthLsb;
   }
-  if (s.kind == "half" || s.kind == "float") {
+  if (s.isFloatKind()) {
     j["share_bit_identical"] = s.shareBitIdentical;
-    j[s.kind == "half" ? "max_half_ulps" : "max_float_ulps"] = s.kind == "half" ? s.maxHalfUlps : s.maxFloatUlps;
+    j[ulpsKey(s.kind)] = s.maxUlps;
     j["nonfinite_pixels"] = s.nonFinitePixels;
   }
   return j;
@@ -46,7 +49,7 @@ std::string psnrText(const json& db) { return db.is_null() ? "identical" : cli::
 std::string metricsTable(const json& s, const std::string& id) {
   const std::string kind = s.at("kind");
   // The unit of a difference, as compare/metrics.h defines it per kind.
-  const std::string unit = kind == "depth" ? "depth LSBs" : kind == "half" || kind == "float" ? "float value" : "8-bit steps";
+  const std::string unit = kind == "depth" ? "depth LSBs" : compare::TargetStats::isFloatKindName(kind) ? "float value" : "8-bit steps";
   Table t{id, "", {"metric", "value"}, {}};
   t.rows.push_back({escape("size"), escape(jsonText(s.at("size")[0]) + "x" + jsonText(s.at("size")[1]))});
   t.rows.push_back({escape("largest difference (" + unit + ")"), cell(s.at("max_abs"), cli::sixDigits(s.at("max_abs")))});
@@ -58,8 +61,8 @@ std::string metricsTable(const json& s, const std::string& id) {
   if (kind == "depth") {
     t.rows.push_back({escape("texels differing"), cell(s.at("depth_texels_differing"), jsonText(s.at("depth_texels_differing")))});
   }
-  if (kind == "half" || kind == "float") {
-    const std::string ulps = kind == "half" ? "max_half_ulps" : "max_float_ulps";
+  if (compare::TargetStats::isFloatKindName(kind)) {
+    const std::string ulps = ulpsKey(kind);
     t.rows.push_back({escape("pixels bit-identical"), cell(s.at("share_bit_identical"), percent(s.at("share_bit_identical")))});
     t.rows.push_back({escape("largest difference (" + kind + " ULPs)"), cell(s.at(ulps), jsonText(s.at(ulps)))});
     t.rows.push_back({escape("non-finite pixels"), cell(s.at("nonfinite_pixels"), jsonText(s.at("nonfinite_pixels")))});

@@ -207,8 +207,7 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
     stats.depthTexelsDiffering = differing;
     stats.maxDepthLsb = maxUnits;
   }
-  if (kind == Kind::Half) stats.maxHalfUlps = maxUnits;
-  if (kind == Kind::Float) stats.maxFloatUlps = maxUnits;
+  if (kind == Kind::Half || kind == Kind::Float) stats.maxUlps = maxUnits;
   stats.nonFinitePixels = nonFinite;
   return stats;
 }
@@ -218,9 +217,8 @@ std::string formatStatsLine(const TargetStats& s) {
   char largest[48];
   if (s.kind == "depth")
     std::snprintf(largest, sizeof largest, "%llu lsb", (unsigned long long)s.maxDepthLsb);
-  else if (s.kind == "half" || s.kind == "float")
-    std::snprintf(largest, sizeof largest, "%llu ulp",
-                  (unsigned long long)(s.kind == "half" ? s.maxHalfUlps : s.maxFloatUlps));
+  else if (s.isFloatKind())
+    std::snprintf(largest, sizeof largest, "%llu ulp", (unsigned long long)s.maxUlps);
   else
     std::snprintf(largest, sizeof largest, "%.0f", s.maxAbs);
 
@@ -242,7 +240,7 @@ std::string formatStatsLine(const TargetStats& s) {
   std::string text = line;
   if (s.kind == "depth")
     text += "  texels " + std::to_string(s.depthTexelsDiffering);
-  if (s.kind == "half" || s.kind == "float") {
+  if (s.isFloatKind()) {
     std::snprintf(line, sizeof line, "  identical%s  max|d| %.4g",
                   percent(s.shareBitIdentical).c_str(), s.maxAbs);
     text += line;

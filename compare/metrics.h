@@ -5,7 +5,8 @@
 //   rgba8: 8-bit steps of any of the four channels;
 //   depth: LSBs of the integer depth code (2^bits - 1 is the far plane);
 //   half:  half-float ULPs (values read back as floats are exact halves), counted on an
-//          integer order of the half bit patterns in which +0 and -0 are one point.
+//          integer order of the half bit patterns in which +0 and -0 are one point;
+//   float: float32 ULPs, counted the same way (half ULPs would hide one float step).
 // compareImages() summarises a whole target; pixelDifference() is the per-pixel measure
 // the heat map (image_io.h) draws.
 #pragma once
@@ -29,13 +30,16 @@ struct TargetStats {
   uint64_t depthTexelsDiffering = 0;   // depth only
   uint64_t maxDepthLsb = 0;            // depth only
   double shareBitIdentical = 0;        // of pixels whose every channel has the same bits
-  uint64_t maxHalfUlps = 0;            // half only
-  uint64_t maxFloatUlps = 0;           // float only: ULPs of float32 (half ULPs would hide them)
+  uint64_t maxUlps = 0;                // half and float: ULPs of the target's own float type
   // Float images: pixels with a NaN or infinite channel in either image. Their channels
   // count in the shares and ULPs (NaN = NaN, +inf = +inf), but not in RMSE, PSNR or maxAbs,
   // which are over the finite samples only, so no metric is ever NaN.
   uint64_t nonFinitePixels = 0;
   int width = 0, height = 0;
+
+  // A target of floats (RGBA16F or RGBA32F): measured in ULPs and bit identity.
+  bool isFloatKind() const { return isFloatKindName(kind); }
+  static bool isFloatKindName(const std::string& k) { return k == "half" || k == "float"; }
 };
 
 // "rgba8", "depth", "half" or "float"; throws std::invalid_argument for an inconsistent image.

@@ -114,7 +114,7 @@ class HdrScene final : public Scene {
  public:
   explicit HdrScene(const SceneOptions& options)
       : HDR_W(std::max(options.width, 1)), HDR_H(std::max(options.height, 1)), N_INSTANCES(options.instances),
-        params_(options.params), options_(options) {
+        options_(options) {
     // bloom mip chain: mip i lives at (HDR >> (i+1)) -- mip 0 is half res, then halving.
     for (int i = 0; i < BLOOM_MIPS; ++i) {
       bloom_w_[size_t(i)] = std::max(HDR_W >> (i + 1), 1);
@@ -130,7 +130,7 @@ class HdrScene final : public Scene {
     prog_down_ = b.createProgram("hdr/post+down");
     prog_up_ = b.createProgram("hdr/post+up");
     prog_composite_ = b.createProgram("hdr/post+composite");
-    scene_mesh_ = b.createMesh(cubeMesh(gen_instances(N_INSTANCES, params_)));
+    scene_mesh_ = b.createMesh(cubeMesh(gen_instances(N_INSTANCES, options_.params)));
     quad_ = b.createMesh(quadMesh());
 
     // create_scene_target: RGBA16F colour (LINEAR, CLAMP_TO_EDGE) + 16-bit depth.
@@ -155,10 +155,11 @@ class HdrScene final : public Scene {
     glm::vec3 cam_pos(camera_r * std::cos(camera_angle), std::sin(camera_angle * 2.0f) * 2.0f,
                       camera_r * std::sin(camera_angle));
     glm::vec3 target(0, 0, 0);
-    if (params_.worldOffset) cam_pos += glm::vec3(*params_.worldOffset), target += glm::vec3(*params_.worldOffset);
+    const SceneParams& p = options_.params;
+    if (p.worldOffset) cam_pos += glm::vec3(*p.worldOffset), target += glm::vec3(*p.worldOffset);
     const glm::mat4 u_view = glm::lookAtRH(cam_pos, target, glm::vec3(0, 1, 0));
     const glm::mat4 u_proj = glm::perspectiveRH_NO(60.0f * PI / 180.0f, float(HDR_W) / float(HDR_H),
-                                                   params_.nearPlane.value_or(0.1f), 60.0f);
+                                                   p.nearPlane.value_or(0.1f), 60.0f);
 
     // ===== Pass 1: scene into the HDR float target =====
     ClearOp clearScene;
@@ -278,8 +279,7 @@ class HdrScene final : public Scene {
 
   const int HDR_W, HDR_H;   // the HDR target: the scene's width x height (see the file header)
   const int N_INSTANCES;    // 1000 in the seed; --instances scales the swarm for benchmarks
-  const SceneParams params_;  // --set (scene_params.h)
-  const SceneOptions options_;
+  const SceneOptions options_;  // options_.params: --set (scene_params.h)
   std::array<int, BLOOM_MIPS> bloom_w_{}, bloom_h_{};
   Handle prog_scene_ = 0, prog_bright_ = 0, prog_down_ = 0, prog_up_ = 0, prog_composite_ = 0;
   Handle scene_mesh_ = 0, quad_ = 0;

@@ -85,6 +85,10 @@ F lookupCompare(const Texture& depth, glsl::vec2<F> uv, F ref) {
   return F::load(out);
 }
 
+// A prefetch changes nothing the reference computes.
+template <class F>
+void prefetchColor(const Texture&, glsl::vec2<F>) {}
+
 // taps[j + 1][i + 1] = the lookup at uv + (i * step.x, j * step.y), i and j in -1..1.
 template <class F>
 void lookupColorGrid3x3(const Texture& texture, glsl::vec2<F> uv, glm::vec2 step, glsl::vec4<F> (&taps)[3][3]) {
@@ -118,6 +122,15 @@ template <class F>
   return sampling::lookupColor(*sampler.texture, uv);
 }
 
+// Not GLSL: a hint that texture(sampler, uv) will follow. It starts loading the texels that
+// lookup reads and returns at once, changing no value. A shader that makes several lookups
+// at one uv, each with arithmetic between (the G-buffer's material maps), otherwise waits
+// on their cache misses one lookup after another: the out-of-order window holds about one
+// lookup. Kept where it measured faster (BENCHMARKS.md).
+template <class F>
+[[gnu::always_inline]] inline void texturePrefetch(const Sampler2D& sampler, glsl::vec2<F> uv) {
+  sampling::prefetchColor(*sampler.texture, uv);
+}
 // GLSL: texture(sampler2D, uv) in a port that knows some lanes will never use the result:
 // only the lanes in `needed` get their texel, the others an unspecified value. A shader
 // compiler that worked lane by lane would skip those reads; SSAO uses this to skip the

@@ -49,6 +49,10 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
 #endif
 
+// Starts loading the texels sampleColor8 would read at these coordinates (RGBA8 LINEAR:
+// each lane's two footprint rows), and returns; nothing for other formats and filters.
+void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t);
+
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to
 // sampleColor8 there: taps[(j + 1) * 3 + (i + 1)][channel]. For RGBA16F with LINEAR and
 // CLAMP_TO_EDGE, neighbouring taps share their texel loads where they can.
@@ -64,6 +68,12 @@ inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&lo)[4], const 
 inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) { return joinHalves(rgba[0], rgba[1]); }
 
 // ---- the lookups of sampler.h, for Float8 and Float8x2 -------------------------------------
+
+inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8> uv) { prefetchColor8(texture, uv.x, uv.y); }
+inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv) {
+  prefetchColor8(texture, uv.x.low(), uv.y.low());
+  prefetchColor8(texture, uv.x.high(), uv.y.high());
+}
 
 [[gnu::always_inline]] inline glsl::vec4<simd::Float8> lookupColor(const Texture& texture, glsl::vec2<simd::Float8> uv) {
   simd::Float8 rgba[4];

@@ -80,6 +80,11 @@ struct GBufferPass {
     const vec3<F> sRGB = vec3<F>(F(2.2f), F(2.2f), F(2.2f));
     if (u.u_material > 0.5f) {
       const vec2<F> uv = vec2<F>(in.gv_world_pos.x, in.gv_world_pos.z) * F(0.35f);
+      // Not in the GLSL: the other three maps' texels start loading now, while the first
+      // lookup waits on its own (sampler.h, texturePrefetch).
+      raster::texturePrefetch(u.floor_albedo, uv);
+      raster::texturePrefetch(u.floor_roughness, uv);
+      raster::texturePrefetch(u.floor_normal, uv);
       const F fb_ao = raster::texture(u.floor_ao, uv).x;
       albedo = pow(raster::texture(u.floor_albedo, uv).xyz(), sRGB) * (F(0.5f) + F(0.5f) * fb_ao);
       spec_i = (F(1.0f) - raster::texture(u.floor_roughness, uv).x) * F(0.4f);
@@ -89,6 +94,8 @@ struct GBufferPass {
       const vec3<F> tn = normalize(vec3<F>(tn_raw.x * F(3.0f), tn_raw.y * F(3.0f), tn_raw.z));
       perturbed = perturb_normal(n, in.gv_world_pos, uv, tn);
     } else {
+      raster::texturePrefetch(u.cat_arm, in.gv_uv);   // as the floor's, above
+      raster::texturePrefetch(u.cat_normal, in.gv_uv);
       const vec3<F> alb = pow(raster::texture(u.cat_albedo, in.gv_uv).xyz(), sRGB);
       const vec3<F> arm = raster::texture(u.cat_arm, in.gv_uv).xyz();
       albedo = alb * (F(0.55f) + F(0.45f) * arm.x);

@@ -14,6 +14,25 @@ namespace {
 
 using namespace cli_test;
 
+// `render` (which writes final.png) succeeds under its --max-memory cap; the same command
+// with `more` asks for more than the cap and is refused: exit 2, the message naming what
+// it was allocating, and nothing written, not even the final image.
+void checkRefusedOnlyWithMore(const std::string& render, const std::string& more, const std::string& message) {
+  TempFolder temp;
+  const fs::path cwd = temp.path / "cwd";
+  fs::create_directory(cwd);
+  const RunResult plain = runCli(cwd, render);
+  INFO(plain.err);
+  CHECK(plain.status == 0);
+  CHECK(fs::is_regular_file(cwd / "final.png"));
+  fs::remove(cwd / "final.png");
+  const RunResult refused = runCli(cwd, render + " " + more);
+  INFO(refused.err);
+  CHECK(refused.status == 2);
+  CHECK(refused.err.find(message) != std::string::npos);
+  CHECK(fs::is_empty(cwd));
+}
+
 }  // namespace
 
 TEST_SUITE("hostile") {
@@ -37,18 +56,8 @@ TEST_SUITE("hostile") {
   // back all seven targets another 730 MiB: under a 900 MiB cap the plain render succeeds,
   // and the same render with --dump is refused.
   TEST_CASE("memory: render reads back only the final image unless it dumps every target") {
-    TempFolder temp;
-    const fs::path cwd = temp.path / "cwd";
-    fs::create_directory(cwd);
-    const std::string render = "render deferred --size 4096x4096 --threads 2 --max-memory 900M --out final.png";
-    const RunResult plain = runCli(cwd, render);
-    INFO(plain.err);
-    CHECK(plain.status == 0);
-    CHECK(fs::is_regular_file(cwd / "final.png"));
-    const RunResult dump = runCli(cwd, render + " --dump targets");
-    INFO(dump.err);
-    CHECK(dump.status == 2);
-    CHECK(dump.err.find("memory: reading back a 4096x4096 target") != std::string::npos);
+    checkRefusedOnlyWithMore("render deferred --size 4096x4096 --threads 2 --max-memory 900M --out final.png",
+                             "--dump targets", "memory: reading back a 4096x4096 target");
   }
 
   // A stage view keeps five counters per pixel of every pass it records (20 bytes a pixel):
@@ -56,19 +65,8 @@ TEST_SUITE("hostile") {
   // ~48 MiB of targets and read-backs. Under an 80 MiB cap the plain render succeeds; the
   // overdraw view is refused when its record would pass the cap, and writes nothing.
   TEST_CASE("memory: a stage view's per-pixel records count against the cap") {
-    TempFolder temp;
-    const fs::path cwd = temp.path / "cwd";
-    fs::create_directory(cwd);
-    const std::string render = "render shadow --size 2048x1536 --max-memory 80M --quiet --out final.png";
-    const RunResult plain = runCli(cwd, render);
-    INFO(plain.err);
-    CHECK(plain.status == 0);
-    fs::remove(cwd / "final.png");
-    const RunResult view = runCli(cwd, render + " --view overdraw");
-    INFO(view.err);
-    CHECK(view.status == 2);
-    CHECK(view.err.find("memory: the view's record of pass 1 (2048x1536) needs 60.0 MiB") != std::string::npos);
-    CHECK(fs::is_empty(cwd));
+    checkRefusedOnlyWithMore("render shadow --size 2048x1536 --max-memory 80M --quiet --out final.png", "--view overdraw",
+                             "memory: the view's record of pass 1 (2048x1536) needs 60.0 MiB");
   }
 
   // Seven 16384x16384 JPEGs in the asset folder took 17 GB before anything failed. An image

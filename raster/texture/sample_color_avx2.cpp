@@ -637,19 +637,32 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 }
 
 void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
-  if (texture.format != TexelFormat::RGBA8 || texture.sampler.filter != Filter::Linear) return;
-  // The texel rows sampleRgba8 (or sampleGrey8) will read: each lane's footprint starts
-  // at (x0, y0) and (x0, y1), in the layout it reads.
-  const bool grey = texture.hasGreyCopy();
-  const char* base = grey ? reinterpret_cast<const char*>(texture.grey8.data())
-                          : reinterpret_cast<const char*>(texture.rgba8.data());
-  const int texelShift = grey ? 0 : 2;
-  const FixedTaps8 x = wrapLinearFixed(s.v, texture.width, texture.sampler.wrapS);
-  const FixedTaps8 y = wrapLinearFixed(t.v, texture.height, texture.sampler.wrapT);
+  if (texture.sampler.filter != Filter::Linear) return;
+  // The texel rows the lookup will read: each lane's footprint starts at (x0, y0) and
+  // (x0, y1), in the layout it reads, with the same wrapping.
+  const char* base = nullptr;
+  int texelShift = 0;   // log2 of the bytes a texel
+  __m256i x0, y0, y1;
+  if (texture.format == TexelFormat::RGBA8) {
+    const bool grey = texture.hasGreyCopy();
+    base = grey ? reinterpret_cast<const char*>(texture.grey8.data()) : reinterpret_cast<const char*>(texture.rgba8.data());
+    texelShift = grey ? 0 : 2;
+    const FixedTaps8 x = wrapLinearFixed(s.v, texture.width, texture.sampler.wrapS);
+    const FixedTaps8 y = wrapLinearFixed(t.v, texture.height, texture.sampler.wrapT);
+    x0 = x.x0, y0 = y.x0, y1 = y.x1;
+  } else if (texture.format == TexelFormat::RGBA16F) {
+    base = reinterpret_cast<const char*>(texture.half.data());
+    texelShift = 3;
+    const LinearTaps8 x = wrapLinearFloat(s.v, texture.width, texture.sampler.wrapS);
+    const LinearTaps8 y = wrapLinearFloat(t.v, texture.height, texture.sampler.wrapT);
+    x0 = x.i0, y0 = y.i0, y1 = y.i1;
+  } else {
+    return;
+  }
   const __m256i width = splat(texture.width);
   alignas(32) int rows[2][8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[0]), _mm256_add_epi32(_mm256_mullo_epi32(y.x0, width), x.x0));
-  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[1]), _mm256_add_epi32(_mm256_mullo_epi32(y.x1, width), x.x0));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[0]), _mm256_add_epi32(_mm256_mullo_epi32(y0, width), x0));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[1]), _mm256_add_epi32(_mm256_mullo_epi32(y1, width), x0));
   for (int i = 0; i < 8; ++i) {
     _mm_prefetch(base + (size_t(unsigned(rows[0][i])) << texelShift), _MM_HINT_T0);
     _mm_prefetch(base + (size_t(unsigned(rows[1][i])) << texelShift), _MM_HINT_T0);

@@ -49,8 +49,9 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
 #endif
 
-// Starts loading the texels sampleColor8 would read at these coordinates (RGBA8 LINEAR:
-// each lane's two footprint rows), and returns; nothing for other formats and filters.
+// Starts loading the texels sampleColor8 would read at these coordinates (RGBA8 and
+// RGBA16F LINEAR: each lane's two footprint rows), and returns; nothing for other formats
+// and filters.
 void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t);
 
 // The 3x3 lookups at (s + i * stepS, t + j * stepT), i and j in -1..1, each bit-identical to

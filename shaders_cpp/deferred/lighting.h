@@ -90,6 +90,15 @@ struct LightingPass : PostProgram {
   static vec3<F> shade_surface(const Uniforms& u, vec3<F> albedo, F spec_i, F shininess, vec3<F> p, vec3<F> n,
                                F ssao_factor) {
     const vec3<F> view_dir = normalize(u.u_cam_pos - p);
+    // Not in the GLSL's order: both environment lookups' coordinates are computed here, and
+    // their texels start loading (texturePrefetch), while the shadow and the point lights
+    // are computed; the lookups themselves stay where the GLSL makes them. The same values:
+    // each coordinate is computed once, from the same operands.
+    const vec3<F> inc = vec3<F>(-view_dir.x, -view_dir.y, -view_dir.z);
+    const vec3<F> rdir = reflect3(inc, n);
+    const vec2<F> env_uv_n = equirect_uv(n), env_uv_r = equirect_uv(rdir);
+    raster::texturePrefetch(u.env_map, env_uv_n);
+    raster::texturePrefetch(u.env_map, env_uv_r);
 
     // shadowed sun: light-space NDC -> shadow uv + depth ref (GL z in [-1,1] -> [0,1])
     const vec3<F> sun_dir = normalize(vec3<F>(u.u_light_dir));
@@ -123,14 +132,12 @@ struct LightingPass : PostProgram {
     const F amb_t = n.y * F(0.5f) + F(0.5f);
     const vec3<F> hemi = mix(vec3<F>(glm::vec3(0.08f, 0.06f, 0.05f)), vec3<F>(glm::vec3(0.22f, 0.24f, 0.36f)),
                              vec3<F>(amb_t, amb_t, amb_t));
-    const vec3<F> env_amb = raster::texture(u.env_map, equirect_uv(n)).xyz();
+    const vec3<F> env_amb = raster::texture(u.env_map, env_uv_n).xyz();
     // mix with a constant t: nir_lower_flrp takes the strict form x * (1 - t) + y * t there
     // (nir_lower_flrp.c, "If t is constant"), with 1 - t folded in float.
     const vec3<F> ambient = hemi * F(1.0f - 0.4f) + env_amb * F(0.4f);
 
-    const vec3<F> inc = vec3<F>(-view_dir.x, -view_dir.y, -view_dir.z);
-    const vec3<F> rdir = reflect3(inc, n);
-    const vec3<F> env_refl = raster::texture(u.env_map, equirect_uv(rdir)).xyz();
+    const vec3<F> env_refl = raster::texture(u.env_map, env_uv_r).xyz();
     // fres = pow(x, 4.0) is (x * x) * (x * x) (gl_math.h), used once, in 0.7 * fres:
     // nir_opt_algebraic moves the constant into the product, (x2 * 0.7) * x2.
     const F fres_base = F(1.0f) - max(dot(n, view_dir), F(0.0f));

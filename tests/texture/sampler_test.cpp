@@ -237,6 +237,9 @@ TEST_SUITE("texture") {
                 using raster::simd::Float8;
                 using raster::simd::Mask8;
                 Float8 out[4], outLive[4];
+                // A prefetch of the same lanes first: it must take any coordinate (NaN, huge,
+                // far outside) on any texture and change nothing that follows.
+                raster::sampling::prefetchColor8(tex, Float8::load(s16), Float8::load(t16));
                 raster::sampling::sampleColor8(tex, Float8::load(s16), Float8::load(t16), out);
                 // The lookup for some lanes only (textureWhere): those lanes must still be exact.
                 const unsigned liveBits = rng() & 0xFFFFu;

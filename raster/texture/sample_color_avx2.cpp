@@ -5,6 +5,7 @@
 #include "raster/simd/intrinsics.h"
 
 #include "raster/texture/linear_taps_avx2.h"
+#include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -432,36 +433,6 @@ bool sampleHalfClampPair(const Texture& t, const LinearTaps8* x, const LinearTap
 }
 #endif
 
-#if RASTER_ZMM_PAIRS
-// sampleHalfNearest for two groups at once, in 512-bit registers: one gather of eight
-// 64-bit texels per group (masked by `live`: dead lanes read as zero), converted and
-// transposed straight into Float8x2 planes, with about a third of the shuffles that
-// transposing each group and joining the halves takes. The texels and their F16C
-// conversion are sampleHalfNearest's, so the values are the same.
-void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc, __mmask16 live, simd::Float8x2 out[4]) {
-  const long long* texels = reinterpret_cast<const long long*>(t.half.data());
-  const __m256 sHalves[2] = {s.low().v, s.high().v}, tHalves[2] = {tc.low().v, tc.high().v};
-  __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
-  for (int h = 0; h < 2; ++h) {
-    const __m256i x = wrapNearest(sHalves[h], t.width, t.sampler.wrapS, false);
-    const __m256i y = wrapNearest(tHalves[h], t.height, t.sampler.wrapT, false);
-    const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
-    const __m512i texel = _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), __mmask8(live >> (8 * h)), index, texels, 8);
-    v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
-    v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
-  }
-  // [r of lanes 0-7 | g of lanes 0-7] from v[0] and v[1], [b | a] likewise, and the same
-  // for lanes 8-15; then each channel's two halves joined.
-  const __m512i redGreen = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 1, 5, 9, 13, 17, 21, 25, 29);
-  const __m512i blueAlpha = _mm512_setr_epi32(2, 6, 10, 14, 18, 22, 26, 30, 3, 7, 11, 15, 19, 23, 27, 31);
-  const __m512 rg0 = _mm512_permutex2var_ps(v[0], redGreen, v[1]), rg1 = _mm512_permutex2var_ps(v[2], redGreen, v[3]);
-  const __m512 ba0 = _mm512_permutex2var_ps(v[0], blueAlpha, v[1]), ba1 = _mm512_permutex2var_ps(v[2], blueAlpha, v[3]);
-  out[0] = simd::Float8x2(_mm512_shuffle_f32x4(rg0, rg1, _MM_SHUFFLE(1, 0, 1, 0)));
-  out[1] = simd::Float8x2(_mm512_shuffle_f32x4(rg0, rg1, _MM_SHUFFLE(3, 2, 3, 2)));
-  out[2] = simd::Float8x2(_mm512_shuffle_f32x4(ba0, ba1, _MM_SHUFFLE(1, 0, 1, 0)));
-  out[3] = simd::Float8x2(_mm512_shuffle_f32x4(ba0, ba1, _MM_SHUFFLE(3, 2, 3, 2)));
-}
-#endif
 
 // N lookups of any format; the dead lanes of `live` may skip their loads (half NEAREST).
 template <int N>

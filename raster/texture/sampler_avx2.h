@@ -7,6 +7,7 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
+#include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -86,7 +87,8 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
                                                                      glsl::vec2<simd::Float8x2> uv) {
 #if RASTER_ZMM_PAIRS
   simd::Float8x2 rgba[4];
-  sampleColor8x2(texture, uv.x, uv.y, rgba);
+  if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, 0xFFFF, rgba);   // inline (sample_half_avx512.h)
+  else sampleColor8x2(texture, uv.x, uv.y, rgba);
   return {rgba[0], rgba[1], rgba[2], rgba[3]};
 #else
   const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
@@ -107,7 +109,8 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
                                                                           glsl::vec2<simd::Float8x2> uv) {
 #if RASTER_ZMM_PAIRS
   simd::Float8x2 rgba[4];
-  sampleColor8x2(texture, uv.x, uv.y, needed, rgba);
+  if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, needed.k, rgba);   // dead lanes read zero
+  else sampleColor8x2(texture, uv.x, uv.y, needed, rgba);
   return {rgba[0], rgba[1], rgba[2], rgba[3]};
 #else
   const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};

@@ -283,7 +283,7 @@ TEST_SUITE("texture") {
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0, awayFromEdge = 0;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
-      for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{2, 2}, std::pair{1, 3}}) {
+      for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{2, 2}, std::pair{1, 3}, std::pair{16, 8}}) {
         raster::Texture tex = randomTexture(rng, w, h, format);
         for (raster::Filter filter : {raster::Filter::Linear, raster::Filter::Nearest})
           for (raster::Wrap wrap : {raster::Wrap::ClampToEdge, raster::Wrap::Repeat}) {
@@ -308,14 +308,25 @@ TEST_SUITE("texture") {
               // The lookup for some lanes only (textureWhere): those lanes must still be exact.
               const unsigned liveBits = rng() & 0xFFFFu;
               raster::sampling::sampleColor8x2(tex, s, t, raster::simd::Mask8x2::fromBits(liveBits), planesLive);
+              // And through the shaders' own entry points (sampler_avx2.h), which take some
+              // lookups inline (sample_half_avx512.h) rather than through sampleColor8x2.
+              const raster::glsl::vec2<raster::simd::Float8x2> uv{s, t};
+              const auto viaPort = raster::sampling::lookupColor(tex, uv);
+              const auto viaPortLive = raster::sampling::lookupColorWhere(raster::simd::Mask8x2::fromBits(liveBits), tex, uv);
+              const raster::simd::Float8x2 port[4] = {viaPort.x, viaPort.y, viaPort.z, viaPort.w};
+              const raster::simd::Float8x2 portLive[4] = {viaPortLive.x, viaPortLive.y, viaPortLive.z, viaPortLive.w};
               bool edge = false;
               for (int i = 0; i < 16; ++i) {
                 float ref[4];
                 raster::sampling::sampleColor(tex, s16[i], t16[i], ref);
                 edge = edge || std::min(s16[i] * float(w), float(w)) - 0.5f >= float(w - 1);
                 for (int c = 0; c < 4; ++c) {
-                  const float got = planes[c][i], gotLive = (liveBits >> i) & 1u ? planesLive[c][i] : ref[c];
-                  if (sameLookup(got, ref[c]) && sameLookup(gotLive, ref[c])) continue;
+                  const bool live = (liveBits >> i) & 1u;
+                  const float got = planes[c][i], gotLive = live ? planesLive[c][i] : ref[c];
+                  const float gotPort = port[c][i], gotPortLive = live ? portLive[c][i] : ref[c];
+                  if (sameLookup(got, ref[c]) && sameLookup(gotLive, ref[c]) && sameLookup(gotPort, ref[c]) &&
+                      sameLookup(gotPortLive, ref[c]))
+                    continue;
                   if (++mismatches <= 3)
                     MESSAGE("mismatch: " << w << "x" << h << " at (" << s16[i] << ", " << t16[i] << ") channel " << c
                                          << ": SIMD " << got << " (live lanes " << gotLive << ") scalar " << ref[c]);

@@ -8,6 +8,7 @@
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include "raster/texture/sample_half_avx512.h"
+#include "raster/texture/sample_rgba8_avx512.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -88,6 +89,9 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
 #if RASTER_ZMM_PAIRS
   simd::Float8x2 rgba[4];
   if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, 0xFFFF, rgba);   // inline (sample_half_avx512.h)
+#if RASTER_RGBA8_ZMM
+  else if (isRgba8Bilinear(texture)) sampleRgba8Pair(texture, uv.x, uv.y, rgba);   // inline (sample_rgba8_avx512.h)
+#endif
   else sampleColor8x2(texture, uv.x, uv.y, rgba);
   return {rgba[0], rgba[1], rgba[2], rgba[3]};
 #else

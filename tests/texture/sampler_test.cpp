@@ -282,9 +282,22 @@ TEST_SUITE("texture") {
     std::mt19937 rng(79);
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0, awayFromEdge = 0;
-    for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
+    // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), and grey.
+    struct Variant {
+      raster::TexelFormat format;
+      bool grey;
+      raster::FilterMethod method;
+    };
+    for (const Variant variant : {Variant{raster::TexelFormat::RGBA16F, false, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::RGBA8, true, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float}}) {
+      const raster::TexelFormat format = variant.format;
+      raster::MethodSet methods;
+      methods.filter = variant.method;
+      const raster::ScopedMethods scoped(methods);
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{2, 2}, std::pair{1, 3}, std::pair{16, 8}}) {
-        raster::Texture tex = randomTexture(rng, w, h, format);
+        raster::Texture tex = randomTexture(rng, w, h, format, variant.grey);
         for (raster::Filter filter : {raster::Filter::Linear, raster::Filter::Nearest})
           for (raster::Wrap wrap : {raster::Wrap::ClampToEdge, raster::Wrap::Repeat}) {
             tex.sampler = {filter, wrap, wrap, false};
@@ -328,7 +341,9 @@ TEST_SUITE("texture") {
                       sameLookup(gotPortLive, ref[c]))
                     continue;
                   if (++mismatches <= 3)
-                    MESSAGE("mismatch: " << w << "x" << h << " at (" << s16[i] << ", " << t16[i] << ") channel " << c
+                    MESSAGE("mismatch: format " << int(format) << (variant.grey ? " grey" : "") << " method "
+                                                << int(variant.method) << " " << w << "x" << h << " at (" << s16[i] << ", "
+                                                << t16[i] << ") channel " << c
                                          << ": SIMD " << got << " (live lanes " << gotLive << ") scalar " << ref[c]);
                 }
                 ++lookups;

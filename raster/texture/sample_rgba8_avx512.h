@@ -1,0 +1,128 @@
+// Bilinear lookups of RGBA8 textures (llvmpipe's 8-bit fixed-point path) for Float8x2 lanes
+// held in one 512-bit register: the G-buffer's material maps, sixteen lanes at a time.
+// Inline, so that a port's lookup costs no call and no trip of its four channels through
+// memory, and the shader's compiler drops the channels it never reads. The taps, weights
+// and lerps are the 8-lane sampler's (sample_color_avx2.cpp, sampleRgba8 and sampleGrey8)
+// on 16 lanes at once, so every value is the same.
+#pragma once
+
+#include "raster/simd/isa.h"
+#if RASTER_ZMM_PAIRS && defined(__AVX512BW__)
+#define RASTER_RGBA8_ZMM 1
+#include "raster/methods.h"
+#include "raster/simd/intrinsics.h"
+#include "raster/texture/texture.h"
+
+namespace raster::sampling {
+
+struct FixedTaps16 {
+  __m512i x0, x1, weight;   // the two texels along one axis and x1's weight in 1/256
+};
+
+// wrapLinearFixed of sample_color_avx2.cpp on 16 lanes: the coordinate in 24.8 fixed point,
+// half a texel back, then wrapped or clamped.
+[[gnu::always_inline]] inline FixedTaps16 wrapLinearFixed16(__m512 coord, int size, Wrap wrap) {
+  const __m512i last = _mm512_set1_epi32(size - 1), one = _mm512_set1_epi32(1), low8 = _mm512_set1_epi32(255);
+  FixedTaps16 taps;
+  if (wrap == Wrap::Repeat && !(size > 0 && (size & (size - 1)) == 0)) {
+    const __m512 fraction = _mm512_sub_ps(coord, _mm512_floor_ps(coord));
+    const __m512 scaled = _mm512_mul_ps(_mm512_mul_ps(fraction, _mm512_set1_ps(float(size))), _mm512_set1_ps(256.0f));
+    const __m512i fixed = _mm512_sub_epi32(_mm512_cvtps_epi32(scaled), _mm512_set1_epi32(128));
+    taps.weight = _mm512_and_si512(fixed, low8);
+    __m512i x0 = _mm512_srai_epi32(fixed, 8);
+    x0 = _mm512_mask_mov_epi32(x0, _mm512_cmpgt_epi32_mask(_mm512_setzero_si512(), x0), last);   // below 0: the last
+    taps.x0 = _mm512_min_epi32(x0, last);
+    taps.x1 = _mm512_maskz_add_epi32(_mm512_cmpneq_epi32_mask(taps.x0, last), taps.x0, one);  // past the last: 0
+    return taps;
+  }
+  const __m512i fixed =
+      _mm512_sub_epi32(_mm512_cvtps_epi32(_mm512_mul_ps(coord, _mm512_set1_ps(float(size << 8)))), _mm512_set1_epi32(128));
+  taps.weight = _mm512_and_si512(fixed, low8);
+  const __m512i x0 = _mm512_srai_epi32(fixed, 8);
+  if (wrap == Wrap::Repeat) {
+    taps.x0 = _mm512_and_si512(x0, last);
+    taps.x1 = _mm512_maskz_add_epi32(_mm512_cmpneq_epi32_mask(taps.x0, last), taps.x0, one);
+  } else {
+    const __mmask16 low = _mm512_cmpgt_epi32_mask(x0, _mm512_set1_epi32(-1));   // x0 >= 0
+    const __mmask16 high = _mm512_cmpgt_epi32_mask(last, x0);                    // x0 < size - 1
+    taps.x0 = _mm512_mask_mov_epi32(last, high, _mm512_maskz_mov_epi32(low, x0));
+    taps.x1 = _mm512_mask_add_epi32(taps.x0, __mmask16(low & high), taps.x0, one);
+  }
+  return taps;
+}
+
+// a + floor((w * (b - a) * 128 + 16384) / 32768) per 32-bit lane (sample_color_avx2.cpp's
+// lerp8: pmulhrsw on the low 16 bits, the final & 0xFF removing a negative step's carry).
+[[gnu::always_inline]] inline __m512i lerp8x16(__m512i weight128, __m512i a, __m512i b) {
+  return _mm512_and_si512(_mm512_add_epi32(a, _mm512_mulhrs_epi16(_mm512_sub_epi32(b, a), weight128)),
+                          _mm512_set1_epi32(0xFF));
+}
+
+// Whether sampleRgba8Pair is this texture's lookup under the active method set.
+inline bool isRgba8Bilinear(const Texture& t) {
+  return t.format == TexelFormat::RGBA8 && t.sampler.filter == Filter::Linear &&
+         methods::active().filter == FilterMethod::Unorm8;
+}
+
+// The bilinear RGBA8 lookup of 16 lanes (isRgba8Bilinear). A grey texture is read from
+// its one-byte copy (texture.h): one channel filtered, r = g = b, alpha 1.
+[[gnu::always_inline]] inline void sampleRgba8Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
+                                                   simd::Float8x2 out[4]) {
+  const FixedTaps16 x = wrapLinearFixed16(s.v, t.width, t.sampler.wrapS);
+  const FixedTaps16 y = wrapLinearFixed16(tc.v, t.height, t.sampler.wrapT);
+  const __m512i width = _mm512_set1_epi32(t.width), low8 = _mm512_set1_epi32(0xFF);
+  const __m512i row0 = _mm512_mullo_epi32(y.x0, width), row1 = _mm512_mullo_epi32(y.x1, width);
+  const bool adjacent = _mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, _mm512_set1_epi32(1))) == 0xFFFF;
+  const __m512i weightX = _mm512_slli_epi32(x.weight, 7), weightY = _mm512_slli_epi32(y.weight, 7);
+  const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
+  if (t.hasGreyCopy()) {
+    // Four bytes from a texel on: the texel, then its right neighbour.
+    const void* bytes = t.grey8.data();
+    __m512i p00, p01, p10, p11;
+    if (adjacent) {
+      const __m512i top = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), bytes, 1);
+      const __m512i bottom = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), bytes, 1);
+      p00 = _mm512_and_si512(top, low8), p01 = _mm512_and_si512(_mm512_srli_epi32(top, 8), low8);
+      p10 = _mm512_and_si512(bottom, low8), p11 = _mm512_and_si512(_mm512_srli_epi32(bottom, 8), low8);
+    } else {
+      p00 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), bytes, 1), low8);
+      p01 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x1), bytes, 1), low8);
+      p10 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), bytes, 1), low8);
+      p11 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x1), bytes, 1), low8);
+    }
+    const __m512i grey = lerp8x16(weightY, lerp8x16(weightX, p00, p01), lerp8x16(weightX, p10, p11));
+    out[0] = out[1] = out[2] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(grey), kUnorm8));
+    out[3] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(low8), kUnorm8));
+    return;
+  }
+  const void* texels = t.rgba8.data();
+  __m512i p00, p01, p10, p11;
+  if (adjacent) {
+    // A row's two texels as one 64-bit element per lane: lanes 0-7, then 8-15, split into
+    // the left texels and the right ones in lane order.
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
+    auto pairs = [&](__m512i index, __m512i& left, __m512i& right) {
+      const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), texels, 4);
+      const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), texels, 4);
+      left = _mm512_permutex2var_epi32(lo, even, hi);
+      right = _mm512_permutex2var_epi32(lo, odd, hi);
+    };
+    pairs(_mm512_add_epi32(row0, x.x0), p00, p01);
+    pairs(_mm512_add_epi32(row1, x.x0), p10, p11);
+  } else {
+    p00 = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), texels, 4);
+    p01 = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x1), texels, 4);
+    p10 = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), texels, 4);
+    p11 = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x1), texels, 4);
+  }
+  for (int c = 0; c < 4; ++c) {
+    auto channel = [&](__m512i v) { return _mm512_and_si512(_mm512_srli_epi32(v, 8 * c), low8); };
+    const __m512i top = lerp8x16(weightX, channel(p00), channel(p01));
+    const __m512i bottom = lerp8x16(weightX, channel(p10), channel(p11));
+    out[c] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(lerp8x16(weightY, top, bottom)), kUnorm8));
+  }
+}
+
+}  // namespace raster::sampling
+#endif

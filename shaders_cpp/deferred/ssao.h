@@ -65,9 +65,8 @@ struct SsaoPass : PostProgram {
       // points, then their 16 stored positions, then the tests. A GLSL compiler unrolls
       // this constant loop and is free to order it so; here it lets the 16 G-buffer reads
       // be in flight together instead of each waiting behind the previous sample's tests.
-      vec3<F> sp[SSAO_K];
-      vec4<F> clip[SSAO_K];
       vec2<F> suv[SSAO_K];
+      F clip_w[SSAO_K], sample_vz[SSAO_K];   // what the tests read of clip and of the view-space point
       for (int i = 0; i < SSAO_K; i++) {
         // Constant per unrolled iteration: folded by the GLSL compiler in float.
         const float fi = (float(i) + 0.5f) / float(SSAO_K);
@@ -78,10 +77,15 @@ struct SsaoPass : PostProgram {
         // non-product, as (product + p) + product ("Reassociate add chains",
         // nir_opt_algebraic.py), so sp adds p to the first product before the second.
         const vec3<F> along = (cos(ang) * tangent + sin(ang) * bitangent) * F(rr);
-        sp[i] = (along + p) + n * F(rr * 0.5f);
-        clip[i] = u.u_proj * (u.u_view * vec4<F>(sp[i], F(1.0f)));
-        const F wv = max(clip[i].w, F(0.0001f));
-        suv[i] = vec2<F>(clip[i].x / wv * F(0.5f) + F(0.5f), clip[i].y / wv * F(0.5f) + F(0.5f));
+        const vec3<F> sp = (along + p) + n * F(rr * 0.5f);
+        // u_view * vec4(sp, 1.0) is also sample_vz's (below): computed once, as the GLSL
+        // compiler's common-subexpression pass leaves it.
+        const vec4<F> view_sp = u.u_view * vec4<F>(sp, F(1.0f));
+        sample_vz[i] = view_sp.z;
+        const vec4<F> clip = u.u_proj * view_sp;
+        clip_w[i] = clip.w;
+        const F wv = max(clip.w, F(0.0001f));
+        suv[i] = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
       }
       vec3<F> stored_p[SSAO_K];
       for (int i = 0; i < SSAO_K; i++) stored_p[i] = raster::texture(u.ssao_g_worldpos, suv[i]).xyz();
@@ -89,11 +93,10 @@ struct SsaoPass : PostProgram {
       F occ = F(0.0f);
       for (int i = 0; i < SSAO_K; i++) {
         const F stored_vz = (u.u_view * vec4<F>(stored_p[i], F(1.0f))).z;
-        const F sample_vz = (u.u_view * vec4<F>(sp[i], F(1.0f))).z;
         const F range_check = smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / max(abs(cur_vz - stored_vz), F(0.0001f)));
         // view looks down -Z: a stored surface closer to the camera (greater z) occludes
-        const auto in_front = (clip[i].w > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
-                              (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) & (stored_vz >= sample_vz + F(SSAO_BIAS));
+        const auto in_front = (clip_w[i] > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
+                              (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) & (stored_vz >= sample_vz[i] + F(SSAO_BIAS));
         // stored_n only decides lanes that pass every other test, so only those read it
         // (textureWhere); GLSL reads it everywhere, and the sum is the same.
         const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv[i]).xyz();

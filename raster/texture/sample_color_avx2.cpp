@@ -77,72 +77,41 @@ __m256i lerp8(__m256i weight128, __m256i a, __m256i b) {
 
 __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
 
-// RGBA8 read from the grey copy (texture.h): the taps, weights and lerps of sampleRgba8
-// below on the one channel that r, g and b share, so each of the three gets the bits it
-// would get there; alpha is 255 at every texel. One 32-bit gather element at a texel's
-// byte holds it and, one byte up, its right neighbour: a bilinear row is one element.
+// N independent 8-lane lookups (N = 2 for Float8x2 shading). Each phase runs over all of
+// them before the next, so the texel loads of every lookup are in flight together: one
+// lookup's cache misses overlap the other's instead of following them.
+//
+// A grey texture is read from its one-byte copy (texture.h): the same taps, weights and
+// lerps on the one channel that r, g and b share, so each of the three gets the bits it
+// would get from rgba8; alpha is 255 at every texel. Four bytes gathered from a texel's
+// byte hold it and, one byte up, its right neighbour: a bilinear row is one element.
 template <int N>
-[[gnu::always_inline]] inline void sampleGrey8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
-  const int* bytes = reinterpret_cast<const int*>(t.grey8.data());
-  const __m256i width = splat(t.width);
-  const __m256i low8 = splat(0xFF);
-  // Four bytes from texel `index` on (scale 1: the indices are byte offsets).
-  auto fetch4 = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(bytes, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 1); };
+[[gnu::always_inline]] inline void sampleRgba8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
+  const bool grey = t.hasGreyCopy();
+  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
+  const int* greyBytes = reinterpret_cast<const int*>(t.grey8.data());
+  const __m256i width = splat(t.width), low8 = splat(0xFF);
+  auto index = [&](__m256i x, __m256i y) { return _mm256_add_epi32(_mm256_mullo_epi32(y, width), x); };
+  // One texel a lane: RGBA in four bytes, or the grey byte in the low eight bits.
+  auto fetch = [&](__m256i x, __m256i y) {
+    return grey ? _mm256_and_si256(_mm256_i32gather_epi32(greyBytes, index(x, y), 1), low8)
+                : _mm256_i32gather_epi32(texels, index(x, y), 4);
+  };
   const __m256 kUnorm8 = splat(float(1.0 / 255.0));
-  const simd::Float8 opaque(_mm256_mul_ps(_mm256_cvtepi32_ps(splat(255)), kUnorm8));
-  auto put = [&](int h, __m256i grey) {
-    const simd::Float8 v(_mm256_mul_ps(_mm256_cvtepi32_ps(grey), kUnorm8));
-    out[h][0] = out[h][1] = out[h][2] = v;
-    out[h][3] = opaque;
+  // Lookup h's channels, from channelValue(c) for c = 0..3 (grey: c = 0, copied to g and b).
+  auto put = [&](int h, auto&& channelValue) {
+    for (int c = 0; c < (grey ? 1 : 4); ++c)
+      out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(channelValue(c)), kUnorm8));
+    if (grey) {
+      out[h][1] = out[h][2] = out[h][0];
+      out[h][3] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(low8), kUnorm8));
+    }
   };
   if (t.sampler.filter == Filter::Nearest) {
     __m256i p[N];
     for (int h = 0; h < N; ++h)
-      p[h] = fetch4(wrapNearest(s[h], t.width, t.sampler.wrapS, true), wrapNearest(tc[h], t.height, t.sampler.wrapT, true));
-    for (int h = 0; h < N; ++h) put(h, _mm256_and_si256(p[h], low8));
-    return;
-  }
-  FixedTaps8 x[N], y[N];
-  __m256i p00[N], p01[N], p10[N], p11[N];
-  for (int h = 0; h < N; ++h) {
-    x[h] = wrapLinearFixed(s[h], t.width, t.sampler.wrapS);
-    y[h] = wrapLinearFixed(tc[h], t.height, t.sampler.wrapT);
-    const __m256i adjacent = _mm256_cmpeq_epi32(x[h].x1, _mm256_add_epi32(x[h].x0, splat(1)));
-    if (_mm256_movemask_epi8(adjacent) == -1) {
-      const __m256i row0 = fetch4(x[h].x0, y[h].x0), row1 = fetch4(x[h].x0, y[h].x1);
-      p00[h] = _mm256_and_si256(row0, low8);
-      p01[h] = _mm256_and_si256(_mm256_srli_epi32(row0, 8), low8);
-      p10[h] = _mm256_and_si256(row1, low8);
-      p11[h] = _mm256_and_si256(_mm256_srli_epi32(row1, 8), low8);
-      continue;
-    }
-    p00[h] = _mm256_and_si256(fetch4(x[h].x0, y[h].x0), low8);
-    p01[h] = _mm256_and_si256(fetch4(x[h].x1, y[h].x0), low8);
-    p10[h] = _mm256_and_si256(fetch4(x[h].x0, y[h].x1), low8);
-    p11[h] = _mm256_and_si256(fetch4(x[h].x1, y[h].x1), low8);
-  }
-  for (int h = 0; h < N; ++h) {
-    const __m256i weightX = _mm256_slli_epi32(x[h].weight, 7), weightY = _mm256_slli_epi32(y[h].weight, 7);
-    put(h, lerp8(weightY, lerp8(weightX, p00[h], p01[h]), lerp8(weightX, p10[h], p11[h])));
-  }
-}
-
-// N independent 8-lane lookups (N = 2 for Float8x2 shading). Each phase runs over all of
-// them before the next, so the texel loads of every lookup are in flight together: one
-// lookup's cache misses overlap the other's instead of following them.
-template <int N>
-[[gnu::always_inline]] inline void sampleRgba8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
-  if (t.hasGreyCopy()) return sampleGrey8<N>(t, s, tc, out);
-  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
-  const __m256i width = splat(t.width);
-  auto fetch = [&](__m256i x, __m256i y) { return _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4); };
-  const __m256 kUnorm8 = splat(float(1.0 / 255.0));
-  if (t.sampler.filter == Filter::Nearest) {
-    __m256i p[N];
-    for (int h = 0; h < N; ++h)
       p[h] = fetch(wrapNearest(s[h], t.width, t.sampler.wrapS, true), wrapNearest(tc[h], t.height, t.sampler.wrapT, true));
-    for (int h = 0; h < N; ++h)
-      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(channel(p[h], c)), kUnorm8));
+    for (int h = 0; h < N; ++h) put(h, [&](int c) { return channel(p[h], c); });
     return;
   }
   FixedTaps8 x[N], y[N];
@@ -153,9 +122,16 @@ template <int N>
     const __m256i adjacent = _mm256_cmpeq_epi32(x[h].x1, _mm256_add_epi32(x[h].x0, splat(1)));
     if (_mm256_movemask_epi8(adjacent) == -1) {
       // Every lane's two texels of a row are neighbours (no wrap, no clamp between them):
-      // one 64-bit element fetches both.
-      gatherTexelPairs(texels, _mm256_add_epi32(_mm256_mullo_epi32(y[h].x0, width), x[h].x0), p00[h], p01[h]);
-      gatherTexelPairs(texels, _mm256_add_epi32(_mm256_mullo_epi32(y[h].x1, width), x[h].x0), p10[h], p11[h]);
+      // one element fetches both, 64 bits of RGBA8 or 32 of the grey copy.
+      const __m256i row0 = index(x[h].x0, y[h].x0), row1 = index(x[h].x0, y[h].x1);
+      if (grey) {
+        const __m256i top = _mm256_i32gather_epi32(greyBytes, row0, 1), bottom = _mm256_i32gather_epi32(greyBytes, row1, 1);
+        p00[h] = _mm256_and_si256(top, low8), p01[h] = _mm256_and_si256(_mm256_srli_epi32(top, 8), low8);
+        p10[h] = _mm256_and_si256(bottom, low8), p11[h] = _mm256_and_si256(_mm256_srli_epi32(bottom, 8), low8);
+      } else {
+        gatherTexelPairs(texels, row0, p00[h], p01[h]);
+        gatherTexelPairs(texels, row1, p10[h], p11[h]);
+      }
       continue;
     }
     p00[h] = fetch(x[h].x0, y[h].x0);
@@ -165,11 +141,11 @@ template <int N>
   }
   for (int h = 0; h < N; ++h) {
     const __m256i weightX = _mm256_slli_epi32(x[h].weight, 7), weightY = _mm256_slli_epi32(y[h].weight, 7);
-    for (int c = 0; c < 4; ++c) {
+    put(h, [&](int c) {
       const __m256i row0 = lerp8(weightX, channel(p00[h], c), channel(p01[h], c));
       const __m256i row1 = lerp8(weightX, channel(p10[h], c), channel(p11[h], c));
-      out[h][c] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(lerp8(weightY, row0, row1)), kUnorm8));
-    }
+      return lerp8(weightY, row0, row1);
+    });
   }
 }
 

@@ -2,7 +2,7 @@
 // held in one 512-bit register: the G-buffer's material maps, sixteen lanes at a time.
 // Inline, so that a port's lookup costs no call and no trip of its four channels through
 // memory, and the shader's compiler drops the channels it never reads. The taps, weights
-// and lerps are the 8-lane sampler's (sample_color_avx2.cpp, sampleRgba8 and sampleGrey8)
+// and lerps are the 8-lane sampler's (sample_color_avx2.cpp, sampleRgba8, grey copies too)
 // on 16 lanes at once, so every value is the same.
 #pragma once
 

@@ -131,6 +131,7 @@ template <class F>
 [[gnu::always_inline]] inline void texturePrefetch(const Sampler2D& sampler, glsl::vec2<F> uv) {
   sampling::prefetchColor(*sampler.texture, uv);
 }
+
 // GLSL: texture(sampler2D, uv) in a port that knows some lanes will never use the result:
 // only the lanes in `needed` get their texel, the others an unspecified value. A shader
 // compiler that worked lane by lane would skip those reads; SSAO uses this to skip the

@@ -54,6 +54,25 @@ float lookupCoordinate(std::mt19937& rng, int size) {
   return bytes;
 }
 
+// Draws test/color_lookup over `mesh` (a grid whose cells carry lookup coordinates) into a
+// size x size RGBA32F target, sampling `texture`, and reads the target back.
+ImageData drawLookups(Backend& b, Handle texture, const MeshData& mesh, int size) {
+  scenes::TextureDesc targetDesc;
+  targetDesc.width = targetDesc.height = size;
+  targetDesc.format = TexelFormat::RGBA32F;
+  const Handle target = b.createTexture(targetDesc);
+  const Handle fb = b.createFramebuffer({{target}, 0});
+  const Handle program = b.createProgram("test/color_lookup");
+  const Handle meshHandle = b.createMesh(mesh);
+  b.beginPass(fb, {0, 0, size, size}, clearAll());
+  b.bindTexture(0, texture);
+  b.setUniform(program, "tex", 0);
+  DrawState state;
+  state.depthTest = false;
+  b.draw(program, meshHandle, state);
+  return b.readColor(fb);
+}
+
 // Renders one lookup per 2x2 cell with both backends and counts cells whose bits differ.
 void checkLookups(const TextureCase& c, unsigned seed, bool grey = false) {
   std::mt19937 rng(seed);
@@ -79,24 +98,7 @@ void checkLookups(const TextureCase& c, unsigned seed, bool grey = false) {
   BackendPair backends;
   ImageData images[2];
   Backend* sides[2] = {backends.raster.get(), backends.gl.get()};
-  for (int k = 0; k < 2; ++k) {
-    Backend& b = *sides[k];
-    scenes::TextureDesc targetDesc;
-    targetDesc.width = targetDesc.height = kSize;
-    targetDesc.format = TexelFormat::RGBA32F;
-    const Handle target = b.createTexture(targetDesc);
-    const Handle fb = b.createFramebuffer({{target}, 0});
-    const Handle texture = b.createTexture(desc, pixels);
-    const Handle program = b.createProgram("test/color_lookup");
-    const Handle meshHandle = b.createMesh(mesh);
-    b.beginPass(fb, {0, 0, kSize, kSize}, clearAll());
-    b.bindTexture(0, texture);
-    b.setUniform(program, "tex", 0);
-    DrawState state;
-    state.depthTest = false;
-    b.draw(program, meshHandle, state);
-    images[k] = b.readColor(fb);
-  }
+  for (int k = 0; k < 2; ++k) images[k] = drawLookups(*sides[k], sides[k]->createTexture(desc, pixels), mesh, kSize);
   const FloatComparison cmp = compareFloatBits(images[0], images[1]);
   const std::string name = std::to_string(c.width) + "x" + std::to_string(c.height) +
                            (c.format == TexelFormat::RGBA8 ? (grey ? " grey RGBA8" : " RGBA8") : " RGBA16F") +
@@ -173,20 +175,7 @@ TEST_SUITE("texture") {
       tint.color = true;
       tint.colorValue = glm::vec4(0.8f, 0.3f, 0.1f, 0.5f);
       b.beginPass(textureFb, {0, 0, kTex, kTex}, tint);
-      scenes::TextureDesc targetDesc;
-      targetDesc.width = targetDesc.height = kSize;
-      targetDesc.format = TexelFormat::RGBA32F;
-      const Handle target = b.createTexture(targetDesc);
-      const Handle fb = b.createFramebuffer({{target}, 0});
-      const Handle program = b.createProgram("test/color_lookup");
-      const Handle meshHandle = b.createMesh(mesh);
-      b.beginPass(fb, {0, 0, kSize, kSize}, clearAll());
-      b.bindTexture(0, texture);
-      b.setUniform(program, "tex", 0);
-      DrawState state;
-      state.depthTest = false;
-      b.draw(program, meshHandle, state);
-      images[k] = b.readColor(fb);
+      images[k] = drawLookups(b, texture, mesh, kSize);
     }
     const FloatComparison cmp = compareFloatBits(images[0], images[1]);
     MESSAGE(cmp.diffs << " of " << kSize * kSize << " pixels differ " << cmp.firstDiff);

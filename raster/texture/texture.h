@@ -90,11 +90,13 @@ inline constexpr size_t kGreyCopyPadding = 3;
 // one-channel JPEG, such as an ambient-occlusion or roughness map, uploaded as RGBA) also
 // keeps its r bytes in grey8, one byte a texel. A bilinear footprint there spans two bytes
 // a row instead of eight, so it touches a quarter of the cache lines, and one 32-bit gather
-// element fetches a row's two texels. rgba8 stays whole and is what every writer, reader
-// and reference path uses; grey8 is a read-only copy, made at upload when the texels
-// allow it (returns whether they did) and dropped when the texture becomes a render target
-// (dropGreyCopy), so it never goes stale. The values sampled from it are the same bits:
-// the AVX2 sampler filters the one channel as it would each of r, g and b, and alpha is 255.
+// element fetches a row's two texels. rgba8 stays whole and is what every writer, every
+// other reader and the reference sampler use; grey8 is a read-only copy, made at upload
+// when the texels allow it (returns whether they did) and dropped when the texture becomes
+// a render target (dropGreyCopy, from the backend's createFramebuffer), so it never goes
+// stale. The values sampled from it are the same bits: the vector samplers
+// (sample_color_avx2.cpp, sample_rgba8_avx512.h) filter the one channel as they would each
+// of r, g and b, and alpha is 255.
 inline bool makeGreyCopy(Texture& t) {
   t.grey8 = {};
   if (t.format != TexelFormat::RGBA8 || t.rgba8.empty()) return false;

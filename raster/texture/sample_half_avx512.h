@@ -40,10 +40,11 @@ namespace raster::sampling {
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
+  const __m256i halves[2] = {_mm512_castsi512_si256(index), _mm512_extracti64x4_epi64(index, 1)};   // lanes 0-7, 8-15
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
   for (int h = 0; h < 2; ++h) {
-    const __m512i texel = _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), __mmask8(live >> (8 * h)),
-                                                      _mm512_extracti64x4_epi64(index, h), texels, 8);
+    const __m512i texel =
+        _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), __mmask8(live >> (8 * h)), halves[h], texels, 8);
     v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
     v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
   }

@@ -409,7 +409,6 @@ bool sampleHalfClampPair(const Texture& t, const LinearTaps8* x, const LinearTap
 }
 #endif
 
-
 // N lookups of any format; the dead lanes of `live` may skip their loads (half NEAREST).
 template <int N>
 void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Float8* t, const simd::Mask8* live,
@@ -541,8 +540,7 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 
 #if RASTER_ZMM_PAIRS
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]) {
-  if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest)
-    return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);
+  if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
   if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Linear &&
       texture.sampler.wrapS == Wrap::ClampToEdge && texture.width >= 2) {
@@ -563,8 +561,7 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
     for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(0.0f);
     return;
   }
-  if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest)
-    return sampleHalfNearestPair(texture, s, t, live.k, out);
+  if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, live.k, out);
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
   const simd::Mask8 liveHalves[2] = {live.low(), live.high()};
   simd::Float8 planes[2][4];

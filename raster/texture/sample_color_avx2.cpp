@@ -358,57 +358,6 @@ template <int N>
   for (int h = 0; h < N; ++h) blendFootprint(p00[h], p01[h], p10[h], p11[h], x[h].weight, y[h].weight, out[h]);
 }
 
-#if RASTER_ZMM_PAIRS
-// sampleHalfClampBlendFirst for two groups at once, in 512-bit registers, when no lane of
-// either is at the right edge: lane k of both groups and lane k + 4 blend in one register
-// [group 0 lane k | lane k + 4 | group 1 lane k | lane k + 4], with the same operations
-// per lane and channel, and the result comes out as Float8x2 planes. Returns false
-// (nothing written) at the right edge.
-bool sampleHalfClampPair(const Texture& t, const LinearTaps8* x, const LinearTaps8* y, simd::Float8x2 out[4]) {
-  const __m256i last = splat(t.width - 1);
-  if (_mm256_movemask_epi8(_mm256_or_si256(_mm256_cmpeq_epi32(x[0].i0, last), _mm256_cmpeq_epi32(x[1].i0, last))))
-    return false;
-  const uint16_t* texels = t.half.data();
-  alignas(32) int start[2][2][8];   // [group][row y0 | y1][lane]: the lane's left texel
-  for (int h = 0; h < 2; ++h)
-    for (int r = 0; r < 2; ++r)
-      _mm256_store_si256(reinterpret_cast<__m256i*>(start[h][r]),
-                         _mm256_add_epi32(_mm256_mullo_epi32(r ? y[h].i1 : y[h].i0, splat(t.width)), x[h].i0));
-  // Read the indices back from memory, one scalar load each: left to itself the compiler
-  // pulls each out of a vector register, three instructions per texel load (composite -2%).
-  asm volatile("" : "+m"(start));
-  auto pair = [&](int h, int r, int k) {   // [lane k left | right | lane k + 4 left | right]
-    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[h][r][k]) * 4));
-    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[h][r][k + 4]) * 4));
-    return _mm512_cvtph_ps(_mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1));
-  };
-  const simd::Float8x2 wx(simd::Float8(x[0].weight), simd::Float8(x[1].weight));
-  const simd::Float8x2 wy(simd::Float8(y[0].weight), simd::Float8(y[1].weight));
-  __m512 blended[4];
-  for (int k = 0; k < 4; ++k) {
-    const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,
-                                            k + 12, k + 12, k + 12);
-    const __m512 weightX = _mm512_permutexvar_ps(lanes, wx.v), weightY = _mm512_permutexvar_ps(lanes, wy.v);
-    __m512 row[2];
-    for (int r = 0; r < 2; ++r) {
-      const __m512 g0 = pair(0, r, k), g1 = pair(1, r, k);
-      const __m512 left = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(2, 0, 2, 0));
-      const __m512 right = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(3, 1, 3, 1));
-      row[r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
-    }
-    blended[k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(row[1], row[0]), row[0]);
-  }
-  // A 4x4 transpose in each 128-bit block: block b holds lanes 4b..4b + 3 of the pair.
-  const __m512 t0 = _mm512_unpacklo_ps(blended[0], blended[1]), t1 = _mm512_unpackhi_ps(blended[0], blended[1]);
-  const __m512 t2 = _mm512_unpacklo_ps(blended[2], blended[3]), t3 = _mm512_unpackhi_ps(blended[2], blended[3]);
-  out[0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
-  out[1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
-  out[2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
-  out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
-  return true;
-}
-#endif
-
 // N lookups of any format; the dead lanes of `live` may skip their loads (half NEAREST).
 template <int N>
 void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Float8* t, const simd::Mask8* live,
@@ -544,12 +493,18 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
   if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Linear &&
       texture.sampler.wrapS == Wrap::ClampToEdge && texture.width >= 2) {
+    // Both groups' taps joined, for the 16-lane blend (sample_half_avx512.h); any wrap of t.
     LinearTaps8 x[2], y[2];
     for (int h = 0; h < 2; ++h) {
       x[h] = wrapLinearFloat(sHalves[h].v, texture.width, texture.sampler.wrapS);
       y[h] = wrapLinearFloat(tHalves[h].v, texture.height, texture.sampler.wrapT);
     }
-    if (sampleHalfClampPair(texture, x, y, out)) return;
+    auto join = [](const LinearTaps8 (&taps)[2]) {
+      return LinearTaps16{_mm512_inserti64x4(_mm512_castsi256_si512(taps[0].i0), taps[1].i0, 1),
+                          _mm512_inserti64x4(_mm512_castsi256_si512(taps[0].i1), taps[1].i1, 1),
+                          _mm512_insertf32x8(_mm512_castps256_ps512(taps[0].weight), taps[1].weight, 1)};
+    };
+    if (blendHalfPairs16(texture, join(x), join(y), out)) return;
   }
   simd::Float8 planes[2][4];
   sampleColorN<2>(texture, sHalves, tHalves, nullptr, planes);

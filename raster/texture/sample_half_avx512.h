@@ -1,9 +1,10 @@
-// NEAREST lookups of RGBA16F textures for Float8x2 lanes held in one 512-bit register: the
-// G-buffer reads of SSAO and lighting, sixteen lanes at a time. Inline, so that a port's
-// lookup costs no call and the shader's compiler drops the channels it never reads (SSAO
-// uses xyz); with the lookups of sample_color_avx2.cpp the SSAO pass took 13% longer.
-// The wraps and the F16C conversion are the 8-lane sampler's (sample_color_avx2.cpp,
-// sampleHalfNearest) on 16 lanes at once, so every value is the same.
+// Lookups of RGBA16F textures for Float8x2 lanes held in one 512-bit register, sixteen lanes
+// at a time: NEAREST (the G-buffer reads of SSAO and lighting) and bilinear with
+// CLAMP_TO_EDGE (the hdr composite and bright pass). Inline, so that a port's lookup costs
+// no call and the shader's compiler drops the channels it never reads (SSAO uses xyz); with
+// the lookups of sample_color_avx2.cpp the SSAO pass took 13% longer. The wraps, blends and
+// the F16C conversion are the 8-lane sampler's (sample_color_avx2.cpp) on 16 lanes at once,
+// so every value is the same.
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -63,6 +64,91 @@ namespace raster::sampling {
 // Whether sampleHalfNearestPair is this texture's lookup.
 inline bool isHalfNearest(const Texture& t) {
   return t.format == TexelFormat::RGBA16F && t.sampler.filter == Filter::Nearest;
+}
+
+// ---- LINEAR with CLAMP_TO_EDGE: the hdr post passes' lookups ---------------------------------
+
+struct LinearTaps16 {
+  __m512i i0, i1;   // texel indices along one axis
+  __m512 weight;    // weight of i1
+};
+
+// wrapLinearClampToEdge8 (linear_taps_avx2.h) on 16 lanes, the same operations in each:
+//   c = max(min(coord * size, size) - 0.5, 0);  i0 = floor(c);  weight = c - i0;
+//   i1 = min(i0 + 1, size - 1).  A NaN coordinate gives texel size - 1.
+[[gnu::always_inline]] inline LinearTaps16 wrapLinearClampToEdge16(__m512 coord, int size) {
+  const __m512 sizeF = _mm512_set1_ps(float(size));
+  __m512 c = _mm512_mul_ps(coord, sizeF);
+  c = _mm512_min_ps(c, sizeF);
+  c = _mm512_sub_ps(c, _mm512_set1_ps(0.5f));
+  c = _mm512_max_ps(c, _mm512_setzero_ps());
+  const __m512 floorC = _mm512_floor_ps(c);
+  LinearTaps16 taps;
+  taps.i0 = _mm512_cvttps_epi32(floorC);
+  taps.weight = _mm512_sub_ps(c, floorC);
+  taps.i1 = _mm512_min_epi32(_mm512_add_epi32(taps.i0, _mm512_set1_epi32(1)), _mm512_set1_epi32(size - 1));
+  return taps;
+}
+
+// Bilinear RGBA16F for two groups at once, blended before the transpose, as the 8-lane
+// sampleHalfClampBlendFirst (sample_color_avx2.cpp) does per group: each lane loads its row's
+// texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
+// blend together in one register, each lane's weights broadcast over its channels (rows,
+// then columns: the same operations per lane and channel), and only the four results are
+// transposed into Float8x2 planes. `x` must come from CLAMP_TO_EDGE, where x1 = x0 + 1 except
+// at the right edge; there this returns false and writes nothing (sampleColor8x2 takes those).
+[[gnu::always_inline]] inline bool blendHalfPairs16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
+                                                    simd::Float8x2 out[4]) {
+  if (_mm512_cmpeq_epi32_mask(x.i0, _mm512_set1_epi32(t.width - 1))) return false;
+  const uint16_t* texels = t.half.data();
+  const __m512i width = _mm512_set1_epi32(t.width);
+  alignas(64) int start[2][16];   // [row y0 | y1][lane]: the lane's left texel
+  _mm512_store_si512(start[0], _mm512_add_epi32(_mm512_mullo_epi32(y.i0, width), x.i0));
+  _mm512_store_si512(start[1], _mm512_add_epi32(_mm512_mullo_epi32(y.i1, width), x.i0));
+  // Read the indices back from memory, one scalar load each: left to itself the compiler
+  // pulls each out of a vector register, three instructions per texel load (composite -2%).
+  asm volatile("" : "+m"(start));
+  auto pair = [&](int r, int lane) {   // [lane left | right | lane + 4 left | right]
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane]) * 4));
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane + 4]) * 4));
+    return _mm512_cvtph_ps(_mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1));
+  };
+  __m512 blended[4];   // [lane k | k + 4 | k + 8 | k + 12], rgba each
+  for (int k = 0; k < 4; ++k) {
+    const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,
+                                            k + 12, k + 12, k + 12);
+    const __m512 weightX = _mm512_permutexvar_ps(lanes, x.weight), weightY = _mm512_permutexvar_ps(lanes, y.weight);
+    __m512 row[2];
+    for (int r = 0; r < 2; ++r) {
+      const __m512 g0 = pair(r, k), g1 = pair(r, k + 8);
+      const __m512 left = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(2, 0, 2, 0));
+      const __m512 right = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(3, 1, 3, 1));
+      row[r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
+    }
+    blended[k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(row[1], row[0]), row[0]);
+  }
+  // A 4x4 transpose in each 128-bit block: block b holds lanes 4b..4b + 3.
+  const __m512 t0 = _mm512_unpacklo_ps(blended[0], blended[1]), t1 = _mm512_unpackhi_ps(blended[0], blended[1]);
+  const __m512 t2 = _mm512_unpacklo_ps(blended[2], blended[3]), t3 = _mm512_unpackhi_ps(blended[2], blended[3]);
+  out[0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
+  out[1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
+  out[2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
+  out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
+  return true;
+}
+
+// Whether sampleHalfBilinearPair is this texture's lookup: RGBA16F, LINEAR, CLAMP_TO_EDGE
+// along both axes (the hdr scene's post targets), at least two texels wide.
+inline bool isHalfBilinearClamp(const Texture& t) {
+  return t.format == TexelFormat::RGBA16F && t.sampler.filter == Filter::Linear &&
+         t.sampler.wrapS == Wrap::ClampToEdge && t.sampler.wrapT == Wrap::ClampToEdge && t.width >= 2;
+}
+
+// The lookup for such a texture, inline; false (nothing written) when some lane is at the
+// right edge.
+[[gnu::always_inline]] inline bool sampleHalfBilinearPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
+                                                          simd::Float8x2 out[4]) {
+  return blendHalfPairs16(t, wrapLinearClampToEdge16(s.v, t.width), wrapLinearClampToEdge16(tc.v, t.height), out);
 }
 
 }  // namespace raster::sampling

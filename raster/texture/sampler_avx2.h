@@ -92,7 +92,8 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
 #if RASTER_RGBA8_ZMM
   else if (isRgba8Bilinear(texture)) sampleRgba8Pair(texture, uv.x, uv.y, rgba);   // inline (sample_rgba8_avx512.h)
 #endif
-  else sampleColor8x2(texture, uv.x, uv.y, rgba);
+  else if (!isHalfBilinearClamp(texture) || !sampleHalfBilinearPair(texture, uv.x, uv.y, rgba))   // inline too
+    sampleColor8x2(texture, uv.x, uv.y, rgba);   // every other lookup, and RGBA16F at its right edge
   return {rgba[0], rgba[1], rgba[2], rgba[3]};
 #else
   const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};

@@ -65,62 +65,57 @@ inline bool isRgba8Bilinear(const Texture& t) {
 }
 
 // The bilinear RGBA8 lookup of 16 lanes (isRgba8Bilinear). A grey texture is read from
-// its one-byte copy (texture.h): one channel filtered, r = g = b, alpha 1.
+// its one-byte copy (texture.h): the same taps, weights and lerps on the one channel that
+// r, g and b share, alpha 1.
 [[gnu::always_inline]] inline void sampleRgba8Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                    simd::Float8x2 out[4]) {
   const FixedTaps16 x = wrapLinearFixed16(s.v, t.width, t.sampler.wrapS);
   const FixedTaps16 y = wrapLinearFixed16(tc.v, t.height, t.sampler.wrapT);
+  const bool grey = t.hasGreyCopy();
+  const void* texels = grey ? static_cast<const void*>(t.grey8.data()) : static_cast<const void*>(t.rgba8.data());
   const __m512i width = _mm512_set1_epi32(t.width), low8 = _mm512_set1_epi32(0xFF);
   const __m512i row0 = _mm512_mullo_epi32(y.x0, width), row1 = _mm512_mullo_epi32(y.x1, width);
-  const bool adjacent = _mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, _mm512_set1_epi32(1))) == 0xFFFF;
-  const __m512i weightX = _mm512_slli_epi32(x.weight, 7), weightY = _mm512_slli_epi32(y.weight, 7);
-  const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
-  if (t.hasGreyCopy()) {
-    // Four bytes from a texel on: the texel, then its right neighbour.
-    const void* bytes = t.grey8.data();
-    __m512i p00, p01, p10, p11;
-    if (adjacent) {
-      const __m512i top = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), bytes, 1);
-      const __m512i bottom = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), bytes, 1);
-      p00 = _mm512_and_si512(top, low8), p01 = _mm512_and_si512(_mm512_srli_epi32(top, 8), low8);
-      p10 = _mm512_and_si512(bottom, low8), p11 = _mm512_and_si512(_mm512_srli_epi32(bottom, 8), low8);
-    } else {
-      p00 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), bytes, 1), low8);
-      p01 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x1), bytes, 1), low8);
-      p10 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), bytes, 1), low8);
-      p11 = _mm512_and_si512(_mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x1), bytes, 1), low8);
+  // One texel a lane: RGBA in four bytes, or the grey byte in the low eight bits.
+  auto fetch = [&](__m512i index) {
+    return grey ? _mm512_and_si512(_mm512_i32gather_epi32(index, texels, 1), low8) : _mm512_i32gather_epi32(index, texels, 4);
+  };
+  // Where every lane's two texels of a row are neighbours, both with one element: four grey
+  // bytes from the left texel on, or two RGBA texels as one 64-bit element (lanes 0-7, then
+  // 8-15, split into the left texels and the right ones in lane order).
+  auto fetchPair = [&](__m512i index, __m512i& left, __m512i& right) {
+    if (grey) {
+      const __m512i bytes = _mm512_i32gather_epi32(index, texels, 1);
+      left = _mm512_and_si512(bytes, low8), right = _mm512_and_si512(_mm512_srli_epi32(bytes, 8), low8);
+      return;
     }
-    const __m512i grey = lerp8x16(weightY, lerp8x16(weightX, p00, p01), lerp8x16(weightX, p10, p11));
-    out[0] = out[1] = out[2] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(grey), kUnorm8));
-    out[3] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(low8), kUnorm8));
-    return;
-  }
-  const void* texels = t.rgba8.data();
-  __m512i p00, p01, p10, p11;
-  if (adjacent) {
-    // A row's two texels as one 64-bit element per lane: lanes 0-7, then 8-15, split into
-    // the left texels and the right ones in lane order.
     const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
     const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
-    auto pairs = [&](__m512i index, __m512i& left, __m512i& right) {
-      const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), texels, 4);
-      const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), texels, 4);
-      left = _mm512_permutex2var_epi32(lo, even, hi);
-      right = _mm512_permutex2var_epi32(lo, odd, hi);
-    };
-    pairs(_mm512_add_epi32(row0, x.x0), p00, p01);
-    pairs(_mm512_add_epi32(row1, x.x0), p10, p11);
+    const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), texels, 4);
+    const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), texels, 4);
+    left = _mm512_permutex2var_epi32(lo, even, hi);
+    right = _mm512_permutex2var_epi32(lo, odd, hi);
+  };
+  __m512i p00, p01, p10, p11;
+  if (_mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, _mm512_set1_epi32(1))) == 0xFFFF) {
+    fetchPair(_mm512_add_epi32(row0, x.x0), p00, p01);
+    fetchPair(_mm512_add_epi32(row1, x.x0), p10, p11);
   } else {
-    p00 = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x0), texels, 4);
-    p01 = _mm512_i32gather_epi32(_mm512_add_epi32(row0, x.x1), texels, 4);
-    p10 = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x0), texels, 4);
-    p11 = _mm512_i32gather_epi32(_mm512_add_epi32(row1, x.x1), texels, 4);
+    p00 = fetch(_mm512_add_epi32(row0, x.x0)), p01 = fetch(_mm512_add_epi32(row0, x.x1));
+    p10 = fetch(_mm512_add_epi32(row1, x.x0)), p11 = fetch(_mm512_add_epi32(row1, x.x1));
   }
-  for (int c = 0; c < 4; ++c) {
+  const __m512i weightX = _mm512_slli_epi32(x.weight, 7), weightY = _mm512_slli_epi32(y.weight, 7);
+  const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
+  auto filtered = [&](int c) {   // channel c of every lane, blended, as a float
     auto channel = [&](__m512i v) { return _mm512_and_si512(_mm512_srli_epi32(v, 8 * c), low8); };
     const __m512i top = lerp8x16(weightX, channel(p00), channel(p01));
     const __m512i bottom = lerp8x16(weightX, channel(p10), channel(p11));
-    out[c] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(lerp8x16(weightY, top, bottom)), kUnorm8));
+    return simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(lerp8x16(weightY, top, bottom)), kUnorm8));
+  };
+  if (grey) {
+    out[0] = out[1] = out[2] = filtered(0);
+    out[3] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(low8), kUnorm8));
+  } else {
+    for (int c = 0; c < 4; ++c) out[c] = filtered(c);
   }
 }
 

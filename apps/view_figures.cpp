@@ -13,33 +13,25 @@ namespace {
 using raster::ViewPass;
 using Json = nlohmann::json;
 
-// The pass's texel (memory rows) under picture row y: window buffers are stored top row
-// first, framebuffer objects bottom row first.
-size_t texelAt(const ViewPass& pass, int x, int y) {
-  const int row = pass.window ? y : pass.height - 1 - y;
-  return size_t(row) * size_t(pass.width) + size_t(x);
-}
+// The pass's memory row under picture row y: window buffers are stored top row first,
+// framebuffer objects bottom row first.
+int memoryRow(const ViewPass& pass, int y) { return pass.window ? y : pass.height - 1 - y; }
+
+// The pass's texel (memory rows) under picture pixel (x, y).
+size_t texelAt(const ViewPass& pass, int x, int y) { return size_t(memoryRow(pass, y)) * size_t(pass.width) + size_t(x); }
 
 struct Stats {
   double total = 0, min = 0, max = 0, mean = 0;
 };
 
-Stats statsOf(const std::vector<uint32_t>& values) {
-  Stats s;
-  if (values.empty()) return s;
-  s.min = *std::min_element(values.begin(), values.end());
-  s.max = *std::max_element(values.begin(), values.end());
-  for (uint32_t v : values) s.total += v;
-  s.mean = s.total / double(values.size());
-  return s;
-}
-
-Stats statsOf(const std::vector<uint64_t>& values) {
+// A per-pixel count's or per-tile time's total, extremes and mean.
+template <class T>
+Stats statsOf(const std::vector<T>& values) {
   Stats s;
   if (values.empty()) return s;
   s.min = double(*std::min_element(values.begin(), values.end()));
   s.max = double(*std::max_element(values.begin(), values.end()));
-  for (uint64_t v : values) s.total += double(v);
+  for (T v : values) s.total += double(v);
   s.mean = s.total / double(values.size());
   return s;
 }
@@ -74,7 +66,7 @@ Field fieldOf(View view, const ViewPass& pass) {
         case View::Overdraw: f.num[at] = c.shaded[texel]; break;
         case View::DepthKills: f.num[at] = c.depthKills[texel]; break;
         case View::Helpers: {   // the sums of the texel's 2x2 quad (quads start at even texels)
-          const int qx = x & ~1, row = (pass.window ? y : pass.height - 1 - y) & ~1;
+          const int qx = x & ~1, row = memoryRow(pass, y) & ~1;
           double helpers = 0, lanes = 0;
           for (int dy = 0; dy < 2 && row + dy < pass.height; ++dy)
             for (int dx = 0; dx < 2 && qx + dx < pass.width; ++dx) {
@@ -87,8 +79,7 @@ Field fieldOf(View view, const ViewPass& pass) {
           break;
         }
         case View::TileCost: {
-          const int row = pass.window ? y : pass.height - 1 - y;
-          const size_t tile = size_t(row / raster::limits::kTileSize) * size_t(pass.tilesX) + size_t(x / raster::limits::kTileSize);
+          const size_t tile = size_t(memoryRow(pass, y) / raster::limits::kTileSize) * size_t(pass.tilesX) + size_t(x / raster::limits::kTileSize);
           f.num[at] = double(pass.tileCycles[tile]) / 1000.0;
           break;
         }

@@ -273,6 +273,10 @@ void Renderer::flush() {
       }
       if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
     });
+    // Which tiles of the colour targets still hold only the clear: those no triangle reached.
+    std::vector<uint8_t> touched(size_t(bins_.tileCount()));
+    for (int tile = 0; tile < bins_.tileCount(); ++tile) touched[size_t(tile)] = !bins_.bin(tile).empty();
+    merge::recordClearedTiles(framebuffer_, pendingClear_.color, bins_.tilesX(), touched);
     PipelineCounters passCounters;
     for (const PipelineCounters& c : tileCounters) passCounters += c;
     counters_ += passCounters;

@@ -253,6 +253,7 @@ class RasterBackend final : public Backend {
   // alpha 1 (null pixels: undefined in GL, zero here).
   static void upload(raster::Texture& t, const void* pixels, int channels) {
     const size_t texels = size_t(t.width) * size_t(t.height);
+    t.clearedTiles.forget();   // new texels: no tile is known to hold a clear
     if (t.format == TexelFormat::RGBA8) {
       const auto* src = static_cast<const uint8_t*>(pixels);
       if (src) t.rgba8.assign(src, src + texels * 4);

@@ -2,8 +2,10 @@
 #include "raster/merge/clear.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
+#include "raster/limits.h"
 #include "raster/texture/format.h"
 
 namespace raster::merge {
@@ -49,6 +51,40 @@ void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const 
   if (values.depth && framebuffer.depth) {
     const uint32_t code = format::depthClearCode(values.depthValue, framebuffer.depth->depthBits());
     fillRows(framebuffer.depth->depth.data(), width, rect, &code, 1);
+  }
+}
+
+void recordClearedTiles(const Framebuffer& framebuffer, bool clearedColor, int tilesX, std::span<const uint8_t> touched) {
+  const size_t count = touched.size();
+  for (Texture* target : framebuffer.colors) {
+    ClearedTiles& tiles = target->clearedTiles;
+    if (target->format != TexelFormat::RGBA16F || target->width != framebuffer.width ||
+        target->height != framebuffer.height || framebuffer.flipY) {
+      tiles.forget();
+      continue;
+    }
+    if (!clearedColor) {   // untouched tiles hold what they held; touched ones something else
+      if (tiles.any())
+        for (size_t tile = 0; tile < count; ++tile) tiles.cleared[tile] &= uint8_t(!touched[tile]);
+      continue;
+    }
+    tiles.forget();
+    const auto untouched = std::find(touched.begin(), touched.end(), uint8_t(0));
+    if (untouched == touched.end()) continue;
+    // The clear's texel as stored: the first texel of a tile nothing drew to.
+    const int tile = int(untouched - touched.begin());
+    const size_t texel = size_t(tile / tilesX) * size_t(limits::kTileSize) * size_t(target->width) +
+                         size_t(tile % tilesX) * size_t(limits::kTileSize);
+    bool plain = true;
+    for (int c = 0; c < 4; ++c) {
+      const float v = format::floatFromHalf(target->half[texel * 4 + size_t(c)]);
+      plain &= std::isfinite(v) && !(v == 0.0f && std::signbit(v));
+      tiles.value[c] = v;
+    }
+    if (!plain) continue;
+    tiles.tilesX = tilesX;
+    tiles.cleared.resize(count);
+    for (size_t i = 0; i < count; ++i) tiles.cleared[i] = uint8_t(!touched[i]);
   }
 }
 

@@ -5,6 +5,9 @@
 // the clamped value, half-floats truncated toward zero (format.h); depth to its code.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "raster/contract.h"
 
 namespace raster::merge {
@@ -12,5 +15,11 @@ namespace raster::merge {
 // Clears the rectangle `rect` (inclusive) of the framebuffer's depth buffer, when `values`
 // asks for it, and of its colour attachments when `values` asks and `colorToo` is set.
 void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const TileBounds& rect, bool colorToo);
+
+// After a pass: what each colour target's cleared tiles are now (texture/cleared_tiles.h).
+// `clearedColor`: the pass cleared colour; touched[tile]: some triangle was binned to the
+// framebuffer's tile (index ty * tilesX + tx). Tracked are RGBA16F targets the size of the
+// framebuffer, stored bottom row first, whose clear is plain; every other is forgotten.
+void recordClearedTiles(const Framebuffer& framebuffer, bool clearedColor, int tilesX, std::span<const uint8_t> touched);
 
 }  // namespace raster::merge

@@ -9,10 +9,32 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
+#include <bit>
+
+#include "raster/limits.h"
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
+
+// The texel every lane reads when all their footprints, texels x0..x1 by y0..y1 (indices
+// inside the texture), lie in one tile that still holds only its last clear, with a plain
+// value (cleared_tiles.h); null otherwise. Lanes of any tile but the first lane's fail.
+[[gnu::always_inline]] inline const float* clearedFootprint16(const Texture& t, __m512i x0, __m512i x1, __m512i y0,
+                                                              __m512i y1) {
+  const ClearedTiles& tiles = t.clearedTiles;
+  if (!tiles.any()) return nullptr;
+  static_assert(std::has_single_bit(unsigned(limits::kTileSize)));
+  constexpr int kShift = std::countr_zero(unsigned(limits::kTileSize));
+  auto tileOf = [](__m512i x, __m512i y) {   // (ty << 16) | tx
+    return _mm512_or_si512(_mm512_slli_epi32(_mm512_srli_epi32(y, kShift), 16), _mm512_srli_epi32(x, kShift));
+  };
+  const __m512i low = tileOf(x0, y0), high = tileOf(x1, y1);
+  const __m512i first = _mm512_broadcastd_epi32(_mm512_castsi512_si128(low));
+  if (_mm512_cmpneq_epi32_mask(low, first) | _mm512_cmpneq_epi32_mask(high, first)) return nullptr;
+  const uint32_t tile = uint32_t(_mm_cvtsi128_si32(_mm512_castsi512_si128(low)));
+  return tiles.cleared[size_t(tile >> 16) * size_t(tiles.tilesX) + (tile & 0xFFFFu)] ? tiles.value : nullptr;
+}
 
 // The texel index along one axis for NEAREST, as the 8-lane wrapNearest of the float path
 // (no floor before the CLAMP_TO_EDGE clamp): REPEAT of a power-of-two size masks the
@@ -145,10 +167,15 @@ inline bool isHalfBilinearClamp(const Texture& t) {
 }
 
 // The lookup for such a texture, inline; false (nothing written) when some lane is at the
-// right edge.
+// right edge. Footprints in a tile that holds only a clear read no texels.
 [[gnu::always_inline]] inline bool sampleHalfBilinearPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                           simd::Float8x2 out[4]) {
-  return blendHalfPairs16(t, wrapLinearClampToEdge16(s.v, t.width), wrapLinearClampToEdge16(tc.v, t.height), out);
+  const LinearTaps16 x = wrapLinearClampToEdge16(s.v, t.width), y = wrapLinearClampToEdge16(tc.v, t.height);
+  if (const float* value = clearedFootprint16(t, x.i0, x.i1, y.i0, y.i1)) {   // four equal texels blend to theirs
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(_mm512_set1_ps(value[c]));
+    return true;
+  }
+  return blendHalfPairs16(t, x, y, out);
 }
 
 }  // namespace raster::sampling

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/texture/cleared_tiles.h"
 #include "raster/util/huge_pages.h"
 
 namespace raster {
@@ -63,6 +64,7 @@ struct Texture {
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
   // A second layout of a grey RGBA8 texture, for the samplers: see makeGreyCopy().
   std::vector<uint8_t, HugePageAllocator<uint8_t>> grey8;
+  ClearedTiles clearedTiles;   // the tiles that hold only the last clear (cleared_tiles.h)
   std::string label;   // what the scene calls it ("shadow_map"), as glObjectLabel: pixel history names it
 
   Texture() = default;

@@ -14,7 +14,10 @@ namespace raster::merge {
 
 // Clears the rectangle `rect` (inclusive) of the framebuffer's depth buffer, when `values`
 // asks for it, and of its colour attachments when `values` asks and `colorToo` is set.
-void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const TileBounds& rect, bool colorToo);
+// `untouched`: nothing of the pass writes or reads the rectangle afterwards (a tile no
+// triangle reaches), so its rows are stored around the cache (clear_avx2.h).
+void clearRect(const Framebuffer& framebuffer, const ClearValues& values, const TileBounds& rect, bool colorToo,
+               bool untouched = false);
 
 // After a pass: what each colour target's cleared tiles are now (texture/cleared_tiles.h).
 // `clearedColor`: the pass cleared colour; touched[tile]: some triangle was binned to the

@@ -60,7 +60,7 @@ template <class F>
 size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending) {
   const TileClearPlan plan = planTileClear(job, bin, tile, pending);
   const Framebuffer& fb = *job.framebuffer;
-  merge::clearRect(fb, plan.rest, tile, true);
+  merge::clearRect(fb, plan.rest, tile, true, bin.empty());
   if (!plan.firstStoresDepth) return 0;
   storeDepthCodes<F>(job.triangles[bin.front()], *fb.depth, fb.width, tile);
   return 1;

@@ -1,6 +1,7 @@
 // Depth-compare sampling for 8 lanes at once, and the PCF grids whose taps share texels
-// (AVX2 gathers): the same operations as sample_compare.cpp, lane for lane, so the results
-// are bit-identical (tests/texture holds them together).
+// (AVX2 gathers; with AVX-512, a Float8x2 pair's grids in one register where no tap meets a
+// map edge): the same operations as sample_compare.cpp, lane for lane, so the results are
+// bit-identical (tests/texture holds them together).
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/format.h"
 #include "raster/texture/linear_taps_avx2.h"
+#include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {
@@ -174,6 +176,69 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
   }
 }
 
+#if RASTER_ZMM_PAIRS
+// compareGridN's shared case for both groups in 512-bit registers, lane k of Float8x2 in
+// element k: the same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on
+// 16 lanes), the same window loads, compares and blends per lane, half the instructions.
+// False, with nothing written, unless every lane's taps are one texel apart (no edge).
+template <int R>
+bool compareGridShared16(const Texture& depth, __m512 s, __m512 t, float origin, float step, __m512 ref16,
+                         simd::Float8x2* taps) {
+  constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
+  LinearTaps16 x[count], y[count];
+  __mmask16 apart = 0xFFFF;
+  for (int k = 0; k < count; ++k) {
+    const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
+    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, offset), depth.width);
+    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t, offset), depth.height);
+  }
+  for (int k = 0; k < count; ++k)   // tapsAreConsecutive
+    for (const LinearTaps16* axis : {x, y}) {
+      apart &= _mm512_cmpeq_epi32_mask(axis[k].i0, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k)));
+      apart &= _mm512_cmpeq_epi32_mask(axis[k].i1, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k + 1)));
+    }
+  if (apart != 0xFFFF) return false;
+
+  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
+  const __m512 ref = _mm512_min_ps(_mm512_max_ps(ref16, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));   // clampRef
+  const uint32_t* codes = depth.depth.data();
+  alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
+  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(depth.width)), x[0].i0));
+  asm volatile("" : "+m"(start));   // read back as scalars (sample_half_avx512.h says why)
+  // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood (refPasses).
+  __mmask16 passes[texels][texels];
+  for (int r = 0; r < texels; ++r) {
+    const size_t rowOffset = size_t(r) * size_t(depth.width);
+    for (int first = 0; first + 4 <= texels; first += 2) {   // columns 0-3, then (6 texels) 2-5
+      __m512i v[4];   // v[k]: the four codes of lanes k, k + 4, k + 8, k + 12
+      for (int k = 0; k < 4; ++k) {
+        auto row = [&](int lane) {
+          return _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[lane]) + rowOffset + size_t(first)));
+        };
+        const __m256i low = _mm256_setr_m128i(row(k), row(k + 4)), high = _mm256_setr_m128i(row(k + 8), row(k + 12));
+        v[k] = _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+      }
+      const __m512i t0 = _mm512_unpacklo_epi32(v[0], v[1]), t1 = _mm512_unpackhi_epi32(v[0], v[1]);
+      const __m512i t2 = _mm512_unpacklo_epi32(v[2], v[3]), t3 = _mm512_unpackhi_epi32(v[2], v[3]);
+      const __m512i column[4] = {_mm512_unpacklo_epi64(t0, t2), _mm512_unpackhi_epi64(t0, t2),
+                                 _mm512_unpacklo_epi64(t1, t3), _mm512_unpackhi_epi64(t1, t3)};
+      for (int c = 0; c < 4; ++c)
+        passes[r][first + c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(column[c]), scale), _CMP_LE_OQ);
+    }
+  }
+  // The blends of compareGridN, a mask's lanes holding the weight and the others +0.
+  for (int j = 0; j < count; ++j)
+    for (int i = 0; i < count; ++i) {
+      const __m512 w = x[i].weight, oneMinusW = _mm512_sub_ps(_mm512_set1_ps(1.0f), w);
+      const __m512 r0 = _mm512_add_ps(_mm512_maskz_mov_ps(passes[j][i + 1], w), _mm512_maskz_mov_ps(passes[j][i], oneMinusW));
+      const __m512 r1 =
+          _mm512_add_ps(_mm512_maskz_mov_ps(passes[j + 1][i + 1], w), _mm512_maskz_mov_ps(passes[j + 1][i], oneMinusW));
+      taps[j * count + i] = simd::Float8x2(_mm512_fmadd_ps(y[j].weight, _mm512_sub_ps(r1, r0), r0));
+    }
+  return true;
+}
+#endif
+
 }  // namespace
 
 template <int R>
@@ -188,6 +253,16 @@ void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::F
   simd::Float8* const taps[2] = {lo, hi};
   compareGridN<2, R>(depth, s, t, origin, step, ref, taps);
 }
+
+#if RASTER_ZMM_PAIRS
+template <int R>
+bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref,
+                   simd::Float8x2* taps) {
+  return compareGridShared16<R>(depth, s.v, t.v, origin, step, ref.v, taps);
+}
+template bool compareGrid16<1>(const Texture&, simd::Float8x2, simd::Float8x2, float, float, simd::Float8x2, simd::Float8x2*);
+template bool compareGrid16<2>(const Texture&, simd::Float8x2, simd::Float8x2, float, float, simd::Float8x2, simd::Float8x2*);
+#endif
 
 // The grids the shaders use: 3x3 (shadow) and 5x5 (deferred).
 template void compareGrid8<1>(const Texture&, simd::Float8, simd::Float8, float, float, simd::Float8, simd::Float8*);

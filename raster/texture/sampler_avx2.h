@@ -29,6 +29,14 @@ void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float or
 template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
+#if RASTER_ZMM_PAIRS
+// Both grids in 512-bit registers where every lane's taps are one texel apart (no map edge
+// between them): taps[(j + R) * (2R + 1) + (i + R)], each bit-identical to compareGrid8x2's.
+// False, with nothing written, otherwise.
+template <int R>
+bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref,
+                   simd::Float8x2* taps);
+#endif
 
 // The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
@@ -162,6 +170,9 @@ template <int N>
 void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8x2> base, float origin, float step, simd::Float8x2 ref,
                        simd::Float8x2 (&taps)[N][N]) {
   constexpr int R = N / 2, kTaps = N * N;
+#if RASTER_ZMM_PAIRS
+  if (compareGrid16<R>(depth, base.x, base.y, origin, step, ref, &taps[0][0])) return;
+#endif
   simd::Float8 lo[kTaps], hi[kTaps];
   const simd::Float8 s[2] = {base.x.low(), base.x.high()}, t[2] = {base.y.low(), base.y.high()},
                      refs[2] = {ref.low(), ref.high()};

@@ -13,6 +13,9 @@
 // Whether every fragment passes is proven from the z plane's extremes over the tile with a
 // bound on the float rounding of its evaluation, so a triangle near the cleared depth
 // keeps the clear.
+//
+// A tile whose bin is empty is cleared with streaming stores (merge/clear_avx2.h): nothing
+// of the pass reads it again.
 #pragma once
 
 #include <cstddef>

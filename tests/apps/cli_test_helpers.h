@@ -51,9 +51,12 @@ inline std::string readText(const fs::path& path) {
 }
 
 // Runs a shell script with the working folder `cwd`, where "$RASTER" is the program; its
-// output is kept outside that folder. The script's last command's status is the result.
+// output is kept outside that folder, in a temporary folder of its own: test processes run
+// side by side (ctest -j), and output files shared between them (the parent of `cwd`, /tmp
+// for a TempFolder) let one process read another's stderr.
 inline RunResult runShell(const fs::path& cwd, const std::string& script) {
-  const fs::path logs = cwd.parent_path();
+  const TempFolder logFolder;
+  const fs::path& logs = logFolder.path;
   const std::string command = "cd " + shellQuote(cwd.string()) + " && RASTER=" + shellQuote(RASTER_CLI_PATH) +
                               " bash -c " + shellQuote(script) + " >" + shellQuote((logs / "out.txt").string()) +
                               " 2>" + shellQuote((logs / "err.txt").string());

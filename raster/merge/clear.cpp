@@ -22,14 +22,8 @@ void fillRows(T* data, size_t width, const TileBounds& rect, const T* texel, siz
   for (size_t i = 0; i < sizeof pattern; i += texelBytes) std::memcpy(pattern + i, texel, texelBytes);
   const size_t rowBytes = size_t(rect.x1 + 1 - rect.x0) * texelBytes;
   for (int y = rect.y0; y <= rect.y1; ++y) {
-    unsigned char* row = reinterpret_cast<unsigned char*>(data + (size_t(y) * width + size_t(rect.x0)) * perTexel);
-    if (streaming) {
-      streamRow(row, pattern, rowBytes);
-      continue;
-    }
-    size_t i = 0;
-    for (; i + sizeof pattern <= rowBytes; i += sizeof pattern) std::memcpy(row + i, pattern, sizeof pattern);
-    std::memcpy(row + i, pattern, rowBytes - i);
+    storeRow(reinterpret_cast<unsigned char*>(data + (size_t(y) * width + size_t(rect.x0)) * perTexel), pattern, rowBytes,
+             streaming);
   }
 }
 

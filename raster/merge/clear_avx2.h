@@ -1,4 +1,4 @@
-// Rows of a clear stored around the cache (clear.cpp): for tiles no triangle of the pass
+// Rows of a clear (clear.cpp), stored around the cache for tiles no triangle of the pass
 // reaches, whose texels nothing reads again in the pass. A plain store first reads each
 // line for ownership; a streaming store does not, so such a tile costs half the memory
 // traffic and leaves the cache to the tiles being drawn.
@@ -16,11 +16,12 @@
 namespace raster::merge {
 
 // Stores `bytes` bytes of the repeated 32-byte `pattern` at `row`; the pattern lines up
-// with `row`'s first byte. Streaming where the CPU has it and the row is aligned for it.
-inline void streamRow(unsigned char* row, const unsigned char (&pattern)[32], size_t bytes) {
+// with `row`'s first byte. `streaming`: around the cache, where the CPU can and the row is
+// aligned for it.
+inline void storeRow(unsigned char* row, const unsigned char (&pattern)[32], size_t bytes, bool streaming) {
   size_t i = 0;
 #if RASTER_AVX2
-  if ((reinterpret_cast<uintptr_t>(row) & 31u) == 0) {
+  if (streaming && (reinterpret_cast<uintptr_t>(row) & 31u) == 0) {
     const __m256i value = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(pattern));
     for (; i + 32 <= bytes; i += 32) _mm256_stream_si256(reinterpret_cast<__m256i*>(row + i), value);
   }

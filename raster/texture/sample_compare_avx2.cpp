@@ -176,21 +176,36 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
   }
 }
 
+}  // namespace
+
+template <int R>
+void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
+                  simd::Float8* taps) {
+  compareGridN<1, R>(depth, &s, &t, origin, step, &ref, &taps);
+}
+
+template <int R>
+void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
+                    const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
+  simd::Float8* const taps[2] = {lo, hi};
+  compareGridN<2, R>(depth, s, t, origin, step, ref, taps);
+}
+
 #if RASTER_ZMM_PAIRS
 // compareGridN's shared case for both groups in 512-bit registers, lane k of Float8x2 in
 // element k: the same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on
 // 16 lanes), the same window loads, compares and blends per lane, half the instructions.
 // False, with nothing written, unless every lane's taps are one texel apart (no edge).
 template <int R>
-bool compareGridShared16(const Texture& depth, __m512 s, __m512 t, float origin, float step, __m512 ref16,
-                         simd::Float8x2* taps) {
+bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
+                   simd::Float8x2* taps) {
   constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
   LinearTaps16 x[count], y[count];
   __mmask16 apart = 0xFFFF;
   for (int k = 0; k < count; ++k) {
     const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
-    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, offset), depth.width);
-    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t, offset), depth.height);
+    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
+    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
   }
   for (int k = 0; k < count; ++k)   // tapsAreConsecutive
     for (const LinearTaps16* axis : {x, y}) {
@@ -200,7 +215,7 @@ bool compareGridShared16(const Texture& depth, __m512 s, __m512 t, float origin,
   if (apart != 0xFFFF) return false;
 
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
-  const __m512 ref = _mm512_min_ps(_mm512_max_ps(ref16, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));   // clampRef
+  const __m512 ref = _mm512_min_ps(_mm512_max_ps(ref16.v, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));   // clampRef
   const uint32_t* codes = depth.depth.data();
   alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
   _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(depth.width)), x[0].i0));
@@ -237,29 +252,7 @@ bool compareGridShared16(const Texture& depth, __m512 s, __m512 t, float origin,
     }
   return true;
 }
-#endif
 
-}  // namespace
-
-template <int R>
-void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
-                  simd::Float8* taps) {
-  compareGridN<1, R>(depth, &s, &t, origin, step, &ref, &taps);
-}
-
-template <int R>
-void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
-                    const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
-  simd::Float8* const taps[2] = {lo, hi};
-  compareGridN<2, R>(depth, s, t, origin, step, ref, taps);
-}
-
-#if RASTER_ZMM_PAIRS
-template <int R>
-bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref,
-                   simd::Float8x2* taps) {
-  return compareGridShared16<R>(depth, s.v, t.v, origin, step, ref.v, taps);
-}
 template bool compareGrid16<1>(const Texture&, simd::Float8x2, simd::Float8x2, float, float, simd::Float8x2, simd::Float8x2*);
 template bool compareGrid16<2>(const Texture&, simd::Float8x2, simd::Float8x2, float, float, simd::Float8x2, simd::Float8x2*);
 #endif

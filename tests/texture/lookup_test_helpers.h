@@ -1,0 +1,41 @@
+// What the sampler tests against llvmpipe share: where a lookup lands, and a pass that
+// draws one lookup per grid cell into a float target.
+#pragma once
+
+#include <random>
+
+#include "tests/gl_compare_helpers.h"
+
+namespace gltest {
+
+// A lookup coordinate: random, far outside, or on a texel centre / edge of the texture.
+inline float lookupCoordinate(std::mt19937& rng, int size) {
+  switch (rng() % 5) {
+    case 0: return uniform(rng, -0.2f, 1.2f);
+    case 1: return uniform(rng, -40.0f, 40.0f);
+    case 2: return (float(int(rng() % unsigned(size))) + 0.5f) / float(size);        // texel centre
+    case 3: return float(int(rng() % unsigned(size + 1))) / float(size);             // texel edge
+    default: return (float(int(rng() % unsigned(8 * size))) + 0.5f) / float(8 * size);  // 1/8 texel steps
+  }
+}
+
+// Draws test/color_lookup over `mesh` (a grid whose cells carry lookup coordinates) into a
+// size x size RGBA32F target, sampling `texture`, and reads the target back.
+inline ImageData drawLookups(Backend& b, Handle texture, const MeshData& mesh, int size) {
+  scenes::TextureDesc targetDesc;
+  targetDesc.width = targetDesc.height = size;
+  targetDesc.format = TexelFormat::RGBA32F;
+  const Handle target = b.createTexture(targetDesc);
+  const Handle fb = b.createFramebuffer({{target}, 0});
+  const Handle program = b.createProgram("test/color_lookup");
+  const Handle meshHandle = b.createMesh(mesh);
+  b.beginPass(fb, {0, 0, size, size}, clearAll());
+  b.bindTexture(0, texture);
+  b.setUniform(program, "tex", 0);
+  DrawState state;
+  state.depthTest = false;
+  b.draw(program, meshHandle, state);
+  return b.readColor(fb);
+}
+
+}  // namespace gltest

@@ -85,10 +85,10 @@ uint32_t blockCoverage(const Edge (&edges)[3], int blockX, int blockY) {
   return mask;
 }
 
-// The same, for edges that all have small steps. The reference has no faster form;
-// coverage_avx2.h gives WalkEdge8 one without branches.
-inline uint32_t blockCoverageSmallSteps(const WalkEdge (&edges)[3], int blockX, int blockY) {
-  return blockCoverage(edges, blockX, blockY);
+// The same, for edges that all have small steps, kept to the pixels of `within`. The
+// reference has no faster form; coverage_avx2.h gives WalkEdge8 one without branches.
+inline uint32_t blockCoverageSmallSteps(const WalkEdge (&edges)[3], int blockX, int blockY, uint32_t within) {
+  return blockCoverage(edges, blockX, blockY) & within;
 }
 
 // Pixels of the block inside the framebuffer.

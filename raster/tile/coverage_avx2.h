@@ -49,16 +49,84 @@ struct EdgeWalkOf<simd::Float8> {
   using type = WalkEdge8;
 };
 
-// blockCoverage without a branch, when every edge has small steps: each edge's value at the
-// block's first pixel is clamped to +-2^30 and compared with all 16 pixel offsets at once.
-// The offsets stay below 3 * 2^28 in size, so beyond the clamp a block lies wholly on one
-// side of the edge either way, and every bit is the one blockCoverage gives.
-[[gnu::always_inline]] inline uint32_t blockCoverageSmallSteps(const WalkEdge8 (&edges)[3], int blockX, int blockY) {
+// blockCoverage without a branch, when every edge has small steps, kept to the pixels of
+// `within`: each edge's value at the block's first pixel is clamped to +-2^30 and compared
+// with all 16 pixel offsets at once. The offsets stay below 3 * 2^28 in size, so beyond the
+// clamp a block lies wholly on one side of the edge either way, and every bit is the one
+// blockCoverage gives. With AVX-512 each edge's compare takes the last one's bits as its
+// mask, so the three chain in mask registers.
+[[gnu::always_inline]] inline uint32_t blockCoverageSmallSteps(const WalkEdge8 (&edges)[3], int blockX, int blockY,
+                                                               uint32_t within) {
   constexpr int64_t kLimit = int64_t(1) << 30;
-  uint32_t mask = 0xFFFFu;
-  for (const WalkEdge8& e : edges) mask &= e.straddledCoverage(std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit));
+  auto threshold = [&](const WalkEdge8& e) { return int32_t(-std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit)); };
+#if RASTER_ZMM_PAIRS
+  __mmask16 mask = __mmask16(within);
+  for (const WalkEdge8& e : edges) mask = _mm512_mask_cmpgt_epi32_mask(mask, e.pixel16, _mm512_set1_epi32(threshold(e)));
   return mask;
+#else
+  uint32_t mask = within;
+  for (const WalkEdge8& e : edges) mask &= e.straddledCoverage(-int64_t(threshold(e)));
+  return mask;
+#endif
 }
+
+#if RASTER_ZMM_PAIRS
+// The blocks of a small triangle's rectangle [x0, x1] x [y0, y1] (a tile's part of its
+// bounds), in walk order, when every edge has small steps and every edge value over the
+// blocks' pixels fits well inside 32 bits: visitBlock(blockX, blockY, coverage) for each
+// block with a covered pixel inside the framebuffer. Returns false, visiting nothing, when
+// the values do not fit.
+//
+// Each edge's values at a block's 16 pixels sit in one register, stepped by a vector add
+// from block to block, so no value crosses from the integer registers per block. A row's
+// coverage masks are all found first, then the covered blocks visited: a branch per covered
+// block instead of one per block whose outcome waits on the compares. The values are exact
+// in 32 bits, so every bit is blockCoverage's; the blocks and their order are the region
+// walk's (walk.h), which visits the same blocks row by row, left to right.
+template <class VisitBlock>
+[[gnu::always_inline]] inline bool walkSmallTriangleBlocks(const WalkEdge8 (&edges)[3], int x0, int y0, int x1, int y1,
+                                                           int width, int height, VisitBlock&& visitBlock) {
+  constexpr int kBlock = limits::kBlockSize;
+  constexpr int64_t kLimit = int64_t(1) << 30;
+  const int blockX0 = x0 & ~(kBlock - 1), blockY0 = y0 & ~(kBlock - 1);
+  const int columns = (x1 - blockX0) / kBlock + 1, rows = (y1 - blockY0) / kBlock + 1;
+  static_assert(limits::kTileSize / kBlock <= 16, "a row's masks are kept in 16 bits");
+  __m512i value[3], stepX[3], stepY[3];
+  for (int i = 0; i < 3; ++i) {
+    const WalkEdge8& e = edges[i];
+    if (!e.smallSteps) return false;
+    const int64_t c00 = e.f.at(blockX0, blockY0);
+    int64_t high, low;   // over every pixel of the blocks
+    edgeExtremes(e.f, columns * kBlock - 1, rows * kBlock - 1, high, low);
+    if (c00 + high >= kLimit || c00 + low <= -kLimit) return false;
+    value[i] = _mm512_add_epi32(e.pixel16, _mm512_set1_epi32(int32_t(c00)));
+    stepX[i] = _mm512_set1_epi32(int32_t(-e.f.dcdx * kBlock));
+    stepY[i] = _mm512_set1_epi32(int32_t(e.f.dcdy * kBlock));
+  }
+  const __m512i zero = _mm512_setzero_si512();
+  for (int row = 0; row < rows; ++row) {
+    const int blockY = blockY0 + row * kBlock;
+    uint16_t coverage[16];
+    uint32_t covered = 0;
+    __m512i at[3] = {value[0], value[1], value[2]};
+    for (int column = 0; column < columns; ++column) {
+      __mmask16 mask = _mm512_cmpgt_epi32_mask(at[0], zero);
+      mask = _mm512_mask_cmpgt_epi32_mask(mask, at[1], zero);
+      mask = _mm512_mask_cmpgt_epi32_mask(mask, at[2], zero);
+      coverage[column] = mask;
+      covered |= uint32_t(mask != 0) << column;
+      for (int i = 0; i < 3; ++i) at[i] = _mm512_add_epi32(at[i], stepX[i]);
+    }
+    for (; covered; covered &= covered - 1) {
+      const int column = __builtin_ctz(covered), blockX = blockX0 + column * kBlock;
+      const uint32_t inside = coverage[column] & blockBounds(blockX, blockY, width, height);
+      if (inside) visitBlock(blockX, blockY, inside);
+    }
+    for (int i = 0; i < 3; ++i) value[i] = _mm512_add_epi32(value[i], stepY[i]);
+  }
+  return true;
+}
+#endif
 
 }  // namespace raster
 #endif

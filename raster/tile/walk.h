@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include "raster/contract.h"
 #include "raster/tile/coverage.h"
@@ -34,6 +35,16 @@ template <class F, class VisitBlock>
   // Depth test and write, and no colour the shader writes is kept.
   const bool depthOnly =
       state.depthTest && state.depthWrite && fb.depth && colorOutputsWritten(job.draws[tri.drawIndex], fb) == 0;
+#if RASTER_ZMM_PAIRS
+  // A triangle whose edge values over its part of the tile fit 32 bits takes the vector
+  // walk without regions (coverage_avx2.h), unless it is depth-only and a whole region
+  // lies in its bounds, which the regions would fill whole.
+  const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
+                           ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
+  if constexpr (std::is_same_v<Edge, WalkEdge8>)
+    if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks(edges, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
+      return;
+#endif
   // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
   // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
   // row of the triangle's extent at a time, so texture reads run along long rows.
@@ -59,10 +70,10 @@ template <class F, class VisitBlock>
           blockX = (blockX | (kRegion - 1)) - (kBlock - 1);
           continue;
         }
-        const uint32_t inside = region == Overlap::Inside ? 0xFFFFu
-                                : smallSteps              ? blockCoverageSmallSteps(edges, blockX, blockY)
-                                                          : blockCoverage(edges, blockX, blockY);
-        const uint32_t coverage = inside & blockBounds(blockX, blockY, fb.width, fb.height);
+        const uint32_t bounds = blockBounds(blockX, blockY, fb.width, fb.height);
+        const uint32_t coverage = region == Overlap::Inside ? bounds
+                                  : smallSteps              ? blockCoverageSmallSteps(edges, blockX, blockY, bounds)
+                                                            : blockCoverage(edges, blockX, blockY) & bounds;
         if (coverage) visitBlock(blockX, blockY, coverage);
       }
     }

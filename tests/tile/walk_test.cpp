@@ -1,9 +1,12 @@
 // The tile walk (tile/walk.h) visits exactly the pixels whose centres are inside all three
 // edge functions, block by block in row-major order, for triangles of a fraction of a pixel
-// to 40 pixels: at block, region, tile and framebuffer edges, with both lane types' edge
-// forms. (A walk that skips the region level for small triangles must pass it too.)
+// to thousands of pixels: at block, region, tile and framebuffer edges, with both lane types'
+// edge forms. The AVX-512 walk takes small triangles without the region level and large ones
+// with it (walkSmallTriangleBlocks), so both are held to the same blocks.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <iterator>
 #include <random>
 #include <vector>
 
@@ -65,18 +68,23 @@ TEST_SUITE("geometry") {
     std::vector<raster::Plane> planes;
     std::mt19937 rng(26);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    // Legs from a fraction of a pixel to 40 pixels, centred near block, region and tile
-    // corners (multiples of 4, 16, 64) and the framebuffer's edges.
-    const float sizes[] = {0.7f, 1.5f, 3.0f, 5.0f, 9.0f, 14.0f, 40.0f};
-    for (int i = 0; i < 6000; ++i) {
-      const float size = sizes[i % 7];
-      const int grid = (i / 7) % 4 == 0 ? 4 : (i / 7) % 4 == 1 ? 16 : (i / 7) % 4 == 2 ? 64 : 1;
+    // Legs from a fraction of a pixel to thousands of pixels, centred near block, region and
+    // tile corners (multiples of 4, 16, 64) and the framebuffer's edges.
+    const float sizes[] = {0.7f, 1.5f, 3.0f, 5.0f, 9.0f, 14.0f, 40.0f, 150.0f, 4000.0f};
+    constexpr int kSizes = int(std::size(sizes));
+    for (int i = 0; i < 7000; ++i) {
+      const float size = sizes[i % kSizes];
+      const int grid = (i / kSizes) % 4 == 0 ? 4 : (i / kSizes) % 4 == 1 ? 16 : (i / kSizes) % 4 == 2 ? 64 : 1;
       float cx = float(grid * int(unit(rng) * float(kWidth / grid + 1))) + (unit(rng) - 0.5f) * 4.0f;
       float cy = float(grid * int(unit(rng) * float(kHeight / grid + 1))) + (unit(rng) - 0.5f) * 4.0f;
       if (grid == 1) { cx = unit(rng) < 0.5f ? float(kWidth) - unit(rng) * 3.0f : unit(rng) * 3.0f; cy = unit(rng) * kHeight; }
+      // Every third triangle has its corners on pixel centres, so its edges run through
+      // pixel centres and the fill rule decides them.
+      const bool onCentres = i % 3 == 0;
+      auto corner = [&](float at) { return onCentres ? std::floor(at) + 0.5f : at; };
       float v[3][8];
       for (auto& p : v) {
-        const float vertex[8] = {0, 0, 0, 1, cx + (unit(rng) - 0.5f) * size, cy + (unit(rng) - 0.5f) * size, 0.5f, 1};
+        const float vertex[8] = {0, 0, 0, 1, corner(cx + (unit(rng) - 0.5f) * size), corner(cy + (unit(rng) - 0.5f) * size), 0.5f, 1};
         std::copy(vertex, vertex + 8, p);
       }
       raster::setupTriangle(setup, v[0], v[1], v[2], raster::SetupLists{triangles, planes});

@@ -71,11 +71,8 @@ struct EdgeWalkOf<simd::Float8> {
 }
 
 #if RASTER_ZMM_PAIRS
-// The blocks of a small triangle's rectangle [x0, x1] x [y0, y1] (a tile's part of its
-// bounds), in walk order, when every edge has small steps and every edge value over the
-// blocks' pixels fits well inside 32 bits: visitBlock(blockX, blockY, coverage) for each
-// block with a covered pixel inside the framebuffer. Returns false, visiting nothing, when
-// the values do not fit.
+// walkSmallTriangleBlocks (coverage.h) for WalkEdge8: it applies where every edge has small
+// steps and every edge value over the walked blocks' pixels lies within +-2^30.
 //
 // Each edge's values at a block's 16 pixels sit in one register, stepped by a vector add
 // from block to block, so no value crosses from the integer registers per block. A row's

@@ -1,5 +1,5 @@
-// The walk of one tile's triangles, in API order: for each triangle, its 16x16 regions, then
-// 4x4 blocks, then lane groups, each with its coverage (coverage.h), and each group through
+// The walk of one tile's triangles, in API order: for each triangle, its 16x16 regions (not
+// for small ones, where the lane type has a faster walk), then 4x4 blocks, then lane groups, each with its coverage (coverage.h), and each group through
 // the early depth test (depth_test.h).
 //
 // The walk functions are always inlined into the tile loop (rasterize_tile.cpp), as GCC
@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <span>
-#include <type_traits>
 
 #include "raster/contract.h"
 #include "raster/tile/coverage.h"
@@ -35,16 +34,13 @@ template <class F, class VisitBlock>
   // Depth test and write, and no colour the shader writes is kept.
   const bool depthOnly =
       state.depthTest && state.depthWrite && fb.depth && colorOutputsWritten(job.draws[tri.drawIndex], fb) == 0;
-#if RASTER_ZMM_PAIRS
-  // A triangle whose edge values over its part of the tile fit 32 bits takes the vector
-  // walk without regions (coverage_avx2.h), unless it is depth-only and a whole region
-  // lies in its bounds, which the regions would fill whole.
+  // A small triangle may walk its blocks without the regions (walkSmallTriangleBlocks,
+  // coverage.h), unless it is depth-only and a whole region lies in its bounds, which the
+  // regions fill whole.
   const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
                            ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
-  if constexpr (std::is_same_v<Edge, WalkEdge8>)
-    if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks(edges, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
-      return;
-#endif
+  if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks(edges, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
+    return;
   // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
   // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
   // row of the triangle's extent at a time, so texture reads run along long rows.

@@ -1,6 +1,7 @@
 // The walk of one tile's triangles, in API order: for each triangle, its 16x16 regions (not
-// for small ones, where the lane type has a faster walk), then 4x4 blocks, then lane groups, each with its coverage (coverage.h), and each group through
-// the early depth test (depth_test.h).
+// for small ones, where the lane type has a faster walk), then 4x4 blocks, then lane groups,
+// each with its coverage (coverage.h), and each group through the early depth test
+// (depth_test.h).
 //
 // The walk functions are always inlined into the tile loop (rasterize_tile.cpp), as GCC
 // inlines functions of internal linkage called once: outlined, each call and its visitor

@@ -49,6 +49,11 @@ struct EdgeWalkOf<simd::Float8> {
   using type = WalkEdge8;
 };
 
+// The bound on the edge values the small-step forms below keep in 32-bit lanes:
+// blockCoverageSmallSteps clamps to +-2^30, walkSmallTriangleBlocks applies only within it,
+// so a value plus a block's pixel offsets (below 3 * 2^28 with small steps) cannot overflow.
+constexpr int64_t kEdgeValueLimit = int64_t(1) << 30;
+
 // blockCoverage without a branch, when every edge has small steps, kept to the pixels of
 // `within`: each edge's value at the block's first pixel is clamped to +-2^30 and compared
 // with all 16 pixel offsets at once. The offsets stay below 3 * 2^28 in size, so beyond the
@@ -57,8 +62,9 @@ struct EdgeWalkOf<simd::Float8> {
 // mask, so the three chain in mask registers.
 [[gnu::always_inline]] inline uint32_t blockCoverageSmallSteps(const WalkEdge8 (&edges)[3], int blockX, int blockY,
                                                                uint32_t within) {
-  constexpr int64_t kLimit = int64_t(1) << 30;
-  auto threshold = [&](const WalkEdge8& e) { return int32_t(-std::clamp(e.f.at(blockX, blockY), -kLimit, kLimit)); };
+  auto threshold = [&](const WalkEdge8& e) {
+    return int32_t(-std::clamp(e.f.at(blockX, blockY), -kEdgeValueLimit, kEdgeValueLimit));
+  };
 #if RASTER_ZMM_PAIRS
   __mmask16 mask = __mmask16(within);
   for (const WalkEdge8& e : edges) mask = _mm512_mask_cmpgt_epi32_mask(mask, e.pixel16, _mm512_set1_epi32(threshold(e)));
@@ -84,7 +90,6 @@ template <class VisitBlock>
 [[gnu::always_inline]] inline bool walkSmallTriangleBlocks(const WalkEdge8 (&edges)[3], int x0, int y0, int x1, int y1,
                                                            int width, int height, VisitBlock&& visitBlock) {
   constexpr int kBlock = limits::kBlockSize;
-  constexpr int64_t kLimit = int64_t(1) << 30;
   const int blockX0 = x0 & ~(kBlock - 1), blockY0 = y0 & ~(kBlock - 1);
   const int columns = (x1 - blockX0) / kBlock + 1, rows = (y1 - blockY0) / kBlock + 1;
   static_assert(limits::kTileSize / kBlock <= 16, "a row's masks are kept in 16 bits");
@@ -95,7 +100,7 @@ template <class VisitBlock>
     const int64_t c00 = e.f.at(blockX0, blockY0);
     int64_t high, low;   // over every pixel of the blocks
     edgeExtremes(e.f, columns * kBlock - 1, rows * kBlock - 1, high, low);
-    if (c00 + high >= kLimit || c00 + low <= -kLimit) return false;
+    if (c00 + high >= kEdgeValueLimit || c00 + low <= -kEdgeValueLimit) return false;
     value[i] = _mm512_add_epi32(e.pixel16, _mm512_set1_epi32(int32_t(c00)));
     stepX[i] = _mm512_set1_epi32(int32_t(-e.f.dcdx * kBlock));
     stepY[i] = _mm512_set1_epi32(int32_t(e.f.dcdy * kBlock));

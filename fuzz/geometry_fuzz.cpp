@@ -44,8 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   setup.varyingFloats = 1;
   setup.bottomEdgeRule = data[0] & 1;
   setup.cullBack = data[2] & 1;
-  std::vector<raster::SetupTriangle> triangles;
-  std::vector<raster::Plane> planes;
+  raster::TriangleList triangles;
+  raster::PlaneList planes;
   raster::PipelineCounters counters;
   const raster::AssemblyInput input{setup, shaded, indices, int(vertexCount), viewport};
   raster::assemblePrimitives(input, 0, indices.size() / 3, {triangles, planes}, counters);
@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   raster::TileBins bins;
   bins.reset(width, height);
-  bins.binRows(triangles, 0, 0, bins.tilesY() - 1);
+  bins.binTriangles(triangles, 0, uint32_t(triangles.size()));
   for (int t = 0; t < bins.tileCount(); ++t) {
     const auto bin = bins.bin(t);
     for (size_t i = 1; i < bin.size(); ++i)

@@ -20,6 +20,7 @@
 #include "raster/limits.h"
 #include "raster/simd/glsl.h"
 #include "raster/texture/texture.h"
+#include "raster/util/default_init.h"
 
 namespace raster {
 
@@ -148,6 +149,11 @@ struct SetupTriangle {
   uint32_t drawIndex;           // which draw of the pass
   bool frontFacing;
 };
+
+// A pass's set-up triangles and their varying planes: lists that grow without zeroing
+// (util/default_init.h), since the renderer sizes them before copying its chunks in.
+using TriangleList = GrowableList<SetupTriangle>;
+using PlaneList = GrowableList<Plane>;
 
 // Where a set-up triangle came from, kept only for pixel history (the renderer's list runs
 // beside its triangles): the primitive, instance-major (instance * primitives per

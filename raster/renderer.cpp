@@ -2,7 +2,6 @@
 #include "raster/renderer.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -197,20 +196,29 @@ void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> i
   appendChunks(chunks);
 }
 
-// Bins triangles [firstTriangle, end) (geometry/bin.h). Large draws are binned in bands of
-// tile rows in parallel: each band's tiles get their triangles in order, whoever bins the
-// other bands.
+// Bins triangles [firstTriangle, end) (geometry/bin.h). Large draws are binned in parts,
+// consecutive ranges of triangles in parallel, each into its own bins; appending those in
+// range order gives every tile its triangles in API order.
 void Renderer::bin(uint32_t firstTriangle) {
-  const size_t count = triangles_.size() - firstTriangle;
-  const int tilesY = bins_.tilesY();
-  const int bands = pool_.threads() > 1 && count >= kSetupChunkPrimitives ? std::min(tilesY, 4 * pool_.threads()) : 1;
-  std::atomic<uint64_t> entries{0};
-  auto binBand = [&](int band) {
-    entries += bins_.binRows(triangles_, firstTriangle, tilesY * band / bands, tilesY * (band + 1) / bands - 1);
-  };
-  if (bands == 1) binBand(0);
-  else pool_.parallelFor(bands, binBand);
-  counters_.tileBinEntries += entries;
+  const uint32_t end = uint32_t(triangles_.size()), count = end - firstTriangle;
+  const int parts = pool_.threads() > 1 && count >= kSetupChunkPrimitives ? pool_.threads() : 1;
+  if (parts == 1) {
+    counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, end);
+    return;
+  }
+  if (binParts_.size() < size_t(parts - 1)) binParts_.resize(size_t(parts - 1));
+  const auto partStart = [&](int p) { return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts)); };
+  std::vector<uint64_t> entries(static_cast<size_t>(parts));
+  pool_.parallelFor(parts, [&](int p) {
+    // The first part goes straight into the pass's bins: it follows what they hold.
+    TileBins& part = p == 0 ? bins_ : binParts_[size_t(p - 1)];
+    if (p > 0) part.reset(framebuffer_.width, framebuffer_.height);
+    entries[size_t(p)] = part.binTriangles(triangles_, partStart(p), partStart(p + 1));
+  });
+  for (int p = 0; p < parts; ++p) {
+    if (p > 0) bins_.append(binParts_[size_t(p - 1)]);
+    counters_.tileBinEntries += entries[size_t(p)];
+  }
 }
 
 // Worth it (and exact) when some colour draw is depth tested, and no colour draw blends:

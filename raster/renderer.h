@@ -64,8 +64,8 @@ class Renderer {
  private:
   // One chunk of a draw set up in parallel: its own lists, kept so no draw allocates them anew.
   struct SetupChunk {
-    std::vector<SetupTriangle> triangles;
-    std::vector<Plane> varyingPlanes;
+    TriangleList triangles;
+    PlaneList varyingPlanes;
     std::vector<uint32_t> origins;   // pixel history only
     PipelineCounters counters;
     size_t triangleAt = 0, planeAt = 0;   // where its lists land in the pass's
@@ -86,10 +86,11 @@ class Renderer {
   ClearValues pendingClear_;   // the pass's glClear, carried out by the tiles at flush
   ViewportTransform viewport_{};
   std::vector<DrawRecord> draws_;
-  std::vector<SetupTriangle> triangles_;
-  std::vector<Plane> varyingPlanes_;
+  TriangleList triangles_;
+  PlaneList varyingPlanes_;
   std::vector<uint32_t> triangleOrigins_;   // beside triangles_, only while pixel history is on
   TileBins bins_;
+  std::vector<TileBins> binParts_;   // a large draw's parts, binned in parallel, then appended to bins_
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
   std::vector<SetupChunk> setupChunks_;
   PipelineCounters counters_;

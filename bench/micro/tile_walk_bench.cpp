@@ -25,8 +25,8 @@ struct SmallTriangles {
   raster::Texture color{kTile, kTile, raster::TexelFormat::RGBA16F};
   raster::Texture depth{kTile, kTile, raster::TexelFormat::Depth16};
   raster::Framebuffer framebuffer;
-  std::vector<raster::SetupTriangle> triangles;
-  std::vector<raster::Plane> planes;
+  raster::TriangleList triangles;
+  raster::PlaneList planes;
   std::vector<raster::DrawRecord> draws{1};
   std::vector<uint32_t> bin;
   raster::TileJob job;

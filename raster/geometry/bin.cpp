@@ -22,12 +22,11 @@ TileBounds TileBins::bounds(int tile) const {
   return {x0, y0, std::min(x0 + kTileSize, width_) - 1, std::min(y0 + kTileSize, height_) - 1};
 }
 
-uint64_t TileBins::binRows(std::span<const SetupTriangle> triangles, uint32_t first, int tileY0, int tileY1) {
+uint64_t TileBins::binTriangles(std::span<const SetupTriangle> triangles, uint32_t first, uint32_t end) {
   uint64_t binned = 0;
-  for (uint32_t t = first; t < triangles.size(); ++t) {
+  for (uint32_t t = first; t < end; ++t) {
     const SetupTriangle& tri = triangles[t];
-    const int rowFirst = std::max(tri.minY / kTileSize, tileY0), rowLast = std::min(tri.maxY / kTileSize, tileY1);
-    for (int tileY = rowFirst; tileY <= rowLast; ++tileY) {
+    for (int tileY = tri.minY / kTileSize; tileY <= tri.maxY / kTileSize; ++tileY) {
       for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
         // The overlap of the tile and the triangle's bounds.
         const int x0 = std::max(tileX * kTileSize, tri.minX), x1 = std::min(tileX * kTileSize + kTileSize - 1, tri.maxX);
@@ -42,6 +41,11 @@ uint64_t TileBins::binRows(std::span<const SetupTriangle> triangles, uint32_t fi
     }
   }
   return binned;
+}
+
+void TileBins::append(const TileBins& part) {
+  for (size_t tile = 0; tile < bins_.size(); ++tile)
+    bins_[tile].insert(bins_[tile].end(), part.bins_[tile].begin(), part.bins_[tile].end());
 }
 
 void TileBins::clear() {

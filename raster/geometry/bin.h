@@ -6,8 +6,9 @@
 // Triangles are appended in API order, so each tile sees its triangles in that order, and
 // the tile stage owes the output's independence of thread count to nothing else.
 //
-// Binning is split into bands of tile rows: a band's bins are written by one caller, so
-// the renderer bins bands in parallel with the same result as one pass through them.
+// Large draws are binned in parts: consecutive ranges of triangles, each into its own
+// TileBins in parallel, appended in range order. Each triangle is read once, and every
+// tile's list is the same as one pass through the whole range would make.
 #pragma once
 
 #include <cstdint>
@@ -30,9 +31,11 @@ class TileBins {
   // The pixel rectangle of a tile, clipped to the framebuffer.
   TileBounds bounds(int tile) const;
 
-  // Bins triangles[first, end) into the tiles of tile rows [tileY0, tileY1]; returns the
-  // (triangle, tile) pairs added. Calls for disjoint row ranges may run at once.
-  uint64_t binRows(std::span<const SetupTriangle> triangles, uint32_t first, int tileY0, int tileY1);
+  // Bins triangles[first, end), by their indices in `triangles`; returns the (triangle,
+  // tile) pairs added.
+  uint64_t binTriangles(std::span<const SetupTriangle> triangles, uint32_t first, uint32_t end);
+  // Appends every tile's list of `part`, which has the same tiles, to this one's.
+  void append(const TileBins& part);
   // Empties every bin, keeping the tiles.
   void clear();
 

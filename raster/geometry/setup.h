@@ -44,8 +44,8 @@ struct SetupState {
 
 // Where set-up triangles are appended: the triangle and, for each, its varying planes.
 struct SetupLists {
-  std::vector<SetupTriangle>& triangles;
-  std::vector<Plane>& varyingPlanes;
+  TriangleList& triangles;
+  PlaneList& varyingPlanes;
   std::vector<uint32_t>* origins = nullptr;   // pixel history only: each triangle's origin (contract.h)
 };
 

@@ -6,6 +6,7 @@
 //
 // Triangles are given by pixel-centre vertices (window px + 0.5, fixed 256 px) and set up with
 // setupTriangle; tile (tx, ty) of an n-wide grid is tile index ty * n + tx.
+#include <span>
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -35,7 +36,7 @@ Bin binOf(const raster::TileBins& bins, int tile) {
 
 // Conservative binning must never miss: every pixel a triangle covers lies in a tile whose
 // bin holds the triangle.
-void checkNoCoveredPixelMissed(const raster::TileBins& bins, const std::vector<SetupTriangle>& tris, int width, int height) {
+void checkNoCoveredPixelMissed(const raster::TileBins& bins, std::span<const SetupTriangle> tris, int width, int height) {
   int missed = 0;
   std::string first;
   for (uint32_t t = 0; t < tris.size(); ++t)
@@ -84,7 +85,7 @@ TEST_SUITE("geometry") {
     raster::TileBins bins;
     bins.reset(256, 256);
     REQUIRE(bins.tileCount() == 16);
-    const uint64_t entries = bins.binRows(tris, 0, 0, bins.tilesY() - 1);
+    const uint64_t entries = bins.binTriangles(tris, 0, uint32_t(tris.size()));
     CHECK(tris[4].minX == 62);
     int leftmostInTopRow = 256;
     for (const auto& [x, y] : coveredPixels(tris[4], 256, 256))
@@ -119,7 +120,7 @@ TEST_SUITE("geometry") {
     // A triangle wholly in the 200 x 150 corner tile goes there only.
     bins.reset(200, 150);
     const std::vector<SetupTriangle> tris = {triangleAt(200, 150, 193, 130, 199, 130, 193, 149)};
-    CHECK(bins.binRows(tris, 0, 0, 2) == 1);
+    CHECK(bins.binTriangles(tris, 0, uint32_t(tris.size())) == 1);
     CHECK(binOf(bins, 11) == Bin{0});
   }
 
@@ -133,7 +134,7 @@ TEST_SUITE("geometry") {
       CHECK(out.triangles[0].maxY == 149);
       raster::TileBins bins;
       bins.reset(200, 150);
-      CHECK(bins.binRows(out.triangles, 0, 0, 2) == 12);
+      CHECK(bins.binTriangles(out.triangles, 0, uint32_t(out.triangles.size())) == 12);
       for (int tile = 0; tile < 12; ++tile) CHECK(binOf(bins, tile) == Bin{0});
     }
     // Through clipping: clip (-1, -1), (7, -1), (-1, 7) covers the whole viewport (x + y = 6 is
@@ -155,13 +156,13 @@ TEST_SUITE("geometry") {
       checkCoverage(c, [](int, int) { return 1; });
       raster::TileBins bins;
       bins.reset(200, 150);
-      bins.binRows(out.triangles, 0, 0, 2);
+      bins.binTriangles(out.triangles, 0, uint32_t(out.triangles.size()));
       for (int tile = 0; tile < 12; ++tile) CHECK(!bins.bin(tile).empty());
       checkNoCoveredPixelMissed(bins, out.triangles, 200, 150);
     }
   }
 
-  TEST_CASE("binning in bands of tile rows gives the bins of one pass, whatever the band order") {
+  TEST_CASE("binning in parts of the triangle list, appended in order, gives the bins of one pass") {
     // 40 triangles scattered over a 300 x 200 framebuffer (5 x 4 tiles), from a fixed LCG.
     std::vector<SetupTriangle> tris;
     uint32_t state = 12345;
@@ -175,34 +176,31 @@ TEST_SUITE("geometry") {
       if (setUp(setupState(300, 200), atPixelCentre(x, y), atPixelCentre(x + w, y + next(20)), atPixelCentre(x + next(30), y + h), out))
         tris.push_back(out.triangles[0]);
     }
-    raster::TileBins whole, banded, reversed;
+    raster::TileBins whole;
     whole.reset(300, 200);
-    banded.reset(300, 200);
-    reversed.reset(300, 200);
-    REQUIRE(whole.tilesY() == 4);
-    const uint64_t n = whole.binRows(tris, 0, 0, 3);
-    const uint64_t b = banded.binRows(tris, 0, 0, 0) + banded.binRows(tris, 0, 1, 2) + banded.binRows(tris, 0, 3, 3);
-    const uint64_t r = reversed.binRows(tris, 0, 3, 3) + reversed.binRows(tris, 0, 2, 2) + reversed.binRows(tris, 0, 0, 1);
+    const uint64_t n = whole.binTriangles(tris, 0, 40);
     CHECK(n > 40);   // triangles up to 150 pixels wide span several tiles
-    CHECK(b == n);
-    CHECK(r == n);
+    // Parts [0, 7), [7, 25), [25, 40), the first binned straight into the result, the
+    // others into their own bins (binned last to first) and appended in order.
+    raster::TileBins parts, second, third;
+    parts.reset(300, 200);
+    second.reset(300, 200);
+    third.reset(300, 200);
+    const uint64_t p = third.binTriangles(tris, 25, 40) + second.binTriangles(tris, 7, 25) + parts.binTriangles(tris, 0, 7);
+    parts.append(second);
+    parts.append(third);
+    CHECK(p == n);
     for (int tile = 0; tile < whole.tileCount(); ++tile) {
       CAPTURE(tile);
-      CHECK(binOf(banded, tile) == binOf(whole, tile));
-      CHECK(binOf(reversed, tile) == binOf(whole, tile));
+      CHECK(binOf(parts, tile) == binOf(whole, tile));
     }
-    // A band only touches its own rows: rows 1..2 alone leave rows 0 and 3 empty.
-    raster::TileBins middle;
-    middle.reset(300, 200);
-    middle.binRows(tris, 0, 1, 2);
-    for (int tile = 0; tile < middle.tileCount(); ++tile) {
-      const int row = tile / middle.tilesX();
-      CHECK(binOf(middle, tile) == (row == 1 || row == 2 ? binOf(whole, tile) : Bin{}));
-    }
+    // A part holds only its own triangles, by their indices in the whole list.
+    for (int tile = 0; tile < second.tileCount(); ++tile)
+      for (uint32_t t : second.bin(tile)) CHECK((t >= 7 && t < 25));
     checkNoCoveredPixelMissed(whole, tris, 300, 200);
   }
 
-  TEST_CASE("bins keep API order across draws; binRows from `first` appends only the new triangles") {
+  TEST_CASE("bins keep API order across draws; binTriangles from `first` appends only the new triangles") {
     // A 128 x 64 framebuffer: tiles 0 (x 0..63) and 1 (x 64..127).
     //   0: in tile 0;  1: in tile 1;  2: across both;  then a second draw:  3: across both;  4: in tile 0.
     std::vector<SetupTriangle> tris = {
@@ -212,10 +210,10 @@ TEST_SUITE("geometry") {
     };
     raster::TileBins bins;
     bins.reset(128, 64);
-    CHECK(bins.binRows(tris, 0, 0, 0) == 4);
+    CHECK(bins.binTriangles(tris, 0, 3) == 4);
     tris.push_back(triangleAt(128, 64, 40, 40, 100, 40, 40, 60));
     tris.push_back(triangleAt(128, 64, 5, 50, 20, 50, 5, 60));
-    CHECK(bins.binRows(tris, 3, 0, 0) == 3);   // triangles 3 and 4 only, by their pass-wide indices
+    CHECK(bins.binTriangles(tris, 3, 5) == 3);   // triangles 3 and 4 only, by their pass-wide indices
     CHECK(binOf(bins, 0) == Bin{0, 2, 3, 4});
     CHECK(binOf(bins, 1) == Bin{1, 2, 3});
 
@@ -224,7 +222,7 @@ TEST_SUITE("geometry") {
     CHECK(bins.tileCount() == 2);
     CHECK(bins.bin(0).empty());
     CHECK(bins.bin(1).empty());
-    bins.binRows(tris, 0, 0, 0);
+    bins.binTriangles(tris, 0, 5);
     bins.reset(128, 64);
     CHECK(bins.bin(0).empty());
     CHECK(bins.bin(1).empty());

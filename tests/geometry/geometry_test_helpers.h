@@ -171,8 +171,8 @@ inline raster::SetupState setupState(int width, int height, bool bottomEdgeRule 
 
 // The set-up triangles and varying planes a test collects.
 struct SetupOutput {
-  std::vector<SetupTriangle> triangles;
-  std::vector<raster::Plane> planes;
+  raster::TriangleList triangles;
+  raster::PlaneList planes;
   raster::SetupLists lists() { return raster::SetupLists{triangles, planes}; }
 };
 

@@ -139,8 +139,8 @@ TEST_SUITE("views") {
   }
 
   TEST_CASE("a wireframe's corners are the triangle's window positions, recovered from its edges") {
-    std::vector<raster::SetupTriangle> triangles;
-    std::vector<raster::Plane> planes;
+    raster::TriangleList triangles;
+    raster::PlaneList planes;
     raster::SetupState state;
     state.framebufferWidth = 200;
     state.framebufferHeight = 100;

@@ -64,8 +64,8 @@ TEST_SUITE("geometry") {
     raster::SetupState setup;
     setup.framebufferWidth = kWidth;
     setup.framebufferHeight = kHeight;
-    std::vector<raster::SetupTriangle> triangles;
-    std::vector<raster::Plane> planes;
+    raster::TriangleList triangles;
+    raster::PlaneList planes;
     std::mt19937 rng(26);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     // Legs from a fraction of a pixel to thousands of pixels, centred near block, region and

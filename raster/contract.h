@@ -89,13 +89,14 @@ struct ViewportTransform {
   float translate[3];
 };
 
-// One instance's vertices to shade: every vertex of the stream, into records
-// [recordBase, recordBase + stream.vertexCount).
+// Vertices [firstVertex, endVertex) of one instance to shade, vertex v into record
+// recordBase + v.
 struct VertexBatch {
   const VertexStream& stream;
   const ViewportTransform& viewport;
   int instance;
   int recordBase;
+  int firstVertex, endVertex;
 };
 
 // ---- shaded vertices (vertex stage -> clip and setup) ----------------------------------------

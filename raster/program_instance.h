@@ -42,9 +42,8 @@ class ProgramInstance final : public ShaderInstance {
  private:
   template <class F>
   void shadeVerticesWith(const VertexBatch& batch, ShadedVertices& out) const {
-    const int vertexCount = batch.stream.vertexCount;
-    for (int first = 0; first < vertexCount; first += F::kCount) {
-      const int count = vertexCount - first < F::kCount ? vertexCount - first : F::kCount;
+    for (int first = batch.firstVertex; first < batch.endVertex; first += F::kCount) {
+      const int count = batch.endVertex - first < F::kCount ? batch.endVertex - first : F::kCount;
       vertex_stage::shadeVertexGroup<Program, F>(uniforms_, batch, first, count, out);
     }
   }

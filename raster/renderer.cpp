@@ -153,7 +153,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   counters_.binCycles += cycleCount() - binStart;
 }
 
-// Every vertex of the buffer once per instance, into shaded_; instances in parallel.
+// Every vertex of the buffer once per instance, into shaded_: instances, and ranges of a
+// large buffer's vertices, in parallel (each vertex is shaded on its own, so the records
+// are the same however they are split).
 void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount) {
   ShadedVertices& shaded = shaded_;   // every record is written, so old contents never show
   shaded.varyingFloats = shader.varyingFloats();
@@ -163,8 +165,14 @@ void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& v
   // two scenes) would zero the whole buffer again, which every record overwrites anyway.
   if (shaded.data.size() < records * size_t(shaded.stride)) shaded.data.resize(records * size_t(shaded.stride));
   shaded.clipMask.resize(records);
-  pool_.parallelFor(instanceCount, [&](int instance) {
-    const VertexBatch batch{vertices, viewport_, instance, instance * vertices.vertexCount};
+  // Fewer instances than items to share out: split each instance's vertices too.
+  const int items = 4 * pool_.threads();
+  const int ranges = pool_.threads() > 1 && instanceCount < items ? std::clamp(vertices.vertexCount / kVertexRange, 1, items) : 1;
+  pool_.parallelFor(instanceCount * ranges, [&](int item) {
+    const int instance = item / ranges, range = item % ranges;
+    const VertexBatch batch{vertices, viewport_, instance, instance * vertices.vertexCount,
+                            int(int64_t(vertices.vertexCount) * range / ranges),
+                            int(int64_t(vertices.vertexCount) * (range + 1) / ranges)};
     shader.shadeVertices(batch, shaded, scalarOnly_);
   });
 }

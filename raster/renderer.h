@@ -72,6 +72,8 @@ class Renderer {
   };
   // Draws of fewer primitives than twice this are set up in one piece, and binned so.
   static constexpr size_t kSetupChunkPrimitives = 1024;
+  // Vertex buffers of fewer vertices than twice this are shaded in one piece per instance.
+  static constexpr int kVertexRange = 1024;
 
   bool visibilityFirst() const;
   void beginPassHistory();

@@ -20,8 +20,8 @@ class ShaderInstance {
   // Whether its fragment shader reads textures: the pipeline then shades lane groups two
   // at a time (tile/group_shader_avx2.h), so one group's texel loads overlap the other's.
   virtual bool samplesTextures() const = 0;
-  // Shades one instance's vertices into their records of `out`, with the plain-C++ lanes
-  // when `scalarLanes` (the same bits either way).
+  // Shades a batch of one instance's vertices into their records of `out`, with the
+  // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;
   // Shades one lane group; `varyings` holds varyingFloats() interpolated values.
   virtual void shadeFragments(const FragmentInput<FastLanes>& in, const FastLanes* varyings,

@@ -57,10 +57,11 @@ TEST_SUITE("determinism") {
   }
 
   // Draws of thousands of triangles (the hdr scene's instanced cubes, deferred's statue) are
-  // set up in chunks and binned in bands of tile rows in parallel when there are threads
-  // to share them (renderer.cpp, geometry/bin.h): the triangles must reach every tile in API order, with
-  // their own varyings, whatever the chunks.
-  TEST_CASE("large draws set up and binned in parallel give the bytes of one thread") {
+  // set up in chunks and binned in parts of the triangle list in parallel when there are
+  // threads to share them, and deferred's single-instance statue has its vertices shaded in
+  // ranges (renderer.cpp, geometry/bin.h): the triangles must reach every tile in API order,
+  // with their own varyings, whatever the chunks.
+  TEST_CASE("large draws shaded, set up and binned in parallel give the bytes of one thread") {
     for (const char* scene : {"hdr", "deferred"}) {
       auto one = scenes::makeRasterBackend(1);
       const auto reference = testing_support::renderScene(*one, scene, 0.9f, 333, 217);

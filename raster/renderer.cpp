@@ -209,8 +209,10 @@ void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> i
 // range order gives every tile its triangles in API order.
 void Renderer::bin(uint32_t firstTriangle) {
   const uint32_t end = uint32_t(triangles_.size()), count = end - firstTriangle;
-  const int parts = pool_.threads() > 1 && count >= kSetupChunkPrimitives ? pool_.threads() : 1;
-  if (parts == 1) {
+  // A part per thread, of at least half a setup chunk's triangles (each part's own bins
+  // cost a pass over every tile to empty and append).
+  const int parts = std::min(pool_.threads(), int(count / (kSetupChunkPrimitives / 2)));
+  if (parts <= 1) {
     counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, end);
     return;
   }

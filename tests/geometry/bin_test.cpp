@@ -6,11 +6,11 @@
 //
 // Triangles are given by pixel-centre vertices (window px + 0.5, fixed 256 px) and set up with
 // setupTriangle; tile (tx, ty) of an n-wide grid is tile index ty * n + tx.
-#include <span>
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 

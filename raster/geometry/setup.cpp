@@ -138,13 +138,14 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   // that are linear in screen space.
   const bool perspective = methods::active().interp == InterpMethod::Perspective;
   const float oow0 = perspective ? p0[3] : 1.0f, oow1 = perspective ? p1[3] : 1.0f, oow2 = perspective ? p2[3] : 1.0f;
+  // The list grows once per triangle (without zeroing), and the loop, free of push_back's
+  // capacity checks, is one the compiler vectorizes: the same operations in every lane.
   tri.varyingBase = uint32_t(out.varyingPlanes.size());
-  for (int v = 0; v < state.varyingFloats; ++v) {
-    const float a0 = vert[0][kVaryings + v] * oow0;
-    const float a1 = vert[1][kVaryings + v] * oow1;
-    const float a2 = vert[2][kVaryings + v] * oow2;
-    out.varyingPlanes.push_back(planeOf(s, a0, a1, a2));
-  }
+  out.varyingPlanes.resize(out.varyingPlanes.size() + size_t(state.varyingFloats));
+  Plane* planes = out.varyingPlanes.data() + tri.varyingBase;
+  const float *values0 = vert[0] + kVaryings, *values1 = vert[1] + kVaryings, *values2 = vert[2] + kVaryings;
+  for (int v = 0; v < state.varyingFloats; ++v)
+    planes[v] = planeOf(s, values0[v] * oow0, values1[v] * oow1, values2[v] * oow2);
   tri.drawIndex = state.drawIndex;
   tri.frontFacing = frontFacing;
   out.triangles.push_back(tri);

@@ -23,6 +23,16 @@ namespace vertex_stage {
 // bit 0: x > w, 1: x + w < 0, 2: y > w, 3: y + w < 0, 4: z + w < 0, 5: z > w.
 uint8_t clipMask(const float clip[4]);
 
+// clipMask for every lane at once: the same ordered compares of the same floats, each
+// plane's flag added as a power of two (exact in float).
+template <class F>
+F clipMaskLanes(const glsl::vec4<F>& clip) {
+  const F zero(0.0f);
+  auto flag = [&](auto outside, float bit) { return simd::select(outside, F(bit), zero); };
+  return flag(clip.x > clip.w, 1.0f) + flag(zero > clip.x + clip.w, 2.0f) + flag(clip.y > clip.w, 4.0f) +
+         flag(zero > clip.y + clip.w, 8.0f) + flag(zero > clip.z + clip.w, 16.0f) + flag(clip.z > clip.w, 32.0f);
+}
+
 // Shades `count` vertices of one instance, from vertex `first` of the batch on, into its
 // records (already sized): one lane group.
 template <class Program, class F>
@@ -63,10 +73,11 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexBa
   const glsl::vec4<F> window(simd::fma(position.x * oow, F(vp.scale[0]), F(vp.translate[0])),
                              simd::fma(position.y * oow, F(vp.scale[1]), F(vp.translate[1])),
                              simd::fma(position.z * oow, F(vp.scale[2]), F(vp.translate[2])), oow);
-  alignas(32) float pos[4][kLanes], win[4][kLanes];
+  alignas(32) float pos[4][kLanes], win[4][kLanes], clipFlags[kLanes];
   alignas(32) float vary[kVaryings > 0 ? kVaryings : 1][kLanes];
   glsl::storePlanes(position, pos);
   glsl::storePlanes(window, win);
+  clipMaskLanes(position).store(clipFlags);
   F flat[kVaryings > 0 ? kVaryings : 1];
   varyingsToArray<Program, F>(varyings, flat);
   for (int v = 0; v < kVaryings; ++v) flat[v].store(vary[v]);
@@ -77,7 +88,7 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexBa
     for (int c = 0; c < 4; ++c) rec[vertex_record::kClip + c] = pos[c][lane];
     for (int c = 0; c < 4; ++c) rec[vertex_record::kWindow + c] = win[c][lane];
     for (int v = 0; v < kVaryings; ++v) rec[vertex_record::kVaryings + v] = vary[v][lane];
-    out.clipMask[size_t(r)] = clipMask(rec + vertex_record::kClip);
+    out.clipMask[size_t(r)] = uint8_t(clipFlags[lane]);
   }
 }
 

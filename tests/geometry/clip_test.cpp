@@ -1,4 +1,4 @@
-// Clipping (geometry/clip.h, vertex_stage::clipMask) and primitive assembly
+// Clipping (geometry/clip.h, vertex_stage::clipMask and its lane form) and primitive assembly
 // (geometry/assemble.h) against hand-worked expectations: clip masks, trivial rejection,
 // triangles wholly inside, crossing the near plane, crossing two planes, with a vertex at
 // tiny positive or negative w, NaN / Inf positions, and the missing guard band (x and y are
@@ -16,6 +16,7 @@
 
 #include "raster/geometry/assemble.h"
 #include "raster/geometry/clip.h"
+#include "raster/geometry/vertex_stage.h"
 #include "tests/geometry/geometry_test_helpers.h"
 
 namespace {
@@ -55,9 +56,19 @@ Assembled assemble(const raster::ShadedVertices& shaded, const raster::ViewportT
 TEST_SUITE("geometry") {
   TEST_CASE("clip masks: one bit per plane, the boundary inside, NaN sets none") {
     using raster::vertex_stage::clipMask;
-    auto mask = [](float x, float y, float z, float w) {
+    // The vertex stage computes a lane group's masks at once (clipMaskLanes): every lane of
+    // both lane types must give clipMask's bits.
+    auto lanesAgree = []<class F>(F, float x, float y, float z, float w, int expected) {
+      alignas(64) float flags[F::kCount];
+      raster::vertex_stage::clipMaskLanes(raster::glsl::vec4<F>(F(x), F(y), F(z), F(w))).store(flags);
+      for (float flag : flags) CHECK(int(flag) == expected);
+    };
+    auto mask = [&](float x, float y, float z, float w) {
       const float c[4] = {x, y, z, w};
-      return int(clipMask(c));
+      const int bits = int(clipMask(c));
+      lanesAgree(raster::FastLanes(0.0f), x, y, z, w, bits);
+      lanesAgree(raster::ScalarLanes(0.0f), x, y, z, w, bits);
+      return bits;
     };
     CHECK(mask(2, 0, 0, 1) == 1);      // x > w
     CHECK(mask(-2, 0, 0, 1) == 2);     // x + w < 0

@@ -220,13 +220,19 @@ struct FragmentOutput {
 
 // A lane group that passed its depth test: everything its shader call and its output merge
 // need. Lanes outside laneMask are helpers (shaded so dFdx / dFdy see whole quads, never
-// written).
+// written). A group is prepared (its triangle, pixel centres and depth) and interpolated
+// (its inputs and varyings) in two steps, so that the in-order walk can leave the second to
+// the group shader, which interpolates two groups of one triangle in one operation
+// (tile/interpolate.h, group_shader_avx2.h).
 template <class F>
 struct FragmentGroup {
   const DrawRecord* draw = nullptr;
   unsigned laneMask = 0;     // lanes that passed: the ones whose outputs are written
   int outputs = 0;           // colour outputs both the shader and the framebuffer have
   size_t texel[F::kCount];   // each lane's pixel index in the attachments
+  const SetupTriangle* tri = nullptr;
+  F px, py, z;               // the lanes' pixel coordinates and window z, as the depth test saw it
+  bool interpolated = false;   // whether `in` and `varyings` hold the group's values yet
   FragmentInput<F> in;
   F varyings[limits::kMaxVaryingFloats];
 };

@@ -11,6 +11,7 @@
 #include "raster/contract.h"
 #include "raster/merge/color_write.h"
 #include "raster/shader/shader_instance.h"
+#include "raster/tile/interpolate.h"
 #include "raster/util/cycles.h"
 
 namespace raster {
@@ -29,14 +30,18 @@ void shadeGroup(const TileJob& job, const FragmentGroup<F>& group, PipelineCount
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
 
-// Shades a tile's ready groups in order: next() is where the caller prepares a group,
-// push() hands it over, flush() finishes any group still waiting.
+// Shades a tile's ready groups in order: next() is where the caller prepares a group
+// (prepareGroup, tile/interpolate.h), push() hands it over to be interpolated and shaded,
+// flush() finishes any group still waiting.
 template <class F>
 class GroupShader {
  public:
   GroupShader(const TileJob& job, PipelineCounters& counters) : job_(job), counters_(counters) {}
   FragmentGroup<F>& next() { return slot_; }
-  void push() { shadeGroup(job_, slot_, counters_); }
+  void push() {
+    interpolateGroup(job_, slot_);
+    shadeGroup(job_, slot_, counters_);
+  }
   void flush() {}
 
  private:

@@ -23,24 +23,39 @@ inline bool shadedInPairs(const DrawRecord& draw) {
 // one's depth write, and a's colours are written before b's, so the framebuffer ends the
 // same as shading each alone.
 inline bool canPair(const FragmentGroup<simd::Float8>& a, const FragmentGroup<simd::Float8>& b) {
-  return a.draw == b.draw && a.in.gl_FrontFacing == b.in.gl_FrontFacing;
+  return a.draw == b.draw && a.tri->frontFacing == b.tri->frontFacing;
+}
+
+// Interpolates two groups for one Float8x2 call. Two prepared groups of one triangle are
+// interpolated together, one operation for both (the same per lane as two); otherwise each
+// alone (if not done yet), joined.
+inline void interpolatePair(const TileJob& job, FragmentGroup<simd::Float8>& a, FragmentGroup<simd::Float8>& b,
+                            FragmentInput<simd::Float8x2>& in, simd::Float8x2* varyings) {
+  using simd::Float8x2;
+  if (a.tri == b.tri && !a.interpolated && !b.interpolated) {
+    interpolateFragment(job, *a.tri, Float8x2(a.px, b.px), Float8x2(a.py, b.py), Float8x2(a.z, b.z), in, varyings);
+    return;
+  }
+  interpolateGroup(job, a);
+  interpolateGroup(job, b);
+  const glsl::vec4<simd::Float8>& ca = a.in.gl_FragCoord;
+  const glsl::vec4<simd::Float8>& cb = b.in.gl_FragCoord;
+  in.gl_FragCoord = {{ca.x, cb.x}, {ca.y, cb.y}, {ca.z, cb.z}, {ca.w, cb.w}};
+  in.gl_FrontFacing = a.in.gl_FrontFacing;
+  const int varyingCount = a.draw->varyingFloats;
+  for (int v = 0; v < varyingCount; ++v) varyings[v] = {a.varyings[v], b.varyings[v]};
 }
 
 // Shades two ready groups in one Float8x2 call, then writes a's outputs and b's. Kept out
 // of line, as the tile loop's callees were before the stage split: inlined into the walk it
 // cost the shadow scene's main pass a few percent.
-[[gnu::noinline]] inline void shadeGroupPair(const TileJob& job, const FragmentGroup<simd::Float8>& a, const FragmentGroup<simd::Float8>& b,
+[[gnu::noinline]] inline void shadeGroupPair(const TileJob& job, FragmentGroup<simd::Float8>& a, FragmentGroup<simd::Float8>& b,
                            PipelineCounters& counters) {
   using simd::Float8x2;
-  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentInput<Float8x2> in;
-  const glsl::vec4<simd::Float8>& ca = a.in.gl_FragCoord;
-  const glsl::vec4<simd::Float8>& cb = b.in.gl_FragCoord;
-  in.gl_FragCoord = {{ca.x, cb.x}, {ca.y, cb.y}, {ca.z, cb.z}, {ca.w, cb.w}};
-  in.gl_FrontFacing = a.in.gl_FrontFacing;
   Float8x2 varyings[limits::kMaxVaryingFloats];
-  const int varyingCount = a.draw->varyingFloats;
-  for (int v = 0; v < varyingCount; ++v) varyings[v] = {a.varyings[v], b.varyings[v]};
+  interpolatePair(job, a, b, in, varyings);   // counted as rasterization, as in the walk
+  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<Float8x2> out;
   a.draw->shader->shadeFragments(in, varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
@@ -58,11 +73,11 @@ inline bool canPair(const FragmentGroup<simd::Float8>& a, const FragmentGroup<si
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
 
-// GroupShader for Float8 groups: a group of a paired draw waits in its slot until the next
-// ready group joins it, or until one that cannot join (another draw or facing) or the end
-// of the tile sends it alone. Each group passed its depth test before it became ready, and
-// colours are written in the order the groups became ready, so the framebuffer ends as if
-// each were shaded alone.
+// GroupShader for Float8 groups: a group of a paired draw waits in its slot (perhaps not yet
+// interpolated) until the next ready group joins it, or until one that cannot join (another
+// draw or facing) or the end of the tile sends it alone. Each group passed its depth test
+// before it became ready, and colours are written in the order the groups became ready, so
+// the framebuffer ends as if each were shaded alone.
 template <>
 class GroupShader<simd::Float8> {
  public:
@@ -83,11 +98,15 @@ class GroupShader<simd::Float8> {
       return;
     }
     flush();
+    interpolateGroup(job_, ready);
     shadeGroup(job_, ready, counters_);
   }
   // Shades the waiting group alone.
   void flush() {
-    if (waiting_ >= 0) shadeGroup(job_, slots_[waiting_], counters_);
+    if (waiting_ >= 0) {
+      interpolateGroup(job_, slots_[waiting_]);
+      shadeGroup(job_, slots_[waiting_], counters_);
+    }
     waiting_ = -1;
   }
 

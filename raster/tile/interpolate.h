@@ -56,22 +56,40 @@ template <class F>
   in.gl_FrontFacing = tri.frontFacing;
 }
 
-// Makes `group` ready to shade: the lane group `at` whose covered lanes passed their depth
-// test (z as the test computed it): pixel indices, perspective-correct varyings (helper
-// lanes too, so dFdx / dFdy see whole quads) and gl_FragCoord.
+// Prepares `group` for the lane group `at` whose covered lanes passed their depth test (z as
+// the test computed it): its pixel indices, triangle, pixel centres and depth.
 template <class F>
-[[gnu::always_inline]] inline void fillGroup(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout,
-                                             GroupAt at, F z, FragmentGroup<F>& group) {
+[[gnu::always_inline]] inline void prepareGroup(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout,
+                                                GroupAt at, F z, FragmentGroup<F>& group) {
   const Framebuffer& fb = *job.framebuffer;
   const DrawRecord& draw = job.draws[tri.drawIndex];
-  const F px = F(float(at.x)) + layout.dxLanes;
-  const F py = F(float(at.y)) + layout.dyLanes;
   const size_t origin = size_t(at.y) * size_t(fb.width) + size_t(at.x);
   for (int i = 0; i < F::kCount; ++i) group.texel[i] = origin + layout.texel[i];
   group.outputs = colorOutputsWritten(draw, fb);
   group.draw = &draw;
   group.laneMask = at.laneMask;
-  interpolateFragment(job, tri, px, py, z, group.in, group.varyings);
+  group.tri = &tri;
+  group.px = F(float(at.x)) + layout.dxLanes;
+  group.py = F(float(at.y)) + layout.dyLanes;
+  group.z = z;
+  group.interpolated = false;
+}
+
+// Makes a prepared group ready to shade: perspective-correct varyings (helper lanes too, so
+// dFdx / dFdy see whole quads) and gl_FragCoord.
+template <class F>
+[[gnu::always_inline]] inline void interpolateGroup(const TileJob& job, FragmentGroup<F>& group) {
+  if (group.interpolated) return;
+  interpolateFragment(job, *group.tri, group.px, group.py, group.z, group.in, group.varyings);
+  group.interpolated = true;
+}
+
+// prepareGroup, then interpolateGroup: for the walks that shade each group at once.
+template <class F>
+[[gnu::always_inline]] inline void fillGroup(const TileJob& job, const SetupTriangle& tri, const LaneLayout<F>& layout,
+                                             GroupAt at, F z, FragmentGroup<F>& group) {
+  prepareGroup(job, tri, layout, at, z, group);
+  interpolateGroup(job, group);
 }
 
 }  // namespace raster

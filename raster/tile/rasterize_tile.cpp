@@ -33,9 +33,10 @@ void rasterizeTile(const TileJob& job, const TileBounds& tile, std::span<const u
     if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
       rasterizeVisibleFirst<F>(job, tile, bin, layout, counters, shader);
     } else {   // in order: each group is shaded as soon as it passes its depth test
+      // Prepared only: a pair of the same triangle's groups is interpolated together.
       depthTestBin<F>(job, tile, bin, layout, [&](uint32_t, const SetupTriangle& tri, GroupAt passed, F z) __attribute__((always_inline)) {
         counters.lanesCovered += unsigned(__builtin_popcount(passed.laneMask));
-        fillGroup(job, tri, layout, passed, z, shader.next());
+        prepareGroup(job, tri, layout, passed, z, shader.next());
         shader.push();
       });
     }

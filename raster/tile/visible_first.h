@@ -125,6 +125,8 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
     const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
     counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+    // Interpolated at once: here a pair's groups are mostly of different triangles, and
+    // leaving it to the pair had made the hdr scene pass 8% slower.
     fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
     shader.push();
   });

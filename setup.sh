@@ -27,5 +27,29 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build -j"$(nproc)"
+# With GCC the build is profile-guided (CMakeLists.txt, RASTER_PGO_*): an instrumented
+# build renders each scene once at two sizes, and the release build is compiled by those
+# counts. The profile is made again only when a source it was made from has changed.
+pgo=() clean=()
+if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
+  profile="$PWD/build-pgo/profile"
+  sources=$(find raster scenes shaders_cpp apps cmake CMakeLists.txt -type f | LC_ALL=C sort | xargs sha256sum | sha256sum)
+  if [ "$(cat "$profile.sources" 2>/dev/null)" != "$sources" ]; then
+    echo "setup: profiling an instrumented build (build-pgo/) for the optimized one"
+    cmake -S . -B build-pgo/instrumented -DCMAKE_BUILD_TYPE=Release -DRASTER_PGO_GENERATE="$profile" > /dev/null
+    cmake --build build-pgo/instrumented -j"$(nproc)" --target raster_cli
+    rm -rf "$profile" build-pgo/train && mkdir -p build-pgo/train
+    for scene in shadow deferred hdr; do
+      for size in 640x480 1920x1080; do
+        build-pgo/instrumented/raster render "$scene" --size "$size" --threads 2 --quiet --out "build-pgo/train/$scene-$size.png"
+      done
+    done
+    clean=(--clean-first)   # every object again, compiled by the new counts
+  fi
+  pgo=(-DRASTER_PGO_USE="$profile")
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${pgo[@]}" > /dev/null
+cmake --build build -j"$(nproc)" "${clean[@]}"
+# Marked current only once the build made from it is whole: an interrupted run starts over.
+if [ ${#clean[@]} -gt 0 ]; then echo "$sources" > "$profile.sources"; fi

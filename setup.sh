@@ -28,12 +28,12 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # With GCC the build is profile-guided (CMakeLists.txt, RASTER_PGO_*): an instrumented
-# build renders each scene once at two sizes, and the release build is compiled by those
-# counts. The profile is made again only when a source it was made from has changed.
+# build renders each scene at two sizes and two times, and the release build is compiled
+# by those counts. The profile is made again only when a source it was made from has changed.
 pgo=() clean=()
 if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
   profile="$PWD/build-pgo/profile"
-  sources=$(find raster scenes shaders_cpp apps cmake CMakeLists.txt -type f | LC_ALL=C sort | xargs sha256sum | sha256sum)
+  sources=$(find raster scenes shaders_cpp apps cmake CMakeLists.txt setup.sh -type f | LC_ALL=C sort | xargs sha256sum | sha256sum)
   if [ "$(cat "$profile.sources" 2>/dev/null)" != "$sources" ]; then
     echo "setup: profiling an instrumented build (build-pgo/) for the optimized one"
     cmake -S . -B build-pgo/instrumented -DCMAKE_BUILD_TYPE=Release -DRASTER_PGO_GENERATE="$profile" > /dev/null
@@ -41,7 +41,10 @@ if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
     rm -rf "$profile" build-pgo/train && mkdir -p build-pgo/train
     for scene in shadow deferred hdr; do
       for size in 640x480 1920x1080; do
-        build-pgo/instrumented/raster render "$scene" --size "$size" --threads 2 --quiet --out "build-pgo/train/$scene-$size.png"
+        for time in 1 7.3; do
+          build-pgo/instrumented/raster render "$scene" --size "$size" --time "$time" --threads 2 --quiet \
+            --out "build-pgo/train/$scene-$size-$time.png" > /dev/null
+        done
       done
     done
     clean=(--clean-first)   # every object again, compiled by the new counts

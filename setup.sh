@@ -30,7 +30,7 @@ fi
 # With GCC the build is profile-guided (CMakeLists.txt, RASTER_PGO_*): an instrumented
 # build renders each scene at two sizes and two times, and the release build is compiled
 # by those counts. The profile is made again only when a source it was made from has changed.
-pgo=() clean=()
+pgo=() renewed=0
 if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
   profile="$PWD/build-pgo/profile"
   sources=$(find raster scenes shaders_cpp apps cmake CMakeLists.txt setup.sh -type f | LC_ALL=C sort | xargs sha256sum | sha256sum)
@@ -47,12 +47,15 @@ if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
         done
       done
     done
-    clean=(--clean-first)   # every object again, compiled by the new counts
+    # The objects that take the profile are compiled again, by the new counts.
+    find build/CMakeFiles/raster.dir build/CMakeFiles/scenes.dir build/CMakeFiles/raster_cli.dir \
+      -name '*.o' -delete 2>/dev/null || true
+    renewed=1
   fi
   pgo=(-DRASTER_PGO_USE="$profile")
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${pgo[@]}" > /dev/null
-cmake --build build -j"$(nproc)" "${clean[@]}"
+cmake --build build -j"$(nproc)"
 # Marked current only once the build made from it is whole: an interrupted run starts over.
-if [ ${#clean[@]} -gt 0 ]; then echo "$sources" > "$profile.sources"; fi
+if [ "$renewed" = 1 ]; then echo "$sources" > "$profile.sources"; fi

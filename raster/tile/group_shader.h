@@ -16,9 +16,11 @@
 
 namespace raster {
 
-// Shades one ready group and writes its colour outputs.
+// Shades one ready group and writes its colour outputs; a group the walk only prepared is
+// interpolated first (counted as rasterization, as in the walk).
 template <class F>
-void shadeGroup(const TileJob& job, const FragmentGroup<F>& group, PipelineCounters& counters) {
+void shadeGroup(const TileJob& job, FragmentGroup<F>& group, PipelineCounters& counters) {
+  interpolateGroup(job, group);
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<F> out;
   group.draw->shader->shadeFragments(group.in, group.varyings, out);
@@ -38,10 +40,7 @@ class GroupShader {
  public:
   GroupShader(const TileJob& job, PipelineCounters& counters) : job_(job), counters_(counters) {}
   FragmentGroup<F>& next() { return slot_; }
-  void push() {
-    interpolateGroup(job_, slot_);
-    shadeGroup(job_, slot_, counters_);
-  }
+  void push() { shadeGroup(job_, slot_, counters_); }
   void flush() {}
 
  private:

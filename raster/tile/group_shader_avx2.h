@@ -98,15 +98,11 @@ class GroupShader<simd::Float8> {
       return;
     }
     flush();
-    interpolateGroup(job_, ready);
     shadeGroup(job_, ready, counters_);
   }
   // Shades the waiting group alone.
   void flush() {
-    if (waiting_ >= 0) {
-      interpolateGroup(job_, slots_[waiting_]);
-      shadeGroup(job_, slots_[waiting_], counters_);
-    }
+    if (waiting_ >= 0) shadeGroup(job_, slots_[waiting_], counters_);
     waiting_ = -1;
   }
 

@@ -201,18 +201,12 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
                    simd::Float8x2* taps) {
   constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
   LinearTaps16 x[count], y[count];
-  __mmask16 apart = 0xFFFF;
   for (int k = 0; k < count; ++k) {
     const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
     x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
     y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
   }
-  for (int k = 0; k < count; ++k)   // tapsAreConsecutive
-    for (const LinearTaps16* axis : {x, y}) {
-      apart &= _mm512_cmpeq_epi32_mask(axis[k].i0, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k)));
-      apart &= _mm512_cmpeq_epi32_mask(axis[k].i1, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k + 1)));
-    }
-  if (apart != 0xFFFF) return false;
+  if (!tapsAreConsecutive16(x, y, count)) return false;
 
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
   const __m512 ref = _mm512_min_ps(_mm512_max_ps(ref16.v, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));   // clampRef

@@ -1,6 +1,7 @@
 // Lookups of RGBA16F textures for Float8x2 lanes held in one 512-bit register, sixteen lanes
-// at a time: NEAREST (the G-buffer reads of SSAO and lighting) and bilinear with
-// CLAMP_TO_EDGE (the hdr composite and bright pass). Inline, so that a port's lookup costs
+// at a time: NEAREST (the G-buffer reads of SSAO and lighting), bilinear with
+// CLAMP_TO_EDGE (the hdr composite and bright pass) and the 3x3 grid of such lookups (the
+// bloom downsample and upsample). Inline, so that a port's lookup costs
 // no call and the shader's compiler drops the channels it never reads (SSAO uses xyz); with
 // the lookups of sample_color_avx2.cpp the SSAO pass took 13% longer. The wraps, blends and
 // the F16C conversion are the 8-lane sampler's (sample_color_avx2.cpp) on 16 lanes at once,
@@ -112,6 +113,18 @@ struct LinearTaps16 {
   return taps;
 }
 
+// tapsAreConsecutive (linear_taps_avx2.h) on 16 lanes: true when, in every lane and along
+// both axes, tap k of a grid spans texels first + k and first + k + 1.
+[[gnu::always_inline]] inline bool tapsAreConsecutive16(const LinearTaps16* x, const LinearTaps16* y, int count) {
+  __mmask16 apart = 0xFFFF;
+  for (int k = 0; k < count; ++k)
+    for (const LinearTaps16* axis : {x, y}) {
+      apart &= _mm512_cmpeq_epi32_mask(axis[k].i0, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k)));
+      apart &= _mm512_cmpeq_epi32_mask(axis[k].i1, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k + 1)));
+    }
+  return apart == 0xFFFF;
+}
+
 // Bilinear RGBA16F for two groups at once, blended before the transpose, as the 8-lane
 // sampleHalfClampBlendFirst (sample_color_avx2.cpp) does per group: each lane loads its row's
 // texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
@@ -176,6 +189,72 @@ inline bool isHalfBilinearClamp(const Texture& t) {
     return true;
   }
   return blendHalfPairs16(t, x, y, out);
+}
+
+// textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's taps are one
+// texel apart along both axes (tap k spans window texels k and k + 1 of the lane's 4x4
+// window, so the window lies inside the texture): each window row read with one 32-byte load
+// per lane, its texels lined up lane by lane as blendHalfPairs16 lines up a pair (lanes k,
+// k + 4, k + 8 and k + 12 in one register), and blended in the same order, rows then
+// columns, as sampleHalfGridShared does per 8 lanes. Inline, so the shader's compiler drops
+// the taps a port never reads (the downsample reads five of nine). False, with nothing
+// written, when some lane's taps are not one texel apart (an edge, a step other than one
+// texel, a NaN); sampleColorGrid8 takes those.
+[[gnu::always_inline]] inline bool blendHalfGrid16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
+                                                   simd::Float8x2 (&taps)[9][4]) {
+  LinearTaps16 x[3], y[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(float(k - 1) * stepS)), t.width);
+    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(tc, _mm512_set1_ps(float(k - 1) * stepT)), t.height);
+  }
+  if (!tapsAreConsecutive16(x, y, 3)) return false;
+  const uint16_t* texels = t.half.data();
+  alignas(64) int start[16];   // each lane's top-left window texel
+  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(t.width)), x[0].i0));
+  asm volatile("" : "+m"(start));   // read back as scalars (blendHalfPairs16 says why)
+  __m512 blended[9][4];   // [tap][k]: lanes k | k + 4 | k + 8 | k + 12, rgba each
+  for (int k = 0; k < 4; ++k) {
+    const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,
+                                            k + 12, k + 12, k + 12);
+    __m512 above[3];   // the previous window row's blends, one per tap column
+    for (int r = 0; r < 4; ++r) {
+      const size_t rowOffset = size_t(r) * size_t(t.width);
+      auto row = [&](int lane) {   // [texel 0 | 1 | 2 | 3] of the lane's window row r
+        return _mm512_cvtph_ps(
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + (size_t(start[lane]) + rowOffset) * 4)));
+      };
+      const __m512 a = row(k), b = row(k + 4), c = row(k + 8), d = row(k + 12);
+      // Lane blocks [a | b | c | d] of texel v, from each lane's [0 | 1 | 2 | 3]: a 4x4
+      // transpose of 128-bit blocks.
+      const __m512 abLow = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(1, 0, 1, 0));    // a0 a1 b0 b1
+      const __m512 abHigh = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(3, 2, 3, 2));   // a2 a3 b2 b3
+      const __m512 cdLow = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(1, 0, 1, 0));
+      const __m512 cdHigh = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(3, 2, 3, 2));
+      const __m512 texel[4] = {_mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(2, 0, 2, 0)),
+                               _mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(3, 1, 3, 1)),
+                               _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(2, 0, 2, 0)),
+                               _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(3, 1, 3, 1))};
+      for (int i = 0; i < 3; ++i) {
+        const __m512 weightX = _mm512_permutexvar_ps(lanes, x[i].weight);
+        const __m512 blend = _mm512_fmadd_ps(weightX, _mm512_sub_ps(texel[i + 1], texel[i]), texel[i]);
+        if (r > 0) {
+          const __m512 weightY = _mm512_permutexvar_ps(lanes, y[r - 1].weight);
+          blended[(r - 1) * 3 + i][k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(blend, above[i]), above[i]);
+        }
+        above[i] = blend;
+      }
+    }
+  }
+  for (int tap = 0; tap < 9; ++tap) {   // blendHalfPairs16's transpose, per tap
+    const __m512* v = blended[tap];
+    const __m512 t0 = _mm512_unpacklo_ps(v[0], v[1]), t1 = _mm512_unpackhi_ps(v[0], v[1]);
+    const __m512 t2 = _mm512_unpacklo_ps(v[2], v[3]), t3 = _mm512_unpackhi_ps(v[2], v[3]);
+    taps[tap][0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
+    taps[tap][1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
+    taps[tap][2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
+    taps[tap][3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
+  }
+  return true;
 }
 
 }  // namespace raster::sampling

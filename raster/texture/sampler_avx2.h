@@ -154,6 +154,15 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
 
 [[gnu::always_inline]] inline void lookupColorGrid3x3(const Texture& texture, glsl::vec2<simd::Float8x2> uv,
                                                       glm::vec2 step, glsl::vec4<simd::Float8x2> (&taps)[3][3]) {
+#if RASTER_ZMM_PAIRS
+  if (isHalfBilinearClamp(texture)) {
+    simd::Float8x2 planes[9][4];
+    if (blendHalfGrid16(texture, uv.x.v, uv.y.v, step.x, step.y, planes)) {
+      for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
+      return;
+    }
+  }
+#endif
   simd::Float8 lo[9][4], hi[9][4];
   sampleColorGrid8(texture, uv.x.low(), uv.y.low(), step.x, step.y, lo);
   sampleColorGrid8(texture, uv.x.high(), uv.y.high(), step.x, step.y, hi);

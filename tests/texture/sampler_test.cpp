@@ -331,9 +331,14 @@ TEST_SUITE("texture") {
   }
 #endif
 #if RASTER_AVX2
-  TEST_CASE("3x3 lookup grids: every tap equals its lone scalar lookup, shared texels or not") {
+  // Every tap of textureGrid3x3 for `Lanes` (Float8, or Float8x2 with its 16-lane path)
+  // against its lone scalar lookup; returns {taps, channel mismatches, grids that took the
+  // 16-lane shared path}.
+  template <class Lanes>
+  std::tuple<long, long, long> gridTapsAgainstScalar() {
+    constexpr int kLanes = int(sizeof(Lanes) / sizeof(float));
     std::mt19937 rng(78);
-    long mismatches = 0, taps = 0;
+    long mismatches = 0, taps = 0, shared16 = 0;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{4, 4}, std::pair{2, 1}}) {
         raster::Texture tex = randomTexture(rng, w, h, format);
@@ -345,39 +350,69 @@ TEST_SUITE("texture") {
         for (raster::Wrap wrap : {raster::Wrap::ClampToEdge, raster::Wrap::Repeat}) {
           tex.sampler = {raster::Filter::Linear, wrap, wrap, false};
           for (int round = 0; round < 300; ++round) {
-            alignas(32) float s8[8], t8[8];
-            for (int i = 0; i < 8; ++i) {
-              // Pixel centres of a target twice the size (as the bloom upsample reads), or anywhere.
-              const bool centre = (round + i) % 3 != 0;
-              s8[i] = centre ? (float(rng() % unsigned(2 * w)) + 0.5f) / float(2 * w) : uniform(rng, -0.2f, 1.2f);
-              t8[i] = centre ? (float(rng() % unsigned(2 * h)) + 0.5f) / float(2 * h) : uniform(rng, -0.2f, 1.2f);
+            alignas(64) float s16[kLanes], t16[kLanes];
+            // Pixel centres of a target twice the size (as the bloom upsample reads) or half
+            // (the downsample), or anywhere; in most rounds every lane, so that the vector
+            // forms' shared paths (which need all lanes one texel apart) are taken.
+            const int scale = round % 4 == 3 ? 1 : 2;
+            for (int i = 0; i < kLanes; ++i) {
+              const bool centre = round % 5 != 4 || i % 3 != 0;
+              const int cols = round % 2 ? scale * w : std::max(w / scale, 1);
+              const int rows = round % 2 ? scale * h : std::max(h / scale, 1);
+              s16[i] = centre ? (float(rng() % unsigned(cols)) + 0.5f) / float(cols) : uniform(rng, -0.2f, 1.2f);
+              t16[i] = centre ? (float(rng() % unsigned(rows)) + 0.5f) / float(rows) : uniform(rng, -0.2f, 1.2f);
             }
-            // One texel (the upsample's step), a step that is not one texel, and none.
+            // One texel (the bloom passes' step), a step that is not one texel, and none.
             const glm::vec2 steps[3] = {{1.0f / float(w), 1.0f / float(h)}, {0.37f / float(w), 1.9f / float(h)}, {0.0f, 0.0f}};
             const glm::vec2 step = steps[round % 3];
             raster::Sampler2D sampler;
             sampler.texture = &tex;
-            raster::glsl::vec4<raster::simd::Float8> grid[3][3];
-            raster::textureGrid3x3(sampler, raster::glsl::vec2<raster::simd::Float8>(raster::simd::Float8::load(s8),
-                                                                                     raster::simd::Float8::load(t8)),
-                                   step, grid);
+            raster::glsl::vec4<Lanes> grid[3][3];
+            raster::textureGrid3x3(sampler, raster::glsl::vec2<Lanes>(Lanes::load(s16), Lanes::load(t16)), step, grid);
+#if RASTER_ZMM_PAIRS
+            if constexpr (kLanes == 16) {
+              raster::simd::Float8x2 planes[9][4];
+              const __m512 s = Lanes::load(s16).v, t = Lanes::load(t16).v;
+              shared16 += raster::sampling::isHalfBilinearClamp(tex) &&
+                          raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
+            }
+#endif
             for (int j = 0; j < 3; ++j)
-              for (int k = 0; k < 3; ++k)
-                for (int i = 0; i < 8; ++i) {
+              for (int k = 0; k < 3; ++k) {
+                alignas(64) float got[4][kLanes];
+                grid[j][k].x.store(got[0]), grid[j][k].y.store(got[1]);
+                grid[j][k].z.store(got[2]), grid[j][k].w.store(got[3]);
+                for (int i = 0; i < kLanes; ++i) {
                   float ref[4];
-                  raster::sampling::sampleColor(tex, s8[i] + float(k - 1) * step.x, t8[i] + float(j - 1) * step.y, ref);
-                  const float got[4] = {grid[j][k].x[i], grid[j][k].y[i], grid[j][k].z[i], grid[j][k].w[i]};
-                  for (int c = 0; c < 4; ++c) mismatches += bitsOf(got[c]) != bitsOf(ref[c]);
+                  const float s = s16[i] + float(k - 1) * step.x, t = t16[i] + float(j - 1) * step.y;
+                  raster::sampling::sampleColor(tex, s, t, ref);
+                  for (int c = 0; c < 4; ++c) mismatches += bitsOf(got[c][i]) != bitsOf(ref[c]);
                   ++taps;
                 }
+              }
           }
         }
       }
     }
+    return {taps, mismatches, shared16};
+  }
+
+  TEST_CASE("3x3 lookup grids: every tap equals its lone scalar lookup, shared texels or not") {
+    const auto [taps, mismatches, shared16] = gridTapsAgainstScalar<raster::simd::Float8>();
     MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches");
     CHECK(taps == 2 * 4 * 2 * 300 * 9 * 8);
     CHECK(mismatches == 0);
   }
+#if RASTER_ZMM_PAIRS
+  TEST_CASE("3x3 lookup grids on 16 lanes (Float8x2): every tap equals its lone scalar lookup") {
+    const auto [taps, mismatches, shared16] = gridTapsAgainstScalar<raster::simd::Float8x2>();
+    MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches, " << shared16
+                 << " grids on the 16-lane path");
+    CHECK(taps == 2 * 4 * 2 * 300 * 9 * 16);
+    CHECK(shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
+    CHECK(mismatches == 0);
+  }
+#endif
 #endif
 
   TEST_CASE("filter=float: RGBA8 bilinear within float rounding of the exact bilinear, and within 2/255 of llvmpipe's 8-bit lerps") {

@@ -152,6 +152,18 @@ inline constexpr int kPrefetchTexelsAhead = 128;
     }
 }
 
+// Four registers of rgba per lane, v[k] holding lanes k | k + 4 | k + 8 | k + 12 (one lane
+// per 128-bit block), as Float8x2 planes r, g, b, a: a 4x4 transpose in each block, after
+// which block b holds lanes 4b..4b + 3.
+[[gnu::always_inline]] inline void lanesToPlanes(const __m512 (&v)[4], simd::Float8x2 out[4]) {
+  const __m512 t0 = _mm512_unpacklo_ps(v[0], v[1]), t1 = _mm512_unpackhi_ps(v[0], v[1]);
+  const __m512 t2 = _mm512_unpacklo_ps(v[2], v[3]), t3 = _mm512_unpackhi_ps(v[2], v[3]);
+  out[0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
+  out[1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
+  out[2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
+  out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
+}
+
 // Bilinear RGBA16F for two groups at once, blended before the transpose, as the 8-lane
 // sampleHalfClampBlendFirst (sample_color_avx2.cpp) does per group: each lane loads its row's
 // texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
@@ -190,13 +202,7 @@ inline constexpr int kPrefetchTexelsAhead = 128;
     }
     blended[k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(row[1], row[0]), row[0]);
   }
-  // A 4x4 transpose in each 128-bit block: block b holds lanes 4b..4b + 3.
-  const __m512 t0 = _mm512_unpacklo_ps(blended[0], blended[1]), t1 = _mm512_unpackhi_ps(blended[0], blended[1]);
-  const __m512 t2 = _mm512_unpacklo_ps(blended[2], blended[3]), t3 = _mm512_unpackhi_ps(blended[2], blended[3]);
-  out[0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
-  out[1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
-  out[2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
-  out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
+  lanesToPlanes(blended, out);
   return true;
 }
 
@@ -274,15 +280,7 @@ inline bool isHalfBilinearClamp(const Texture& t) {
       }
     }
   }
-  for (int tap = 0; tap < 9; ++tap) {   // blendHalfPairs16's transpose, per tap
-    const __m512* v = blended[tap];
-    const __m512 t0 = _mm512_unpacklo_ps(v[0], v[1]), t1 = _mm512_unpackhi_ps(v[0], v[1]);
-    const __m512 t2 = _mm512_unpacklo_ps(v[2], v[3]), t3 = _mm512_unpackhi_ps(v[2], v[3]);
-    taps[tap][0] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0x44));
-    taps[tap][1] = simd::Float8x2(_mm512_shuffle_ps(t0, t2, 0xEE));
-    taps[tap][2] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0x44));
-    taps[tap][3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
-  }
+  for (int tap = 0; tap < 9; ++tap) lanesToPlanes(blended[tap], taps[tap]);
   return true;
 }
 

@@ -52,6 +52,7 @@ inline bool shadeCoveredTile(const TileJob& job, const TileBounds& tile, std::sp
       }
       for (int k = 0; k < outputs; ++k) {
         Texture& target = *fb.colors[k];
+        merge::prefetchBlockRowsForWrite(target, origin, size_t(fb.width), kBlock);
         const glsl::vec4<Float8x2>& c = out.color[k];
         if (!additive && target.format == TexelFormat::RGBA8) {
           merge::writeRgba8RowsPair(c, target.rgba8.data(), upper, lower);

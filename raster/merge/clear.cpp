@@ -7,15 +7,11 @@
 
 #include "raster/limits.h"
 #include "raster/merge/clear_avx2.h"
+#include "raster/simd/prefetch.h"
 #include "raster/texture/format.h"
 
 namespace raster::merge {
 namespace {
-
-// How many rows ahead of its stores a plain clear prefetches (clear_avx2.h): 2 took the
-// shadow-map pass from 0.84 to 0.77-0.80 ms and shadow at 1920x1080 from 2.05-2.10x to
-// 2.17-2.23x llvmpipe (2 threads); 4 gained no more.
-constexpr int kPrefetchRowsAhead = 2;
 
 // Every row of the rectangle stored from 32 bytes of repeated texels: a texel is 4, 8 or
 // 16 bytes, so the pattern lines up at any texel. (Copying a first row into the others cost
@@ -27,9 +23,9 @@ void fillRows(T* data, size_t width, const TileBounds& rect, const T* texel, siz
   for (size_t i = 0; i < sizeof pattern; i += texelBytes) std::memcpy(pattern + i, texel, texelBytes);
   const size_t rowBytes = size_t(rect.x1 + 1 - rect.x0) * texelBytes;
   for (int y = rect.y0; y <= rect.y1; ++y) {
-    const int ahead = y + kPrefetchRowsAhead;
+    const int ahead = y + simd::kPrefetchRowsAhead;
     if (!streaming && ahead <= rect.y1)
-      prefetchRowForWrite(reinterpret_cast<unsigned char*>(data + (size_t(ahead) * width + size_t(rect.x0)) * perTexel), rowBytes);
+      simd::prefetchLinesForWrite(data + (size_t(ahead) * width + size_t(rect.x0)) * perTexel, rowBytes);
     storeRow(reinterpret_cast<unsigned char*>(data + (size_t(y) * width + size_t(rect.x0)) * perTexel), pattern, rowBytes,
              streaming);
   }

@@ -30,17 +30,6 @@ inline void storeRow(unsigned char* row, const unsigned char (&pattern)[32], siz
   std::memcpy(row + i, pattern, bytes - i);
 }
 
-// Prefetches the lines of a row that plain stores will write soon. A tile's rows are short
-// runs (64 texels) a whole target row apart, so the hardware prefetchers do not fetch the
-// next rows' lines and each plain store waits on its line's read for ownership; prefetched
-// a few rows ahead, those reads overlap the stores of the rows before. `asm volatile` because GCC 12
-// has deleted prefetch builtins after inlining (color_write_avx2.h).
-inline void prefetchRowForWrite(const unsigned char* row, size_t bytes) {
-#if RASTER_AVX2
-  for (size_t i = 0; i < bytes; i += 64) asm volatile("prefetcht0 %0" : : "m"(row[i]));
-#endif
-}
-
 // Orders the streaming stores before anything the thread does next (its next tile, the
 // pass's end).
 inline void endStreaming() {

@@ -10,6 +10,7 @@
 
 #include "raster/merge/color_write.h"
 #include "raster/simd/intrinsics.h"
+#include "raster/simd/prefetch.h"
 
 namespace raster::merge {
 
@@ -148,16 +149,13 @@ inline constexpr size_t kWritePrefetchTexelsAhead = 128;
 
 // Those prefetches for the `rows` rows of a block whose top-left texel is `origin`, rows
 // `stride` texels apart, in an RGBA8 or RGBA16F target (others are left alone), none past
-// the target's last texel. As `asm volatile`: GCC 12 at -O3 deleted the same prefetches
-// written as __builtin_prefetch or _mm_prefetch from this helper once inlined.
+// the target's last texel.
 template <class Channel, class Allocator>
 inline void prefetchRowsForWrite(const std::vector<Channel, Allocator>& texels, size_t origin, size_t stride, int rows) {
   if (texels.size() < 4) return;
   const size_t last = texels.size() / 4 - 1;   // four channels a texel
-  for (int r = 0; r < rows; ++r) {
-    const Channel* line = texels.data() + std::min(origin + size_t(r) * stride + kWritePrefetchTexelsAhead, last) * 4;
-    asm volatile("prefetcht0 %0" : : "m"(*line));
-  }
+  for (int r = 0; r < rows; ++r)
+    simd::prefetchForWrite(texels.data() + std::min(origin + size_t(r) * stride + kWritePrefetchTexelsAhead, last) * 4);
 }
 inline void prefetchBlockRowsForWrite(const Texture& target, size_t origin, size_t stride, int rows) {
   if (target.format == TexelFormat::RGBA16F) prefetchRowsForWrite(target.half, origin, stride, rows);

@@ -16,6 +16,7 @@
 #include <cstring>
 
 #include "raster/contract.h"
+#include "raster/simd/prefetch.h"
 #include "raster/texture/format.h"
 #include "raster/tile/interpolate.h"
 #include "raster/tile/lane_layout.h"
@@ -105,7 +106,11 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
   alignas(64) float columnOffsets[F::kCount];
   for (int i = 0; i < F::kCount; ++i) columnOffsets[i] = float(i);
   const F columns = F::load(columnOffsets);
+  const size_t rowBytes = size_t(rect.x1 + 1 - rect.x0) * sizeof(uint32_t);
   for (int y = rect.y0; y <= rect.y1; ++y) {
+    if (y + simd::kPrefetchRowsAhead <= rect.y1)
+      simd::prefetchLinesForWrite(depth.depth.data() + size_t(y + simd::kPrefetchRowsAhead) * size_t(width) + size_t(rect.x0),
+                                  rowBytes);
     const F py = F(float(y));
     uint32_t* row = depth.depth.data() + size_t(y) * size_t(width);
     for (int x = rect.x0; x <= rect.x1; x += F::kCount) {

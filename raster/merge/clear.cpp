@@ -25,7 +25,7 @@ void fillRows(T* data, size_t width, const TileBounds& rect, const T* texel, siz
   for (int y = rect.y0; y <= rect.y1; ++y) {
     const int ahead = y + simd::kPrefetchRowsAhead;
     if (!streaming && ahead <= rect.y1)
-      simd::prefetchLinesForWrite(data + (size_t(ahead) * width + size_t(rect.x0)) * perTexel, rowBytes);
+      simd::prefetchLines(data + (size_t(ahead) * width + size_t(rect.x0)) * perTexel, rowBytes);
     storeRow(reinterpret_cast<unsigned char*>(data + (size_t(y) * width + size_t(rect.x0)) * perTexel), pattern, rowBytes,
              streaming);
   }

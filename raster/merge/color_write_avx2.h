@@ -155,7 +155,7 @@ inline void prefetchRowsForWrite(const std::vector<Channel, Allocator>& texels, 
   if (texels.size() < 4) return;
   const size_t last = texels.size() / 4 - 1;   // four channels a texel
   for (int r = 0; r < rows; ++r)
-    simd::prefetchForWrite(texels.data() + std::min(origin + size_t(r) * stride + kWritePrefetchTexelsAhead, last) * 4);
+    simd::prefetchLine(texels.data() + std::min(origin + size_t(r) * stride + kWritePrefetchTexelsAhead, last) * 4);
 }
 inline void prefetchBlockRowsForWrite(const Texture& target, size_t origin, size_t stride, int rows) {
   if (target.format == TexelFormat::RGBA16F) prefetchRowsForWrite(target.half, origin, stride, rows);

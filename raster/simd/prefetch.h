@@ -1,16 +1,17 @@
-// Prefetches for lines that stores will write soon: a tile's rows, and the rows a fullscreen
-// pass stores a block at a time, are short runs a whole target row apart, which the hardware
-// prefetchers do not fetch ahead, so each plain store waited on its line's read for
-// ownership (BENCHMARKS.md, "What made it faster"). Callers prefetch a few rows, or a
-// kilobyte, ahead of their stores.
+// Prefetches for lines that loads or stores will reach soon. A tile's rows, and the rows a
+// fullscreen pass reads or stores a 4x4 block at a time, are short runs a whole target row
+// apart, which the hardware prefetchers do not fetch far enough ahead: each load waited on
+// its line, each plain store on its line's read for ownership (BENCHMARKS.md, "What made it
+// faster"). Callers prefetch a few rows, or a kilobyte, ahead.
 //
 // `asm volatile`, not __builtin_prefetch or _mm_prefetch: GCC 12 at -O3 deleted those from an
 // inlined helper that picked the texel array by format (every prefetch gone, no warning).
-// `prefetcht0`, not `prefetchw`: they measured the same, and every x86-64 has it. Elsewhere
-// nothing (a hint only).
+// `prefetcht0` for stores too, not `prefetchw`: they measured the same, and every x86-64 has
+// it. Elsewhere nothing (a hint only).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace raster::simd {
 
@@ -20,17 +21,21 @@ namespace raster::simd {
 // more.
 inline constexpr int kPrefetchRowsAhead = 2;
 
-inline void prefetchForWrite(const void* line) {
+// The 64-byte line holding `address`, into every cache level.
+inline void prefetchLine(const void* address) {
 #if defined(__x86_64__) || defined(__i386__)
-  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(line)));
+  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(address)));
 #else
-  (void)line;
+  (void)address;
 #endif
 }
 
-// Every 64-byte line of `bytes` bytes from `start`.
-inline void prefetchLinesForWrite(const void* start, size_t bytes) {
-  for (size_t i = 0; i < bytes; i += 64) prefetchForWrite(static_cast<const char*>(start) + i);
+// Every line that `bytes` bytes from `start` touch.
+inline void prefetchLines(const void* start, size_t bytes) {
+  if (bytes == 0) return;
+  const uintptr_t first = reinterpret_cast<uintptr_t>(start), end = first + bytes;
+  for (uintptr_t line = first & ~uintptr_t(63); line < end; line += 64)
+    prefetchLine(static_cast<const char*>(start) + (line > first ? line - first : 0));
 }
 
 }  // namespace raster::simd

@@ -15,6 +15,7 @@
 
 #include "raster/limits.h"
 #include "raster/simd/intrinsics.h"
+#include "raster/simd/prefetch.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
@@ -148,7 +149,7 @@ inline constexpr int kPrefetchTexelsAhead = 128;
   for (int lane : {0, 2, 8, 10})
     for (int r = 0; r < rows; ++r) {
       const size_t texel = std::min(size_t(start[lane]) + size_t(r) * size_t(t.width) + kPrefetchTexelsAhead, last);
-      _mm_prefetch(reinterpret_cast<const char*>(texels + texel * 4), _MM_HINT_T0);
+      simd::prefetchLine(texels + texel * 4);
     }
 }
 

@@ -109,7 +109,7 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
   const size_t rowBytes = size_t(rect.x1 + 1 - rect.x0) * sizeof(uint32_t);
   for (int y = rect.y0; y <= rect.y1; ++y) {
     if (y + simd::kPrefetchRowsAhead <= rect.y1)
-      simd::prefetchLinesForWrite(depth.depth.data() + size_t(y + simd::kPrefetchRowsAhead) * size_t(width) + size_t(rect.x0),
+      simd::prefetchLines(depth.depth.data() + size_t(y + simd::kPrefetchRowsAhead) * size_t(width) + size_t(rect.x0),
                                   rowBytes);
     const F py = F(float(y));
     uint32_t* row = depth.depth.data() + size_t(y) * size_t(width);

@@ -5,7 +5,6 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
-#include <algorithm>
 #include <vector>
 
 #include "raster/merge/color_write.h"
@@ -141,21 +140,12 @@ inline void writeHalfRowsPair(const glsl::vec4<simd::Float8x2>& color, uint16_t*
 // A covered tile (covered_tile_avx2.h) stores each target row in tile-wide runs, 64 texels,
 // too short for the hardware prefetchers to fetch lines ahead of the stores, so each store
 // waited on its line's read for ownership: the hdr bright pass and composite write 16.6 and
-// 8.3 MB at 1920x1080. A prefetch for writing this many texels to the right of each of a
-// block's rows (1 KiB of RGBA16F, 512 bytes of RGBA8) has the line there before the blocks
-// that store to it: in the next tile to the right while the tile's first block row is
-// stored, ahead of the next block row for the rest.
-inline constexpr size_t kWritePrefetchTexelsAhead = 128;
-
-// Those prefetches for the `rows` rows of a block whose top-left texel is `origin`, rows
-// `stride` texels apart, in an RGBA8 or RGBA16F target (others are left alone), none past
-// the target's last texel.
+// 8.3 MB at 1920x1080. These prefetch, for the `rows` rows of a block whose top-left texel is
+// `origin`, rows `stride` texels apart, the line simd::kPrefetchTexelsAhead to the right, in an
+// RGBA8 or RGBA16F target (others are left alone).
 template <class Channel, class Allocator>
 inline void prefetchRowsForWrite(const std::vector<Channel, Allocator>& texels, size_t origin, size_t stride, int rows) {
-  if (texels.size() < 4) return;
-  const size_t last = texels.size() / 4 - 1;   // four channels a texel
-  for (int r = 0; r < rows; ++r)
-    simd::prefetchLine(texels.data() + std::min(origin + size_t(r) * stride + kWritePrefetchTexelsAhead, last) * 4);
+  if (texels.size() >= 4) simd::prefetchRowsAhead(texels.data(), texels.size() / 4 - 1, origin, stride, rows);
 }
 inline void prefetchBlockRowsForWrite(const Texture& target, size_t origin, size_t stride, int rows) {
   if (target.format == TexelFormat::RGBA16F) prefetchRowsForWrite(target.half, origin, stride, rows);

@@ -21,6 +21,14 @@ namespace raster::simd {
 // more.
 inline constexpr int kPrefetchRowsAhead = 2;
 
+// How far to the right of a 4x4 block's texel rows a fullscreen pass prefetches the lines
+// it will read or store, in texels (1 KiB of RGBA16F, 512 bytes of RGBA8): far enough that a
+// line arrives before the blocks that reach it, in the next tile to the right while a tile's
+// first block row is worked, ahead of the next block row for the rest. Measured on the
+// reads of the first bloom downsample at 16, 32, 64, 128 and 256 texels: the gain stops
+// growing at 128; the stores were measured at 128.
+inline constexpr size_t kPrefetchTexelsAhead = 128;
+
 // The 64-byte line holding `address`, into every cache level.
 inline void prefetchLine(const void* address) {
 #if defined(__x86_64__) || defined(__i386__)
@@ -36,6 +44,17 @@ inline void prefetchLines(const void* start, size_t bytes) {
   const uintptr_t first = reinterpret_cast<uintptr_t>(start), end = first + bytes;
   for (uintptr_t line = first & ~uintptr_t(63); line < end; line += 64)
     prefetchLine(static_cast<const char*>(start) + (line > first ? line - first : 0));
+}
+
+// For `rows` texel rows `stride` texels apart, the first starting at texel `first`, the
+// line kPrefetchTexelsAhead texels to the right, clamped to texel `last`; four channels a
+// texel.
+template <class Channel>
+inline void prefetchRowsAhead(const Channel* texels, size_t last, size_t first, size_t stride, int rows) {
+  for (int r = 0; r < rows; ++r) {
+    const size_t texel = first + size_t(r) * stride + kPrefetchTexelsAhead;
+    prefetchLine(texels + (texel < last ? texel : last) * 4);
+  }
 }
 
 }  // namespace raster::simd

@@ -10,7 +10,6 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
-#include <algorithm>
 #include <bit>
 
 #include "raster/limits.h"
@@ -127,30 +126,15 @@ struct LinearTaps16 {
   return apart == 0xFFFF;
 }
 
-// The post passes read their source a 16-lane block at a time along a tile's rows of
-// blocks, so each texel row is read in short runs (a tile's width of texels) that the
-// hardware prefetchers do not follow far enough ahead: the first bloom downsample, whose
-// 1920x1080 source is streamed from the last-level cache, spent most of its time waiting
-// on those loads. Ahead of each lookup, one prefetch per texel row of the lanes' footprints
-// fetches the line this many texels to the right (1 KiB of RGBA16F), far enough that it
-// arrives before the blocks that read it: it lands in the next tile to the right while
-// the tile's first rows are read, ahead of the next block row for the rest (measured at
-// 16, 32, 64, 128 and 256: the gain stops growing at 128).
-inline constexpr int kPrefetchTexelsAhead = 128;
-
-// The prefetches for a 4x4 block of pixels whose lanes' footprints start at texel index
-// start[lane] and reach `rows` texel rows down: lanes 0, 2, 8 and 10 are the left pixels of
-// the block's four rows (lane_layout.h, flipped or not), so their footprints' rows are the
-// block's; each gets one prefetch per row, at its column plus the distance above. Scalar
-// indices, no reductions: the composite, which is not waiting on memory, pays little.
-[[gnu::always_inline]] inline void prefetchRowsAhead(const Texture& t, const int* start, int rows) {
-  const uint16_t* texels = t.half.data();
+// The prefetches ahead of a 4x4 block's lookups (simd/prefetch.h says why): its lanes'
+// footprints start at texel index start[lane] and reach `rows` texel rows down. Lanes 0, 2,
+// 8 and 10 are the left pixels of the block's four rows (lane_layout.h, flipped or not), so
+// their footprints' rows are the block's. Scalar indices, no reductions: the composite, which
+// is not waiting on memory, pays little. The first bloom downsample, whose 1920x1080 source
+// is streamed from the last-level cache, had spent most of its time waiting on these loads.
+[[gnu::always_inline]] inline void prefetchFootprintRows(const Texture& t, const int* start, int rows) {
   const size_t last = size_t(t.width) * size_t(t.height) - 1;
-  for (int lane : {0, 2, 8, 10})
-    for (int r = 0; r < rows; ++r) {
-      const size_t texel = std::min(size_t(start[lane]) + size_t(r) * size_t(t.width) + kPrefetchTexelsAhead, last);
-      simd::prefetchLine(texels + texel * 4);
-    }
+  for (int lane : {0, 2, 8, 10}) simd::prefetchRowsAhead(t.half.data(), last, size_t(start[lane]), size_t(t.width), rows);
 }
 
 // Four registers of rgba per lane, v[k] holding lanes k | k + 4 | k + 8 | k + 12 (one lane
@@ -183,7 +167,7 @@ inline constexpr int kPrefetchTexelsAhead = 128;
   // Read the indices back from memory, one scalar load each: left to itself the compiler
   // pulls each out of a vector register, three instructions per texel load (composite -2%).
   asm volatile("" : "+m"(start));
-  prefetchRowsAhead(t, start[0], 2);
+  prefetchFootprintRows(t, start[0], 2);
   auto pair = [&](int r, int lane) {   // [lane left | right | lane + 4 left | right]
     const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane]) * 4));
     const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane + 4]) * 4));
@@ -247,7 +231,7 @@ inline bool isHalfBilinearClamp(const Texture& t) {
   alignas(64) int start[16];   // each lane's top-left window texel
   _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(t.width)), x[0].i0));
   asm volatile("" : "+m"(start));   // read back as scalars (blendHalfPairs16 says why)
-  prefetchRowsAhead(t, start, 4);
+  prefetchFootprintRows(t, start, 4);
   __m512 blended[9][4];   // [tap][k]: lanes k | k + 4 | k + 8 | k + 12, rgba each
   for (int k = 0; k < 4; ++k) {
     const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,

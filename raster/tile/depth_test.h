@@ -110,7 +110,7 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
   for (int y = rect.y0; y <= rect.y1; ++y) {
     if (y + simd::kPrefetchRowsAhead <= rect.y1)
       simd::prefetchLines(depth.depth.data() + size_t(y + simd::kPrefetchRowsAhead) * size_t(width) + size_t(rect.x0),
-                                  rowBytes);
+                          rowBytes);
     const F py = F(float(y));
     uint32_t* row = depth.depth.data() + size_t(y) * size_t(width);
     for (int x = rect.x0; x <= rect.x1; x += F::kCount) {

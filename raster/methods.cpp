@@ -22,13 +22,14 @@ template <auto Field>
 void setField(MethodSet& set, uint8_t index) { set.*Field = std::remove_reference_t<decltype(set.*Field)>(index); }
 #define RASTER_STEP_FIELD(field) &getField<&MethodSet::field>, &setField<&MethodSet::field>
 
-const std::array<StepBinding, 5>& bindings() {
-  static const std::array<StepBinding, 5> table{{
+const std::array<StepBinding, 6>& bindings() {
+  static const std::array<StepBinding, 6> table{{
       {"math", {"llvmpipe", "libm", "fast"}, RASTER_STEP_FIELD(math)},
       {"filter", {"8bit", "float", nullptr}, RASTER_STEP_FIELD(filter)},
       {"half", {"rtz", "rne", nullptr}, RASTER_STEP_FIELD(half)},
       {"div", {"exact", "approx", nullptr}, RASTER_STEP_FIELD(div)},
       {"interp", {"perspective", "affine", nullptr}, RASTER_STEP_FIELD(interp)},
+      {"compare", {"bilinear", "nearest", nullptr}, RASTER_STEP_FIELD(compare)},
   }};
   return table;
 }
@@ -73,6 +74,10 @@ const std::vector<StepInfo>& methodCatalog() {
        "how varyings are interpolated across a triangle",
        {{"perspective", "GL: perspective-correct, one reciprocal per pixel"},
         {"affine", "screen-linear: no reciprocal, textures swim and bend on triangles at grazing angles"}}},
+      {"compare",
+       "how a shadow lookup (sampler2DShadow, LINEAR) filters its texel compares; GL leaves it to the implementation",
+       {{"bilinear", "llvmpipe: the 2x2 footprint's four compares weighted bilinearly: smooth penumbrae"},
+        {"nearest", "one compare, of the texel the coordinate lands in: a 0 or 1 per tap, within 0.75 of bilinear; fewer texels and no blend"}}},
   };
   return catalog;
 }
@@ -94,6 +99,7 @@ MethodSet presetMethods(std::string_view preset) {
   if (preset == "fast") {
     set.math = MathMethod::Fast;
     set.div = DivMethod::Approx;
+    set.compare = CompareMethod::Nearest;
     return set;
   }
   throw MethodError(std::string("unknown preset '").append(preset).append("' (presets: ").append(listOf(presetNames())).append(")"));

@@ -15,6 +15,8 @@
 //   div     simd/div_approx.h     normalize / inversesqrt (simd/glsl.h), and the 1/w of
 //                                 perspective-correct interpolation
 //   interp  geometry/setup.cpp, tile/interpolate.h   perspective or screen-linear varyings
+//   compare texture/sample_compare  how a shadow lookup (sampler2DShadow, LINEAR) filters
+//                                 its texel compares
 //
 // Why one process-wide set: the shader ports call GLSL functions that take no context
 // (sin(x), normalize(v), texture(s, uv)), exactly as GLSL does, so the method cannot travel
@@ -55,12 +57,18 @@ enum class InterpMethod : uint8_t {
   Affine,       // screen-linear across each triangle: no divide, wrong at grazing angles
 };
 
+enum class CompareMethod : uint8_t {
+  Bilinear,   // llvmpipe: the 2x2 footprint's compares weighted bilinearly
+  Nearest,    // the compare of the one texel the coordinate lands in (GL allows either)
+};
+
 struct MethodSet {
   MathMethod math = MathMethod::Llvmpipe;
   FilterMethod filter = FilterMethod::Unorm8;
   HalfMethod half = HalfMethod::TowardZero;
   DivMethod div = DivMethod::Exact;
   InterpMethod interp = InterpMethod::Perspective;
+  CompareMethod compare = CompareMethod::Bilinear;
   bool operator==(const MethodSet&) const = default;
 };
 

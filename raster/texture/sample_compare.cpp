@@ -1,10 +1,12 @@
-// Depth-compare sampling (sampler2DShadow), LINEAR + CLAMP_TO_EDGE, as llvmpipe does it: the
-// reference, one lookup at a time (sample_compare_avx2.cpp: 8 lanes and PCF grids at once).
+// Depth-compare sampling (sampler2DShadow), LINEAR + CLAMP_TO_EDGE, as llvmpipe does it, and
+// the compare=nearest method (methods.h): the reference, one lookup at a time
+// (sample_compare_avx2.cpp: 8 lanes and PCF grids at once).
 // Sources: lp_bld_sample_soa.c (lp_build_sample_wrap_linear, lp_build_sample_image_linear,
 // lp_build_sample_comparefunc, lp_build_masklerp2d); lp_bld_conv.c (unorm -> float).
 #include <algorithm>
 #include <cmath>
 
+#include "raster/methods.h"
 #include "raster/texture/format.h"
 #include "raster/texture/sample_trace.h"
 #include "raster/texture/sampler.h"
@@ -37,14 +39,27 @@ float texelAsFloat(const Texture& t, int x, int y) {
   return t.format == TexelFormat::Depth24 ? format::depth24ToFloat(code) : format::depth16ToFloat(code);
 }
 
+// The texel a coordinate lands in, CLAMP_TO_EDGE: floor(clamp(coord * size, 0, size - 1)),
+// NaN -> 0. Clamped first, so the truncation is the floor and no value overflows.
+int nearestTexel(float coord, int size) {
+  float c = coord * float(size);
+  c = (c > 0.0f) ? c : 0.0f;
+  c = (c < float(size - 1)) ? c : float(size - 1);
+  return int(c);
+}
+
+float clampRef(float ref) {
+  ref = (ref > 0.0f) ? ref : 0.0f;      // clamp to [0, 1], NaN -> 0
+  return (ref < 1.0f) ? ref : 1.0f;
+}
+
 // (m1 ? w : 0) + (m0 ? 1 - w : 0)
 float maskLerp(float w, bool m0, bool m1) { return (m1 ? w : 0.0f) + (m0 ? 1.0f - w : 0.0f); }
 
 }  // namespace
 
 float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
-  ref = (ref > 0.0f) ? ref : 0.0f;      // clamp to [0, 1], NaN -> 0
-  ref = (ref < 1.0f) ? ref : 1.0f;
+  ref = clampRef(ref);
   const LinearTaps x = wrapLinearClampToEdge(s, depth.width);
   const LinearTaps y = wrapLinearClampToEdge(t, depth.height);
   const bool m00 = ref <= texelAsFloat(depth, x.i0, y.i0);
@@ -56,10 +71,30 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref) {
   return std::fma(y.weight, row1 - row0, row0);
 }
 
-// The footprint of compareLinearClamp, for pixel history (sample_trace.h).
+float compareNearestClamp(const Texture& depth, float s, float t, float ref) {
+  return clampRef(ref) <= texelAsFloat(depth, nearestTexel(s, depth.width), nearestTexel(t, depth.height)) ? 1.0f : 0.0f;
+}
+
+float compareClamp(const Texture& depth, float s, float t, float ref) {
+  return methods::active().compare == CompareMethod::Nearest ? compareNearestClamp(depth, s, t, ref)
+                                                             : compareLinearClamp(depth, s, t, ref);
+}
+
+// The footprint of compareClamp, for pixel history (sample_trace.h).
 void explainCompare(const Texture& depth, SampleRecord& record) {
-  float ref = (record.ref > 0.0f) ? record.ref : 0.0f;
-  ref = (ref < 1.0f) ? ref : 1.0f;
+  const float ref = clampRef(record.ref);
+  record.explained[0] = compareClamp(depth, record.s, record.t, record.ref);
+  if (methods::active().compare == CompareMethod::Nearest) {
+    record.filter = "compare (LEQUAL) of the texel the coordinate lands in (compare=nearest)";
+    record.texelCount = 1;
+    FootprintTexel& texel = record.texels[0];
+    texel.x = nearestTexel(record.s, depth.width);
+    texel.y = nearestTexel(record.t, depth.height);
+    texel.weight = 1.0f;
+    texel.value[0] = texelAsFloat(depth, texel.x, texel.y);
+    texel.compare = ref <= texel.value[0] ? 1 : 0;
+    return;
+  }
   const LinearTaps x = wrapLinearClampToEdge(record.s, depth.width);
   const LinearTaps y = wrapLinearClampToEdge(record.t, depth.height);
   record.filter = "compare (LEQUAL per texel, results weighted bilinearly)";
@@ -77,7 +112,6 @@ void explainCompare(const Texture& depth, SampleRecord& record) {
     texel.value[0] = texelAsFloat(depth, xs[k], ys[k]);
     texel.compare = ref <= texel.value[0] ? 1 : 0;
   }
-  record.explained[0] = compareLinearClamp(depth, record.s, record.t, record.ref);
 }
 
 }  // namespace raster::sampling

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/methods.h"
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/format.h"
 #include "raster/texture/linear_taps_avx2.h"
@@ -39,6 +40,15 @@ __m256 refPasses(__m256 ref, __m256i code, float scale) {
   return _mm256_cmp_ps(ref, _mm256_mul_ps(_mm256_cvtepi32_ps(code), _mm256_set1_ps(scale)), _CMP_LE_OQ);
 }
 
+// nearestTexel of sample_compare.cpp: floor(clamp(coord * size, 0, size - 1)), NaN -> 0
+// (maxps returns its second operand on NaN), truncated once clamped.
+__m256i nearestTexel8(__m256 coord, int size) {
+  const __m256 c = _mm256_max_ps(_mm256_mul_ps(coord, _mm256_set1_ps(float(size))), _mm256_setzero_ps());
+  return _mm256_cvttps_epi32(_mm256_min_ps(c, _mm256_set1_ps(float(size - 1))));
+}
+
+bool nearestCompare() { return methods::active().compare == CompareMethod::Nearest; }
+
 }  // namespace
 
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref8) {
@@ -67,7 +77,31 @@ simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Flo
   return simd::Float8(_mm256_fmadd_ps(y.weight, _mm256_sub_ps(r1, r0), r0));
 }
 
+simd::Float8 compareNearestClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref) {
+  const __m256i texel = _mm256_add_epi32(_mm256_mullo_epi32(nearestTexel8(t.v, depth.height), _mm256_set1_epi32(depth.width)),
+                                         nearestTexel8(s.v, depth.width));
+  const __m256i code = _mm256_i32gather_epi32(reinterpret_cast<const int*>(depth.depth.data()), texel, 4);
+  return simd::Float8(_mm256_and_ps(refPasses(clampRef(ref.v), code, depthCodeScale(depth)), _mm256_set1_ps(1.0f)));
+}
+
+simd::Float8 compareClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref) {
+  return nearestCompare() ? compareNearestClamp8(depth, s, t, ref) : compareLinearClamp8(depth, s, t, ref);
+}
+
 namespace {
+
+// The grid's taps one lookup at a time, for compare=nearest off the 16-lane path: each tap
+// (origin + k * step) + base as compareGridN computes it.
+template <int R>
+void compareNearestGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
+                         simd::Float8* taps) {
+  constexpr int count = 2 * R + 1;
+  for (int j = 0; j < count; ++j)
+    for (int i = 0; i < count; ++i)
+      taps[j * count + i] = compareNearestClamp8(
+          depth, simd::Float8(_mm256_add_ps(s.v, _mm256_set1_ps(origin + float(i - R) * step))),
+          simd::Float8(_mm256_add_ps(t.v, _mm256_set1_ps(origin + float(j - R) * step))), ref);
+}
 
 // The grid of PCF taps at once, for N lane groups. Each tap's coordinate and weights are
 // computed as a lone lookup computes them, and each group's taps share one (2R + 2)^2 texel
@@ -181,44 +215,37 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
 template <int R>
 void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
                   simd::Float8* taps) {
+  if (nearestCompare()) return compareNearestGrid8<R>(depth, s, t, origin, step, ref, taps);
   compareGridN<1, R>(depth, &s, &t, origin, step, &ref, &taps);
 }
 
 template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
+  if (nearestCompare()) {
+    compareNearestGrid8<R>(depth, s[0], t[0], origin, step, ref[0], lo);
+    compareNearestGrid8<R>(depth, s[1], t[1], origin, step, ref[1], hi);
+    return;
+  }
   simd::Float8* const taps[2] = {lo, hi};
   compareGridN<2, R>(depth, s, t, origin, step, ref, taps);
 }
 
 #if RASTER_ZMM_PAIRS
-// compareGridN's shared case for both groups in 512-bit registers, lane k of Float8x2 in
-// element k: the same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on
-// 16 lanes), the same window loads, compares and blends per lane, half the instructions.
-// False, with nothing written, unless every lane's taps are one texel apart (no edge).
-template <int R>
-bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
-                   simd::Float8x2* taps) {
-  constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
-  LinearTaps16 x[count], y[count];
-  for (int k = 0; k < count; ++k) {
-    const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
-    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
-    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
-  }
-  if (!tapsAreConsecutive16(x, y, count)) return false;
+namespace {
 
+// passes[r][c] = ref <= texel (r, c) of each lane's Rows x Cols window from start[lane]
+// (refPasses, 16 lanes): each window row is read with 16-byte loads of four codes, columns
+// 0-3, then 4-7 or the last four, so a window narrower than four reads codes past its right
+// edge (the caller makes sure they lie in the map) and leaves them out.
+template <int Rows, int Cols>
+void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __mmask16 (&passes)[Rows][Cols]) {
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
-  const __m512 ref = _mm512_min_ps(_mm512_max_ps(ref16.v, _mm512_setzero_ps()), _mm512_set1_ps(1.0f));   // clampRef
   const uint32_t* codes = depth.depth.data();
-  alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
-  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(depth.width)), x[0].i0));
-  asm volatile("" : "+m"(start));   // read back as scalars (sample_half_avx512.h says why)
-  // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood (refPasses).
-  __mmask16 passes[texels][texels];
-  for (int r = 0; r < texels; ++r) {
+  for (int r = 0; r < Rows; ++r) {
     const size_t rowOffset = size_t(r) * size_t(depth.width);
-    for (int first = 0; first + 4 <= texels; first += 2) {   // columns 0-3, then (6 texels) 2-5
+    for (int next = 0; next < Cols; next += 4) {
+      const int first = std::min(next, std::max(Cols - 4, 0));
       __m512i v[4];   // v[k]: the four codes of lanes k, k + 4, k + 8, k + 12
       for (int k = 0; k < 4; ++k) {
         auto row = [&](int lane) {
@@ -231,10 +258,81 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
       const __m512i t2 = _mm512_unpacklo_epi32(v[2], v[3]), t3 = _mm512_unpackhi_epi32(v[2], v[3]);
       const __m512i column[4] = {_mm512_unpacklo_epi64(t0, t2), _mm512_unpackhi_epi64(t0, t2),
                                  _mm512_unpacklo_epi64(t1, t3), _mm512_unpackhi_epi64(t1, t3)};
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < 4 && first + c < Cols; ++c)
         passes[r][first + c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(column[c]), scale), _CMP_LE_OQ);
     }
   }
+}
+
+// Each lane's window origin, start[lane] = y * width + x, in memory to be read as scalars.
+void storeWindowStarts(const Texture& depth, __m512i x, __m512i y, int (&start)[16]) {
+  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(depth.width)), x));
+  asm volatile("" : "+m"(start));   // read back as scalars (sample_half_avx512.h says why)
+}
+
+__m512 clampRef16(__m512 ref) { return _mm512_min_ps(_mm512_max_ps(ref, _mm512_setzero_ps()), _mm512_set1_ps(1.0f)); }
+
+// nearestTexel8 on 16 lanes.
+__m512i nearestTexel16(__m512 coord, int size) {
+  const __m512 c = _mm512_max_ps(_mm512_mul_ps(coord, _mm512_set1_ps(float(size))), _mm512_setzero_ps());
+  return _mm512_cvttps_epi32(_mm512_min_ps(c, _mm512_set1_ps(float(size - 1))));
+}
+
+// compare=nearest's grid for a Float8x2 pair: tap (i, j) is the compare of one texel, and
+// where every lane's taps land on consecutive texels (no edge between them) those are one
+// count x count window per lane, loaded a row at a time and compared once per texel. False,
+// with nothing written, otherwise.
+template <int R>
+bool compareNearestGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step,
+                          simd::Float8x2 ref, simd::Float8x2* taps) {
+  constexpr int count = 2 * R + 1;
+  __m512i x[count], y[count];
+  for (int k = 0; k < count; ++k) {
+    const __m512 offset = _mm512_set1_ps(origin + float(k - R) * step);   // as compareGridN
+    x[k] = nearestTexel16(_mm512_add_ps(s.v, offset), depth.width);
+    y[k] = nearestTexel16(_mm512_add_ps(t.v, offset), depth.height);
+  }
+  __mmask16 consecutive = 0xFFFF;
+  for (int k = 1; k < count; ++k)
+    consecutive &= _mm512_cmpeq_epi32_mask(x[k], _mm512_add_epi32(x[0], _mm512_set1_epi32(k))) &
+                   _mm512_cmpeq_epi32_mask(y[k], _mm512_add_epi32(y[0], _mm512_set1_epi32(k)));
+  // A 3-wide window's rows are read four codes wide: the fourth must lie in the row.
+  if (count < 4) consecutive &= _mm512_cmplt_epi32_mask(x[0], _mm512_set1_epi32(depth.width - 3));
+  if (consecutive != 0xFFFF) return false;
+
+  alignas(64) int start[16];
+  storeWindowStarts(depth, x[0], y[0], start);
+  __mmask16 passes[count][count];
+  windowPasses16(depth, start, clampRef16(ref.v), passes);
+  for (int j = 0; j < count; ++j)
+    for (int i = 0; i < count; ++i) taps[j * count + i] = simd::Float8x2(_mm512_maskz_mov_ps(passes[j][i], _mm512_set1_ps(1.0f)));
+  return true;
+}
+
+}  // namespace
+
+// compareGridN's shared case for both groups in 512-bit registers, lane k of Float8x2 in
+// element k: the same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on
+// 16 lanes), the same window loads, compares and blends per lane, half the instructions.
+// False, with nothing written, unless every lane's taps are one texel apart (no edge).
+// compare=nearest takes compareNearestGrid16.
+template <int R>
+bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
+                   simd::Float8x2* taps) {
+  if (nearestCompare()) return compareNearestGrid16<R>(depth, s, t, origin, step, ref16, taps);
+  constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
+  LinearTaps16 x[count], y[count];
+  for (int k = 0; k < count; ++k) {
+    const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
+    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
+    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
+  }
+  if (!tapsAreConsecutive16(x, y, count)) return false;
+
+  alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
+  storeWindowStarts(depth, x[0].i0, y[0].i0, start);
+  __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
+  windowPasses16(depth, start, clampRef16(ref16.v), passes);
   // The blends of compareGridN, a mask's lanes holding the weight and the others +0.
   for (int j = 0; j < count; ++j)
     for (int i = 0; i < count; ++i) {

@@ -39,6 +39,17 @@ void sampleColor(const Texture& texture, float s, float t, float out[4]);
 // The reference is clamped to [0, 1] (NaN -> 0) but not quantized to the depth format.
 float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 
+// compare=nearest (methods.h): the compare of the one texel the coordinate lands in,
+// floor(clamp(coord * size, 0, size - 1)) on each axis (NaN -> 0), as 0 or 1. GL leaves the
+// filtering of a LINEAR shadow lookup's compares to the implementation ("a value in the
+// range [0, 1] which is proportional to the number of comparison passes", GL 3.3 3.8.16).
+// That texel is the footprint texel of compareLinearClamp with the largest weight (at least
+// 1/4), so the two agree wherever the bilinear result is 0 or 1, and differ by at most 0.75.
+float compareNearestClamp(const Texture& depth, float s, float t, float ref);
+
+// The shadow lookup of the active compare method: one of the two above.
+float compareClamp(const Texture& depth, float s, float t, float ref);
+
 // ---- the lookups over a lane type, lane by lane --------------------------------------------
 
 inline glsl::vec4<float> lookupColor(const Texture& texture, glsl::vec2<float> uv) {
@@ -71,7 +82,7 @@ glsl::vec4<F> lookupColorWhere(M needed, const Texture& texture, glsl::vec2<F> u
 }
 
 inline float lookupCompare(const Texture& depth, glsl::vec2<float> uv, float ref) {
-  return compareLinearClamp(depth, uv.x, uv.y, ref);
+  return compareClamp(depth, uv.x, uv.y, ref);
 }
 
 template <class F>
@@ -80,7 +91,7 @@ F lookupCompare(const Texture& depth, glsl::vec2<F> uv, F ref) {
   uv.x.store(s);
   uv.y.store(t);
   ref.store(r);
-  for (int i = 0; i < F::kCount; ++i) out[i] = compareLinearClamp(depth, s[i], t[i], r[i]);
+  for (int i = 0; i < F::kCount; ++i) out[i] = compareClamp(depth, s[i], t[i], r[i]);
   recordCompareLookup(depth, s, t, r, out);   // pixel history only (sample_trace.h)
   return F::load(out);
 }

@@ -17,9 +17,12 @@ namespace raster::sampling {
 
 // The same lookup for 8 lanes at once (AVX2 gathers), bit-identical to the scalar one.
 simd::Float8 compareLinearClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
+// compareNearestClamp for 8 lanes (one gather), and compareClamp: the active method's.
+simd::Float8 compareNearestClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
+simd::Float8 compareClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t, simd::Float8 ref);
 
 // The (2R + 1)^2 lookups at ((origin + i * step) + s, (origin + j * step) + t), i and j in
-// -R..R, each bit-identical to compareLinearClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
+// -R..R, each bit-identical to compareClamp8 there; taps[(j + R) * (2R + 1) + (i + R)].
 // Overlapping taps share their texels. Defined for R = 1 and 2 (sample_compare.cpp).
 template <int R>
 void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
@@ -136,13 +139,12 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
 
 [[gnu::always_inline]] inline simd::Float8 lookupCompare(const Texture& depth, glsl::vec2<simd::Float8> uv,
                                                          simd::Float8 ref) {
-  return compareLinearClamp8(depth, uv.x, uv.y, ref);
+  return compareClamp8(depth, uv.x, uv.y, ref);
 }
 
 [[gnu::always_inline]] inline simd::Float8x2 lookupCompare(const Texture& depth, glsl::vec2<simd::Float8x2> uv,
                                                            simd::Float8x2 ref) {
-  return {compareLinearClamp8(depth, uv.x.low(), uv.y.low(), ref.low()),
-          compareLinearClamp8(depth, uv.x.high(), uv.y.high(), ref.high())};
+  return {compareClamp8(depth, uv.x.low(), uv.y.low(), ref.low()), compareClamp8(depth, uv.x.high(), uv.y.high(), ref.high())};
 }
 
 [[gnu::always_inline]] inline void lookupColorGrid3x3(const Texture& texture, glsl::vec2<simd::Float8> uv,

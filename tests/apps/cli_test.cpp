@@ -147,7 +147,8 @@ TEST_SUITE("cli") {
     REQUIRE(list.status == 0);
     for (const char* line : {"math=llvmpipe (default)", "math=libm", "math=fast", "filter=8bit (default)", "filter=float",
                              "half=rtz (default)", "half=rne", "div=exact (default)", "div=approx",
-                             "interp=perspective (default)", "interp=affine", "  gl  math=llvmpipe", "  precise ", "  fast "})
+                             "interp=perspective (default)", "interp=affine", "compare=bilinear (default)", "compare=nearest",
+                             "  gl  math=llvmpipe", "  precise ", "  fast "})
       CHECK(list.out.find(line) != std::string::npos);
     for (const char* command : {"render", "compare", "bench"}) {
       expectRefused(std::string(command) + " " + aScene() + " --preset turbo");
@@ -199,7 +200,7 @@ TEST_SUITE("cli") {
       else CHECK(p["methods"].size() == raster::methodCatalog().size());
     }
     for (const char* name : {"gl", "precise", "fast", "math=libm", "math=fast", "filter=float", "half=rne", "div=approx",
-                             "interp=affine", "llvmpipe", "softpipe"})
+                             "interp=affine", "compare=nearest", "llvmpipe", "softpipe"})
       CHECK(names.count(name) == 1);
     for (const nlohmann::json& p : result["points"]) {
       if (p["name"] == "gl") CHECK(p["identical_to_llvmpipe"].get<bool>());

@@ -61,7 +61,7 @@ TEST_SUITE("methods") {
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
           "unknown method 'slow' for step math (methods: llvmpipe, libm, fast)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
-          "unknown step 'blend' (steps: math, filter, half, div, interp)");
+          "unknown step 'blend' (steps: math, filter, half, div, interp, compare)");
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=fast,"); }).empty());
   }
@@ -87,5 +87,12 @@ TEST_SUITE("methods") {
     const compare::TargetStats bent = finalAgainstLlvmpipe("shadow", affine, gl, 160, 120);
     CHECK(bent.psnr < 30.0);
     CHECK(bent.nonFinitePixels == 0);
+    // compare=nearest moves only the shadow's penumbrae, where the PCF taps' footprints
+    // straddle a depth edge: a few pixels.
+    raster::MethodSet nearest;
+    nearest.compare = raster::CompareMethod::Nearest;
+    const compare::TargetStats stepped = finalAgainstLlvmpipe("shadow", nearest, gl, 160, 120);
+    CHECK(stepped.maxAbs > 0);
+    CHECK(stepped.psnr > 45.0);
   }
 }

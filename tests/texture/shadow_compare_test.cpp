@@ -12,11 +12,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "raster/methods.h"
 #include "raster/texture/format.h"
 #include "raster/texture/sampler.h"
 #include "tests/gl_compare_helpers.h"
@@ -185,11 +188,16 @@ TEST_SUITE("shadow_compare") {
     CHECK(partial > kDraws * kLookupsPerDraw / 20);                // the filter's fractions are exercised
   }
 #if RASTER_AVX2
-  TEST_CASE("PCF grids, lone and paired: every tap equals its lone lookup, shared texels or not") {
+  TEST_CASE("PCF grids, lone and paired: every tap equals its lone lookup, shared texels or not, either compare method") {
     using raster::simd::Float8;
     std::mt19937 rng(8008);
     long lanesCompared = 0;
+    for (const raster::CompareMethod method : {raster::CompareMethod::Bilinear, raster::CompareMethod::Nearest})
     for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
+      raster::MethodSet methods;
+      methods.compare = method;
+      const raster::ScopedMethods scoped(methods);
+      CAPTURE(raster::methodName(methods, "compare"));
       for (const auto& [width, height] : {std::pair{1024, 1024}, std::pair{37, 29}, std::pair{6, 7}}) {
         raster::Texture map(width, height, format);
         const uint32_t maxCode = format == raster::TexelFormat::Depth24 ? 0xFFFFFFu : 0xFFFFu;
@@ -225,7 +233,7 @@ TEST_SUITE("shadow_compare") {
                 alignas(32) float got[8];
                 tapLanes(j, i).store(got);
                 for (int l = 0; l < 8; ++l) {
-                  const float lone = raster::sampling::compareLinearClamp(
+                  const float lone = raster::sampling::compareClamp(
                       map, (origin + float(i - radius) * step) + ls[l], (origin + float(j - radius) * step) + lt[l], lref[l]);
                   CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
                   ++lanesCompared;
@@ -254,7 +262,70 @@ TEST_SUITE("shadow_compare") {
         }
       }
     }
-    CHECK(lanesCompared == 2 * 3 * 600 * 8 * 3 * (9 + 25));   // lone, paired low, paired high
+    CHECK(lanesCompared == 2 * 2 * 3 * 600 * 8 * 3 * (9 + 25));   // methods, formats, maps; lone, paired low, paired high
   }
 #endif
+
+  // compare=nearest (raster/methods.h) against its definition and its stated bound: each
+  // lookup is the compare of the texel floor(clamp(coord * size, 0, size - 1)) lands in, 0 or
+  // 1; that texel has the largest bilinear weight, so the lookup equals llvmpipe's wherever
+  // that one is 0 or 1 and is within 0.75 of it everywhere. Edge values included.
+  TEST_CASE("compare=nearest: the compare of the texel the coordinate lands in, within 0.75 of bilinear") {
+    std::mt19937 rng(4242);
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float specials[] = {0.0f, -0.0f, 1e-45f, -1e-45f, 1.0f, 1.0000001f, 0.99999994f, -1.0f, 1e30f, -1e30f, inf, -inf, nan};
+    long lookups = 0, differing = 0;
+    for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
+      for (const auto& [width, height] : {std::pair{1024, 1024}, std::pair{37, 29}, std::pair{1, 1}, std::pair{3, 1001}}) {
+        raster::Texture map(width, height, format);
+        const uint32_t maxCode = format == raster::TexelFormat::Depth24 ? 0xFFFFFFu : 0xFFFFu;
+        for (uint32_t& code : map.depth) code = maxCode / 2 + rng() % (maxCode / 64);
+        auto texelOf = [](float coord, int size) {   // the definition, written out apart
+          const float c = coord * float(size);
+          if (std::isnan(c) || c <= 0.0f) return 0;
+          return int(std::floor(std::min(c, float(size - 1))));
+        };
+        std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
+        for (int k = 0; k < 20000; ++k) {
+          const float s = k % 10 == 0 ? specials[rng() % std::size(specials)] : unit(rng);
+          const float t = k % 10 == 1 ? specials[rng() % std::size(specials)] : unit(rng);
+          float ref = (float(maxCode / 2) + float(rng() % (maxCode / 64))) / float(maxCode);
+          if (k % 10 == 2) ref = specials[rng() % std::size(specials)];
+          const float nearest = raster::sampling::compareNearestClamp(map, s, t, ref);
+          const float clampedRef = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);
+          const uint32_t code = map.depth[size_t(texelOf(t, height)) * size_t(width) + size_t(texelOf(s, width))];
+          const float texel = format == raster::TexelFormat::Depth24 ? raster::format::depth24ToFloat(code)
+                                                                     : raster::format::depth16ToFloat(code);
+          CAPTURE(s);
+          CAPTURE(t);
+          CAPTURE(ref);
+          CHECK(nearest == (clampedRef <= texel ? 1.0f : 0.0f));
+          // NaN coordinates clamp to opposite texels in the two methods (0 here, size - 1 in
+          // llvmpipe's linear wrap): the bound is for coordinates.
+          if (std::isnan(s) || std::isnan(t)) continue;
+          const float bilinear = raster::sampling::compareLinearClamp(map, s, t, ref);
+          CHECK(std::fabs(nearest - bilinear) <= 0.75f);
+          if (bilinear == 0.0f || bilinear == 1.0f) CHECK(nearest == bilinear);
+          differing += nearest != bilinear;
+          ++lookups;
+        }
+#if RASTER_AVX2
+        // The 8-lane lookup, lane for lane the scalar one, specials included.
+        for (int k = 0; k < 2000; ++k) {
+          alignas(32) float s[8], t[8], ref[8], got[8];
+          for (int l = 0; l < 8; ++l) {
+            s[l] = (k + l) % 5 == 0 ? specials[rng() % std::size(specials)] : unit(rng);
+            t[l] = (k + l) % 5 == 1 ? specials[rng() % std::size(specials)] : unit(rng);
+            ref[l] = (k + l) % 5 == 2 ? specials[rng() % std::size(specials)] : unit(rng);
+          }
+          using raster::simd::Float8;
+          raster::sampling::compareNearestClamp8(map, Float8::load(s), Float8::load(t), Float8::load(ref)).store(got);
+          for (int l = 0; l < 8; ++l) CHECK(got[l] == raster::sampling::compareNearestClamp(map, s[l], t[l], ref[l]));
+        }
+#endif
+      }
+    }
+    MESSAGE("compare=nearest: " << differing << " of " << lookups << " lookups differ from bilinear");
+    CHECK(differing > lookups / 20);   // the inputs reach the penumbrae
+  }
 }

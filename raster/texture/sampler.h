@@ -42,9 +42,10 @@ float compareLinearClamp(const Texture& depth, float s, float t, float ref);
 // compare=nearest (methods.h): the compare of the one texel the coordinate lands in,
 // floor(clamp(coord * size, 0, size - 1)) on each axis (NaN -> 0), as 0 or 1. GL leaves the
 // filtering of a LINEAR shadow lookup's compares to the implementation ("a value in the
-// range [0, 1] which is proportional to the number of comparison passes", GL 3.3 3.8.16).
-// That texel is the footprint texel of compareLinearClamp with the largest weight (at least
-// 1/4), so the two agree wherever the bilinear result is 0 or 1, and differ by at most 0.75.
+// range [0, 1] which is proportional to the number of comparison passes", GL 3.3, Texture
+// Comparison Modes). That texel is the footprint texel of compareLinearClamp with the
+// largest weight (at least 1/4), so the two agree wherever the bilinear result is 0 or 1,
+// and differ by at most 0.75.
 float compareNearestClamp(const Texture& depth, float s, float t, float ref);
 
 // The shadow lookup of the active compare method: one of the two above.

@@ -1,7 +1,8 @@
 // Depth-compare sampling for 8 lanes at once, and the PCF grids whose taps share texels
 // (AVX2 gathers; with AVX-512, a Float8x2 pair's grids in one register where no tap meets a
-// map edge): the same operations as sample_compare.cpp, lane for lane, so the results are
-// bit-identical (tests/texture holds them together).
+// map edge), in both compare methods (methods.h): the same operations as
+// sample_compare.cpp, lane for lane, so the results are bit-identical (tests/texture holds
+// them together).
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include <algorithm>

@@ -52,7 +52,8 @@ inline thread_local SampleTrace* tActiveSampleTrace = nullptr;
 void colorTexelValue(const Texture& texture, int x, int y, float out[4]);
 
 // The footprint of a colour lookup (sampleColor) and of a compare lookup
-// (compareLinearClamp): fills a record's filter, weights, texels and explained result.
+// (compareClamp, either compare method): fills a record's filter, weights, texels and
+// explained result.
 void explainColor(const Texture& texture, SampleRecord& record);
 void explainCompare(const Texture& depth, SampleRecord& record);
 

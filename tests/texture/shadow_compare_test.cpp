@@ -17,6 +17,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "raster/methods.h"
@@ -192,8 +193,12 @@ TEST_SUITE("shadow_compare") {
     using raster::simd::Float8;
     std::mt19937 rng(8008);
     long lanesCompared = 0;
-    for (const raster::CompareMethod method : {raster::CompareMethod::Bilinear, raster::CompareMethod::Nearest})
-    for (raster::TexelFormat format : {raster::TexelFormat::Depth24, raster::TexelFormat::Depth16}) {
+    using raster::CompareMethod, raster::TexelFormat;
+    const std::pair<CompareMethod, TexelFormat> cases[] = {{CompareMethod::Bilinear, TexelFormat::Depth24},
+                                                           {CompareMethod::Bilinear, TexelFormat::Depth16},
+                                                           {CompareMethod::Nearest, TexelFormat::Depth24},
+                                                           {CompareMethod::Nearest, TexelFormat::Depth16}};
+    for (const auto& [method, format] : cases) {
       raster::MethodSet methods;
       methods.compare = method;
       const raster::ScopedMethods scoped(methods);

@@ -11,8 +11,8 @@
 //    float(code / 16777215.0)) and their float neighbours. Results must be bit-identical.
 #include <doctest/doctest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>

@@ -91,17 +91,18 @@ simd::Float8 compareClamp8(const Texture& depth, simd::Float8 s, simd::Float8 t,
 
 namespace {
 
-// The grid's taps one lookup at a time, for compare=nearest off the 16-lane path: each tap
-// (origin + k * step) + base as compareGridN computes it.
-template <int R>
-void compareNearestGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
-                         simd::Float8* taps) {
+// The grid's taps one lookup at a time, lookup(depth, s, t, ref) each: the lone lookups of a
+// group off the shared paths, in either method. Tap (i, j) is at (origin + k * step) + base,
+// the constant folded in float, then one rounding add, as the compiled shader does
+// (textureCompareGrid in sampler.h).
+template <int R, class Lookup>
+void loneTaps8(Lookup lookup, const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step,
+               simd::Float8 ref, simd::Float8* taps) {
   constexpr int count = 2 * R + 1;
   for (int j = 0; j < count; ++j)
     for (int i = 0; i < count; ++i)
-      taps[j * count + i] = compareNearestClamp8(
-          depth, simd::Float8(_mm256_add_ps(s.v, _mm256_set1_ps(origin + float(i - R) * step))),
-          simd::Float8(_mm256_add_ps(t.v, _mm256_set1_ps(origin + float(j - R) * step))), ref);
+      taps[j * count + i] = lookup(depth, simd::Float8(_mm256_add_ps(s.v, _mm256_set1_ps(origin + float(i - R) * step))),
+                                   simd::Float8(_mm256_add_ps(t.v, _mm256_set1_ps(origin + float(j - R) * step))), ref);
 }
 
 // The grid of PCF taps at once, for N lane groups. Each tap's coordinate and weights are
@@ -137,13 +138,7 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
     shared[h] = tapsAreConsecutive(x[h], y[h], count);
     picked[h] = !shared[h] && depth.width >= texels && depth.height >= texels &&
                 tapsInWindow<count>(x[h], startX[h], wx[h]) && tapsInWindow<count>(y[h], startY[h], wy[h]);
-    if (shared[h] || picked[h]) continue;
-    for (int j = 0; j < count; ++j)
-      for (int i = 0; i < count; ++i)
-        taps[h][j * count + i] =
-            compareLinearClamp8(depth, simd::Float8(_mm256_add_ps(s[h].v, _mm256_set1_ps(origin + float(i - radius) * step))),
-                                simd::Float8(_mm256_add_ps(t[h].v, _mm256_set1_ps(origin + float(j - radius) * step))),
-                                ref8[h]);
+    if (!shared[h] && !picked[h]) loneTaps8<R>(compareLinearClamp8, depth, s[h], t[h], origin, step, ref8[h], taps[h]);
   }
 
   const float scale = depthCodeScale(depth);
@@ -216,7 +211,7 @@ void compareGridN(const Texture& depth, const simd::Float8* s, const simd::Float
 template <int R>
 void compareGrid8(const Texture& depth, simd::Float8 s, simd::Float8 t, float origin, float step, simd::Float8 ref,
                   simd::Float8* taps) {
-  if (nearestCompare()) return compareNearestGrid8<R>(depth, s, t, origin, step, ref, taps);
+  if (nearestCompare()) return loneTaps8<R>(compareNearestClamp8, depth, s, t, origin, step, ref, taps);
   compareGridN<1, R>(depth, &s, &t, origin, step, &ref, &taps);
 }
 
@@ -224,8 +219,8 @@ template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi) {
   if (nearestCompare()) {
-    compareNearestGrid8<R>(depth, s[0], t[0], origin, step, ref[0], lo);
-    compareNearestGrid8<R>(depth, s[1], t[1], origin, step, ref[1], hi);
+    loneTaps8<R>(compareNearestClamp8, depth, s[0], t[0], origin, step, ref[0], lo);
+    loneTaps8<R>(compareNearestClamp8, depth, s[1], t[1], origin, step, ref[1], hi);
     return;
   }
   simd::Float8* const taps[2] = {lo, hi};

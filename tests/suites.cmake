@@ -33,6 +33,12 @@ add_test(NAME dask_sweep COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/d
          ${CMAKE_SOURCE_DIR})
 set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
 
+# bench/goal_runs.py, the issues' speed-goal protocol, on tiny frames: its verdicts follow
+# the runs' ratios, its JSON and table agree, bad input exits 2 before any run.
+add_test(NAME goal_runs COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/goal_runs_test.py $<TARGET_FILE:raster_cli>
+         ${CMAKE_SOURCE_DIR})
+set_tests_properties(goal_runs PROPERTIES TIMEOUT 300)
+
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.
 add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py

@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""The speed goals of issues 21 and 26, measured the way they are stated.
+
+For every size, method preset and scene it runs `raster bench` (this pipeline and llvmpipe
+alternating frame by frame in one process) --runs times, the runs of all configurations
+interleaved so that a slow minute of the shared host spreads over all of them, and reads
+each run's ratio of medians (llvmpipe / this pipeline). A configuration meets the goal when
+the median of its runs is at least --goal (3.0) and no run is below --floor (2.7). With
+--passes every run also times each pass, finished before the next, and the table lists the
+passes whose median ratio is below --pass-goal (2.0).
+
+Writes OUT/goals.json (every run, with the host's CPU model: ratios differ between the
+hosts these machines draw, AMD and Intel alike) and OUT/goals.md (the table), and prints
+the table. Exit status: 0 when every configuration meets the goal, 1 when one does not,
+2 for bad arguments or a failed run.
+
+Usage: bench/goal_runs.py [--runs 3] [--frames 9] [--threads 2] [--sizes 640x480,1920x1080]
+                          [--presets gl,fast] [--scenes shadow,deferred,hdr] [--passes]
+                          [--raster build/raster] [--out bench/results]
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = ("shadow", "deferred", "hdr")
+PRESETS = ("gl", "precise", "fast")
+
+
+def cpu_model():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown"
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--runs", type=int, default=3, help="runs per configuration (default 3)")
+    parser.add_argument("--frames", type=int, default=9, help="timed frames per backend and run (default 9)")
+    parser.add_argument("--threads", type=int, default=2, help="threads for both backends (default 2)")
+    parser.add_argument("--sizes", default="640x480,1920x1080", help="comma-separated WxH list")
+    parser.add_argument("--presets", default="gl,fast", help="comma-separated: gl, precise, fast")
+    parser.add_argument("--scenes", default=",".join(SCENES), help="comma-separated: shadow, deferred, hdr")
+    parser.add_argument("--goal", type=float, default=3.0, help="median ratio a configuration needs (default 3.0)")
+    parser.add_argument("--floor", type=float, default=2.7, help="lowest ratio any run may read (default 2.7)")
+    parser.add_argument("--passes", action="store_true", help="also time each pass and list those below --pass-goal")
+    parser.add_argument("--pass-goal", type=float, default=2.0, help="median ratio every pass needs (default 2.0)")
+    parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results"), help="folder for goals.json and goals.md")
+    args = parser.parse_args(argv)
+    args.sizes = args.sizes.split(",")
+    args.presets = args.presets.split(",")
+    args.scenes = args.scenes.split(",")
+    for size in args.sizes:
+        if not re.fullmatch(r"[1-9]\d*x[1-9]\d*", size):
+            parser.error(f"--sizes: '{size}' is not WxH (e.g. 640x480)")
+    for name, given, valid in (("--presets", args.presets, PRESETS), ("--scenes", args.scenes, SCENES)):
+        for value in given:
+            if value not in valid:
+                parser.error(f"{name}: unknown '{value}' (valid: {', '.join(valid)})")
+    if args.runs < 1 or args.frames < 1 or args.threads < 1:
+        parser.error("--runs, --frames and --threads must be at least 1")
+    if not os.access(args.raster, os.X_OK):
+        parser.error(f"--raster: {args.raster} is not an executable (run ./setup.sh first)")
+    try:   # before any rendering: a run of many minutes must not end on an unwritable folder
+        os.makedirs(args.out, exist_ok=True)
+        with tempfile.TemporaryFile(dir=args.out):
+            pass
+    except OSError as error:
+        parser.error(f"--out: cannot write to {args.out}: {error.strerror}")
+    return args
+
+
+def run_once(args, scene, size, preset):
+    """One `raster bench` run; returns its JSON record."""
+    with tempfile.TemporaryDirectory() as folder:
+        json_path = os.path.join(folder, "bench.json")
+        cmd = [args.raster, "bench", scene, "--size", size, "--threads", str(args.threads), "--frames",
+               str(args.frames), "--preset", preset, "--quiet", "--json", json_path]
+        if args.passes:
+            cmd.append("--passes")
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0:
+            sys.stderr.write(f"goal_runs: {' '.join(cmd)} exited {done.returncode}:\n{done.stderr[-2000:]}")
+            sys.exit(2)
+        with open(json_path) as f:
+            return json.load(f)
+
+
+def summarize(args, runs):
+    """Per configuration: the runs' ratios, their median and minimum, whether the goal is met,
+    and (with --passes) each pass's median ratio."""
+    rows = []
+    for size in args.sizes:
+        for preset in args.presets:
+            for scene in args.scenes:
+                mine = [r for r in runs if (r["size"], r["preset"], r["scene"]) == (size, preset, scene)]
+                ratios = [r["ratio"] for r in mine]
+                row = {"size": size, "preset": preset, "scene": scene, "ratios": ratios,
+                       "median": statistics.median(ratios), "min": min(ratios)}
+                row["met"] = row["median"] >= args.goal and row["min"] >= args.floor
+                if args.passes:
+                    count = len(mine[0]["passes"])
+                    row["passes"] = [{"pass": i + 1, "program": mine[0]["passes"][i]["program"],
+                                      "median_ratio": statistics.median(
+                                          r["passes"][i]["llvmpipe_ms"] / r["passes"][i]["raster_ms"] for r in mine)}
+                                     for i in range(count)]
+                rows.append(row)
+    return rows
+
+
+def table(args, rows, host):
+    lines = [f"Host: {host}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
+             f"(`bench/goal_runs.py`). Goal: median >= {args.goal}, no run below {args.floor}.", "",
+             "| size | preset | scene | runs (llvmpipe / raster) | median | lowest | goal met |"
+             + (f" passes below {args.pass_goal}x |" if args.passes else ""),
+             "| --- | --- | --- | --- | ---: | ---: | :---: |" + (" --- |" if args.passes else "")]
+    for row in rows:
+        line = (f"| {row['size']} | {row['preset']} | {row['scene']} | {', '.join(f'{r:.2f}' for r in row['ratios'])} | "
+                f"{row['median']:.2f} | {row['min']:.2f} | {'yes' if row['met'] else 'no'} |")
+        if args.passes:
+            weak = [f"{p['pass']} `{p['program']}` {p['median_ratio']:.2f}" for p in row["passes"]
+                    if p["median_ratio"] < args.pass_goal]
+            line += f" {'; '.join(weak) if weak else 'none'} |"
+        lines.append(line)
+    return "\n".join(lines) + "\n"
+
+
+def main(argv):
+    args = parse_args(argv)
+    configs = [(size, preset, scene) for size in args.sizes for preset in args.presets for scene in args.scenes]
+    runs, started, total = [], time.time(), args.runs * len(configs)
+    for run in range(args.runs):
+        for size, preset, scene in configs:
+            print(f"[{len(runs) + 1}/{total}] run {run + 1}: {scene} {size} {preset} "
+                  f"({time.time() - started:.0f} s)", file=sys.stderr, flush=True)
+            record = run_once(args, scene, size, preset)
+            runs.append({"run": run + 1, "size": size, "preset": preset, "scene": scene, "ratio": record["ratio"],
+                         "median_ms": {b["name"]: b["median_ms"] for b in record["backends"]},
+                         "passes": record.get("passes", [])})
+    host = cpu_model()
+    rows = summarize(args, runs)
+    text = table(args, rows, host)
+    result = {"host": host, "threads": args.threads, "frames": args.frames, "goal": args.goal, "floor": args.floor,
+              "pass_goal": args.pass_goal if args.passes else None, "configurations": rows, "runs": runs}
+    # Written whole to a temporary name, then renamed: never a half-written file.
+    for name, content in (("goals.json", json.dumps(result, indent=1) + "\n"), ("goals.md", text)):
+        path = os.path.join(args.out, name)
+        with open(path + ".tmp", "w") as f:
+            f.write(content)
+        os.replace(path + ".tmp", path)
+    sys.stdout.write(text)
+    return 0 if all(row["met"] for row in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

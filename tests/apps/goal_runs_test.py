@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""bench/goal_runs.py judges each configuration by its runs' ratios as the issues state the
+goal (median at least --goal, no run below --floor), exits 0 only when all meet it and 1 when
+one does not, writes goals.json and goals.md that agree with each other, and exits 2 on bad
+input before any run, leaving no file behind.
+
+Usage: goal_runs_test.py RASTER_BINARY SOURCE_DIR
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+raster, source = sys.argv[1], sys.argv[2]
+runner = os.path.join(source, "bench", "goal_runs.py")
+small = ["--raster", raster, "--runs", "2", "--frames", "2", "--threads", "2", "--sizes", "48x32,17x9",
+         "--scenes", "shadow,hdr", "--presets", "gl,fast"]
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message, file=sys.stderr)
+
+
+def goal_runs(*extra):
+    return subprocess.run([sys.executable, runner, *small, *extra], capture_output=True, text=True)
+
+
+with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
+    # Every ratio is above 0: all met, exit 0; the table and the JSON hold the same rows.
+    out = os.path.join(tmp, "all-met")
+    done = goal_runs("--goal", "0", "--floor", "0", "--passes", "--out", out)
+    check(done.returncode == 0, f"a goal of 0 exited {done.returncode}: {done.stderr[-2000:]}")
+    with open(os.path.join(out, "goals.json")) as f:
+        result = json.load(f)
+    rows = result["configurations"]
+    check(len(rows) == 8, f"{len(rows)} configurations, not 2 sizes x 2 presets x 2 scenes")
+    check(len(result["runs"]) == 16, f"{len(result['runs'])} runs, not 8 configurations x 2")
+    for row in rows:
+        check(len(row["ratios"]) == 2 and all(r > 0 for r in row["ratios"]), f"ratios of {row}")
+        check(row["median"] == statistics.median(row["ratios"]) and row["min"] == min(row["ratios"]),
+              f"median or lowest of {row}")
+        check(row["met"], f"not met at a goal of 0: {row}")
+        programs = [p["program"] for p in row["passes"]]
+        expected = ["shadow/shadow", "shadow/main"] if row["scene"] == "shadow" else None
+        check(programs == expected if expected else programs[0] == "hdr/scene" and len(programs) > 2,
+              f"passes of {row['scene']}: {programs}")
+    with open(os.path.join(out, "goals.md")) as f:
+        table = f.read()
+    body = [line for line in table.splitlines() if line.startswith("| 48x32") or line.startswith("| 17x9")]
+    check(len(body) == 8, f"the table has {len(body)} rows, not 8:\n{table}")
+    check(all("| yes |" in line for line in body), f"a row of the table is not met:\n{table}")
+    check(sorted(os.listdir(out)) == ["goals.json", "goals.md"], f"left in --out: {os.listdir(out)}")
+
+    # No ratio reaches 10^9: none met, exit 1.
+    out = os.path.join(tmp, "none-met")
+    done = goal_runs("--goal", "1e9", "--out", out)
+    check(done.returncode == 1, f"a goal of 10^9 exited {done.returncode}, not 1: {done.stderr[-2000:]}")
+    with open(os.path.join(out, "goals.json")) as f:
+        check(not any(row["met"] for row in json.load(f)["configurations"]), "a configuration met a goal of 10^9")
+
+    # A median above the goal with one run below the floor is not met.
+    out = os.path.join(tmp, "floor")
+    done = goal_runs("--goal", "0", "--floor", "1e9", "--out", out)
+    check(done.returncode == 1, f"a floor of 10^9 exited {done.returncode}, not 1")
+
+    # Bad input: exit 2, one line that names the problem, nothing written.
+    blocker = os.path.join(tmp, "a-file")
+    open(blocker, "w").close()
+    for extra, says in ((["--presets", "gl,slow"], "gl, precise, fast"), (["--scenes", "forest"], "shadow, deferred, hdr"),
+                        (["--sizes", "640"], "WxH"), (["--sizes", "0x480"], "WxH"), (["--runs", "0"], "--runs"),
+                        (["--out", os.path.join(blocker, "under")], "cannot write")):
+        bad = os.path.join(tmp, "bad")
+        args = extra if "--out" in extra else extra + ["--out", bad]
+        done = goal_runs(*args)
+        check(done.returncode == 2, f"{extra} exited {done.returncode}, not 2")
+        check(says in done.stderr, f"{extra}: the error does not say '{says}': {done.stderr}")
+        check("[1/" not in done.stderr, f"{extra}: a run started before the error")
+        check(not os.path.exists(os.path.join(bad, "goals.json")), f"{extra} left a goals.json")
+
+print("goal_runs_test: " + ("passed" if not failures else f"{len(failures)} failed"))
+sys.exit(1 if failures else 0)

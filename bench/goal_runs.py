@@ -10,13 +10,16 @@ the median of its runs is at least --goal (3.0) and no run is below --floor (2.7
 passes whose median ratio is below --pass-goal (2.0).
 
 Writes OUT/goals.json (every run, with the host's CPU model: ratios differ between the
-hosts these machines draw, AMD and Intel alike) and OUT/goals.md (the table), and prints
-the table. Exit status: 0 when every configuration meets the goal, 1 when one does not,
-2 for bad arguments or a failed run.
+hosts these machines draw, AMD and Intel alike), OUT/goals.md (the table) and OUT/goals.png
+(a panel per size: each configuration's median as a bar, its runs as dots, the goal and the
+floor as lines), and prints the table. --replot rewrites the table and the chart from an
+existing goals.json without running anything. Exit status: 0 when every configuration meets
+the goal, 1 when one does not, 2 for bad arguments or a failed run.
 
 Usage: bench/goal_runs.py [--runs 3] [--frames 9] [--threads 2] [--sizes 640x480,1920x1080]
                           [--presets gl,fast] [--scenes shadow,deferred,hdr] [--passes]
-                          [--raster build/raster] [--out bench/results]
+                          [--raster build/raster] [--out bench/results] [--replot]
+(Debian's /usr/bin/python3, which has python3-matplotlib from ./setup.sh.)
 """
 import argparse
 import json
@@ -27,6 +30,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from chart_files import write_atomically
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ("shadow", "deferred", "hdr")
@@ -57,8 +62,15 @@ def parse_args(argv):
     parser.add_argument("--passes", action="store_true", help="also time each pass and list those below --pass-goal")
     parser.add_argument("--pass-goal", type=float, default=2.0, help="median ratio every pass needs (default 2.0)")
     parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
-    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results"), help="folder for goals.json and goals.md")
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results"), help="folder for goals.json, .md and .png")
+    parser.add_argument("--replot", action="store_true", help="no runs: rewrite goals.md and goals.png from OUT/goals.json")
     args = parser.parse_args(argv)
+    try:   # the chart needs it; found missing only after minutes of runs would lose them
+        import matplotlib  # noqa: F401
+    except ImportError:
+        parser.error(f"matplotlib is missing from {sys.executable}: run ./setup.sh, or use /usr/bin/python3")
+    if args.replot:
+        return args
     args.sizes = args.sizes.split(",")
     args.presets = args.presets.split(",")
     args.scenes = args.scenes.split(",")
@@ -137,8 +149,70 @@ def table(args, rows, host):
     return "\n".join(lines) + "\n"
 
 
+def chart(args, rows, host, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(args.sizes), figsize=(4.5 * len(args.sizes), 4), squeeze=False, sharey=True)
+    width = 0.8 / len(args.presets)
+    for ax, size in zip(axes[0], args.sizes):
+        for p, preset in enumerate(args.presets):
+            mine = [next(r for r in rows if (r["size"], r["preset"], r["scene"]) == (size, preset, scene))
+                    for scene in args.scenes]
+            x = [i + (p - (len(args.presets) - 1) / 2) * width for i in range(len(args.scenes))]
+            bars = ax.bar(x, [r["median"] for r in mine], width * 0.9, label=f"{preset} (median)", alpha=0.75)
+            for xi, row in zip(x, mine):
+                ax.plot([xi] * len(row["ratios"]), row["ratios"], "k.", markersize=4)
+            ax.bar_label(bars, fmt="%.2f", fontsize=7)
+        ax.axhline(args.goal, color="#2ca02c", linestyle="--", linewidth=1, label=f"goal {args.goal:g}x")
+        ax.axhline(args.floor, color="#d62728", linestyle=":", linewidth=1, label=f"floor {args.floor:g}x")
+        ax.set_xticks(range(len(args.scenes)), args.scenes)
+        ax.set_title(f"{size}, {args.threads} threads", fontsize=10)
+        ax.grid(True, axis="y", alpha=0.3)
+    axes[0][0].set_ylabel("llvmpipe time / this pipeline's (runs as dots)")
+    axes[0][-1].legend(fontsize=7, loc="lower right")
+    fig.suptitle(f"Speed goals, {args.runs} runs each ({host})", fontsize=10)
+    fig.tight_layout()
+    write_atomically(fig, path)
+    plt.close(fig)
+
+
+def replot(args):
+    """The table and the chart again from goals.json, with the settings it was measured with."""
+    path = os.path.join(args.out, "goals.json")
+    try:
+        with open(path) as f:
+            result = json.load(f)
+        rows = result["configurations"]
+        args.runs = len(rows[0]["ratios"])
+    except (OSError, ValueError, KeyError, IndexError) as error:
+        sys.stderr.write(f"goal_runs: --replot: cannot read {path}: {error}\n")
+        return 2
+    ordered = lambda key: list(dict.fromkeys(row[key] for row in rows))
+    args.sizes, args.presets, args.scenes = ordered("size"), ordered("preset"), ordered("scene")
+    args.threads, args.frames, args.goal, args.floor = result["threads"], result["frames"], result["goal"], result["floor"]
+    args.passes, args.pass_goal = result["pass_goal"] is not None, result["pass_goal"]
+    write_outputs(args, rows, result["host"], json.dumps(result, indent=1) + "\n")
+    return 0
+
+
+def write_outputs(args, rows, host, json_text):
+    """goals.json, goals.md and goals.png, each written whole under a temporary name and renamed:
+    never a half-written file. Returns the table."""
+    text = table(args, rows, host)
+    chart(args, rows, host, os.path.join(args.out, "goals.png"))
+    for name, content in (("goals.json", json_text), ("goals.md", text)):
+        path = os.path.join(args.out, name)
+        with open(path + ".tmp", "w") as f:
+            f.write(content)
+        os.replace(path + ".tmp", path)
+    return text
+
+
 def main(argv):
     args = parse_args(argv)
+    if args.replot:
+        return replot(args)
     configs = [(size, preset, scene) for size in args.sizes for preset in args.presets for scene in args.scenes]
     runs, started, total = [], time.time(), args.runs * len(configs)
     for run in range(args.runs):
@@ -151,16 +225,9 @@ def main(argv):
                          "passes": record.get("passes", [])})
     host = cpu_model()
     rows = summarize(args, runs)
-    text = table(args, rows, host)
     result = {"host": host, "threads": args.threads, "frames": args.frames, "goal": args.goal, "floor": args.floor,
               "pass_goal": args.pass_goal if args.passes else None, "configurations": rows, "runs": runs}
-    # Written whole to a temporary name, then renamed: never a half-written file.
-    for name, content in (("goals.json", json.dumps(result, indent=1) + "\n"), ("goals.md", text)):
-        path = os.path.join(args.out, name)
-        with open(path + ".tmp", "w") as f:
-            f.write(content)
-        os.replace(path + ".tmp", path)
-    sys.stdout.write(text)
+    sys.stdout.write(write_outputs(args, rows, host, json.dumps(result, indent=1) + "\n"))
     return 0 if all(row["met"] for row in rows) else 1
 
 

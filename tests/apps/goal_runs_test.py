@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """bench/goal_runs.py judges each configuration by its runs' ratios as the issues state the
 goal (median at least --goal, no run below --floor), exits 0 only when all meet it and 1 when
-one does not, writes goals.json and goals.md that agree with each other, and exits 2 on bad
+one does not, writes goals.json and goals.md that agree with each other and a goals.png
+chart, and exits 2 on bad
 input before any run, leaving no file behind.
 
 Usage: goal_runs_test.py RASTER_BINARY SOURCE_DIR
@@ -54,7 +55,20 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
     body = [line for line in table.splitlines() if line.startswith("| 48x32") or line.startswith("| 17x9")]
     check(len(body) == 8, f"the table has {len(body)} rows, not 8:\n{table}")
     check(all("| yes |" in line for line in body), f"a row of the table is not met:\n{table}")
-    check(sorted(os.listdir(out)) == ["goals.json", "goals.md"], f"left in --out: {os.listdir(out)}")
+    with open(os.path.join(out, "goals.png"), "rb") as f:
+        check(f.read(8) == b"\x89PNG\r\n\x1a\n", "goals.png is not a PNG")
+    check(sorted(os.listdir(out)) == ["goals.json", "goals.md", "goals.png"], f"left in --out: {os.listdir(out)}")
+
+    # --replot rebuilds the same table from goals.json, with no run.
+    os.remove(os.path.join(out, "goals.png"))
+    done = subprocess.run([sys.executable, runner, "--replot", "--out", out], capture_output=True, text=True)
+    check(done.returncode == 0 and "[1/" not in done.stderr, f"--replot exited {done.returncode}: {done.stderr}")
+    with open(os.path.join(out, "goals.md")) as f:
+        check(f.read() == table, "--replot wrote a different table")
+    check(os.path.exists(os.path.join(out, "goals.png")), "--replot wrote no chart")
+    done = subprocess.run([sys.executable, runner, "--replot", "--out", os.path.join(tmp, "nothing-here")],
+                          capture_output=True, text=True)
+    check(done.returncode == 2 and "goals.json" in done.stderr, f"--replot without goals.json exited {done.returncode}")
 
     # No ratio reaches 10^9: none met, exit 1.
     out = os.path.join(tmp, "none-met")

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 ./setup.sh
-ctest --test-dir build --output-on-failure
+ctest --test-dir build --output-on-failure -j"$(nproc)"
 for config in tests/configs/*.sh; do
   echo "== configuration $(basename "$config" .sh)"
   "$config"

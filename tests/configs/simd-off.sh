@@ -7,4 +7,4 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 cmake -S . -B build-simd-off -DCMAKE_BUILD_TYPE=Release -DRASTER_AVX2=OFF > /dev/null
 cmake --build build-simd-off -j"$(nproc)"
-ctest --test-dir build-simd-off --output-on-failure
+ctest --test-dir build-simd-off --output-on-failure -j"$(nproc)"

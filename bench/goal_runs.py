@@ -71,9 +71,8 @@ def parse_args(argv):
         parser.error(f"matplotlib is missing from {sys.executable}: run ./setup.sh, or use /usr/bin/python3")
     if args.replot:
         return args
-    args.sizes = args.sizes.split(",")
-    args.presets = args.presets.split(",")
-    args.scenes = args.scenes.split(",")
+    # A name given twice is measured once.
+    args.sizes, args.presets, args.scenes = (list(dict.fromkeys(v.split(","))) for v in (args.sizes, args.presets, args.scenes))
     for size in args.sizes:
         if not re.fullmatch(r"[1-9]\d*x[1-9]\d*", size):
             parser.error(f"--sizes: '{size}' is not WxH (e.g. 640x480)")

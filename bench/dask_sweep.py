@@ -26,6 +26,8 @@ import subprocess
 import sys
 import tempfile
 
+from chart_files import write_text_atomically
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_RASTER = os.path.join(HERE, "..", "build", "raster")
 
@@ -136,9 +138,7 @@ def main(argv):
                 return 2
             folder = os.path.join(shard_root, f"shard-{k}")
             os.makedirs(folder, exist_ok=True)
-            with open(os.path.join(folder, "sweep.json.tmp"), "w") as f:
-                f.write(text)
-            os.replace(os.path.join(folder, "sweep.json.tmp"), os.path.join(folder, "sweep.json"))
+            write_text_atomically(text, os.path.join(folder, "sweep.json"))
             done += 1
             print(f"dask_sweep: shard {k}/{args.shards} done ({done}/{args.shards})", file=sys.stderr)
     finally:

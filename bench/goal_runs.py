@@ -31,7 +31,7 @@ import sys
 import tempfile
 import time
 
-from chart_files import write_atomically
+from chart_files import write_atomically, write_text_atomically
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ("shadow", "deferred", "hdr")
@@ -200,11 +200,8 @@ def write_outputs(args, rows, host, json_text):
     never a half-written file. Returns the table."""
     text = table(args, rows, host)
     chart(args, rows, host, os.path.join(args.out, "goals.png"))
-    for name, content in (("goals.json", json_text), ("goals.md", text)):
-        path = os.path.join(args.out, name)
-        with open(path + ".tmp", "w") as f:
-            f.write(content)
-        os.replace(path + ".tmp", path)
+    write_text_atomically(json_text, os.path.join(args.out, "goals.json"))
+    write_text_atomically(text, os.path.join(args.out, "goals.md"))
     return text
 
 

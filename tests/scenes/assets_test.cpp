@@ -367,6 +367,19 @@ TEST_CASE("PNG: loads, and a truncated or oversized one is refused") {
   m = errorOf([&] { scenes::loadImageRgba8(bigPath); });
   checkOneLine(m, bigPath);
   CHECK(contains(m, "image too large (20000x3"));
+
+  // The chunk after IHDR with a type of control bytes, claiming more than the file holds:
+  // the message names the chunk with its unprintable bytes as '?', never the bytes.
+  std::string odd = bytes;
+  const size_t chunk = 8 + 25;   // after the signature and IHDR (length, type, 13 bytes, CRC)
+  const char header[8] = {0, 0x10, 0, 0, '\x01', 'I', 'D', '\x7f'};
+  odd.replace(chunk, 8, header, 8);
+  const std::string oddPath = tmp.file("odd.png");
+  writeBytes(oddPath, odd);
+  m = errorOf([&] { scenes::loadImageRgba8(oddPath); });
+  checkOneLine(m, oddPath);
+  CHECK(contains(m, "inside its ?ID? chunk"));
+  CHECK(std::none_of(m.begin(), m.end(), [](char c) { return static_cast<unsigned char>(c) < 32; }));
 }
 
 TEST_CASE("OBJ: out-of-range indices, no faces, no vertices, missing attributes") {

@@ -2,24 +2,27 @@
 import os
 
 
-def write_atomically(fig, path):
-    """Saves fig to path through a temporary file beside it, renamed into place."""
+def _replace_whole(path, write):
+    """Calls write(tmp) for a temporary file beside path, then renames it into place; the
+    temporary never stays behind. It keeps path's extension, from which savefig takes the
+    format."""
     tmp = f"{path}.tmp-{os.getpid()}{os.path.splitext(path)[1]}"
     try:
-        fig.savefig(tmp, dpi=130)
+        write(tmp)
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)
+
+
+def write_atomically(fig, path):
+    """Saves fig to path through a temporary file beside it, renamed into place."""
+    _replace_whole(path, lambda tmp: fig.savefig(tmp, dpi=130))
 
 
 def write_text_atomically(text, path):
     """Writes text to path through a temporary file beside it, renamed into place."""
-    tmp = f"{path}.tmp-{os.getpid()}"
-    try:
+    def write(tmp):
         with open(tmp, "w") as f:
             f.write(text)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    _replace_whole(path, write)

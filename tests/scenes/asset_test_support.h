@@ -1,0 +1,97 @@
+// What the asset tests share (assets_test.cpp, image_structure_test.cpp): a temporary folder
+// for bad files, the real assets, and the check that an error is one "asset PATH: ..." line.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <stdlib.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scenes/assets.h"
+#include "scenes/scene.h"
+
+namespace asset_test {
+
+namespace fs = std::filesystem;
+
+struct TempFolder {
+  fs::path path;
+  TempFolder() {
+    std::string pattern = (fs::temp_directory_path() / "raster-assets-test-XXXXXX").string();
+    REQUIRE(mkdtemp(pattern.data()) != nullptr);
+    path = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ignored);
+    fs::remove_all(path, ignored);
+  }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+inline std::string realAsset(const std::string& relative) {
+  const std::string p = scenes::assetPath(scenes::SceneOptions{}, relative);
+  INFO("asset folder: " << scenes::assetDirectory(scenes::SceneOptions{}));
+  REQUIRE_MESSAGE(fs::exists(p), "missing real asset " << p);
+  return p;
+}
+
+inline std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out << bytes;
+  REQUIRE(out.good());
+}
+
+// The SceneError message of f(); fails the test if f does not throw one.
+template <class F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const scenes::SceneError& e) {
+    MESSAGE(std::string(e.what()));
+    return e.what();
+  } catch (const std::exception& e) {
+    FAIL("threw something other than SceneError: " << e.what());
+  }
+  FAIL("did not throw");
+  return "";
+}
+
+inline bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// "asset PATH: ..." or, for a problem on one line of a text file, "asset PATH:LINE: ...".
+inline void checkOneLine(const std::string& message, const std::string& path) {
+  const std::string prefix = "asset " + path + ":";
+  REQUIRE(message.rfind(prefix, 0) == 0);
+  size_t at = prefix.size();
+  if (at < message.size() && std::isdigit(static_cast<unsigned char>(message[at]))) {
+    while (at < message.size() && std::isdigit(static_cast<unsigned char>(message[at]))) ++at;
+    CHECK(message.compare(at, 1, ":") == 0);
+    ++at;
+  }
+  CHECK(message.compare(at, 1, " ") == 0);
+  CHECK(message.find('\n') == std::string::npos);
+}
+
+inline constexpr const char* kCatObj = "cat/concrete_cat_statue.obj";
+inline const std::vector<std::string> kJpegs = {
+    "cat/textures/concrete_cat_statue_diff_2k.jpg",   "cat/textures/concrete_cat_statue_nor_gl_1k.jpg",
+    "cat/textures/concrete_cat_statue_arm_2k.jpg",    "brick/Bricks031_1K-JPG_Color.jpg",
+    "brick/Bricks031_1K-JPG_NormalGL.jpg",            "brick/Bricks031_1K-JPG_AmbientOcclusion.jpg",
+    "brick/Bricks031_1K-JPG_Roughness.jpg"};
+inline constexpr const char* kHdr = "hdri/cannon_1k.hdr";
+
+}  // namespace asset_test

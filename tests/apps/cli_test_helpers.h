@@ -13,22 +13,15 @@
 #include <sstream>
 #include <string>
 
+#include "tests/temp_folder.h"
+
 namespace cli_test {
 
 namespace fs = std::filesystem;
 
-// A fresh temporary folder, removed with its content afterwards.
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "raster-cli-test-XXXXXX").string();
-    REQUIRE(mkdtemp(pattern.data()) != nullptr);
-    path = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
+// A working folder for one run of the program (tests/temp_folder.h).
+struct TempFolder : testing_support::TempFolder {
+  TempFolder() : testing_support::TempFolder("raster-cli-test") {}
 };
 
 struct RunResult {

@@ -29,6 +29,7 @@
 #include "raster/texture/format.h"
 #include "scenes/backends.h"
 #include "tests/scene_test_helpers.h"
+#include "tests/temp_folder.h"
 
 namespace {
 
@@ -37,18 +38,8 @@ using scenes::ImageData;
 using scenes::Target;
 using scenes::TexelFormat;
 
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "raster-image-io-test-XXXXXX").string();
-    REQUIRE(mkdtemp(pattern.data()) != nullptr);
-    path = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
+struct TempFolder : testing_support::TempFolder {
+  TempFolder() : testing_support::TempFolder("raster-image-io-test") {}
 };
 
 // Whether two images are the same, field by field and payload byte by payload byte.

@@ -4,8 +4,6 @@
 
 #include <doctest/doctest.h>
 
-#include <stdlib.h>
-
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -15,24 +13,14 @@
 
 #include "scenes/assets.h"
 #include "scenes/scene.h"
+#include "tests/temp_folder.h"
 
 namespace asset_test {
 
 namespace fs = std::filesystem;
 
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "raster-assets-test-XXXXXX").string();
-    REQUIRE(mkdtemp(pattern.data()) != nullptr);
-    path = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::permissions(path, fs::perms::owner_all, fs::perm_options::add, ignored);
-    fs::remove_all(path, ignored);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
+struct TempFolder : testing_support::TempFolder {
+  TempFolder() : testing_support::TempFolder("raster-assets-test") {}
 };
 
 inline std::string realAsset(const std::string& relative) {

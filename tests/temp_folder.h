@@ -1,0 +1,38 @@
+// A fresh temporary folder for one test, removed with its content afterwards: the CLI tests'
+// working folders, the image and asset tests' bad files.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <stdlib.h>
+
+#include <filesystem>
+#include <string>
+#include <system_error>
+
+namespace testing_support {
+
+struct TempFolder {
+  std::filesystem::path path;
+
+  // `prefix` names the folder's test in /tmp ("raster-cli-test" -> raster-cli-test-XXXXXX),
+  // so that a folder left by a crashed run says whose it is.
+  explicit TempFolder(const std::string& prefix = "raster-test") {
+    std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+    REQUIRE(mkdtemp(pattern.data()) != nullptr);
+    path = pattern;
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+  // Owner permissions first: a test that made the folder unreadable or unwritable (to check
+  // the error for an unreadable file) must not leave it behind.
+  ~TempFolder() {
+    std::error_code ignored;
+    std::filesystem::permissions(path, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ignored);
+    std::filesystem::remove_all(path, ignored);
+  }
+
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+}  // namespace testing_support

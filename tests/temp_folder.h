@@ -24,8 +24,8 @@ struct TempFolder {
   }
   TempFolder(const TempFolder&) = delete;
   TempFolder& operator=(const TempFolder&) = delete;
-  // Owner permissions first: a test that made the folder unreadable or unwritable (to check
-  // the error for an unreadable file) must not leave it behind.
+  // Owner permissions back on the folder first, so that a test which takes them away (to
+  // check the error for an unreadable path) cannot leave it behind.
   ~TempFolder() {
     std::error_code ignored;
     std::filesystem::permissions(path, std::filesystem::perms::owner_all, std::filesystem::perm_options::add, ignored);

@@ -82,9 +82,10 @@ void Renderer::beginPassHistory() {
   history_->passes.push_back(std::move(pass));
 }
 
-// Appends the first `chunks` setup chunks to the pass's triangles, in chunk order; each
-// chunk's varying-plane indices move by where its planes land.
-void Renderer::appendChunks(int chunks) {
+// Places the first `chunks` setup chunks in the pass's lists, in chunk order: where each
+// chunk's triangles and planes land, the lists grown to hold them, the counters summed. The
+// triangles are copied there by copyChunk, when the draw is binned.
+void Renderer::placeChunks(int chunks) {
   size_t triangleCount = triangles_.size(), planeCount = varyingPlanes_.size();
   for (int c = 0; c < chunks; ++c) {
     SetupChunk& chunk = setupChunks_[size_t(c)];
@@ -97,16 +98,19 @@ void Renderer::appendChunks(int chunks) {
   }
   triangles_.resize(triangleCount);
   varyingPlanes_.resize(planeCount);
-  pool_.parallelFor(chunks, [&](int c) {
-    const SetupChunk& chunk = setupChunks_[size_t(c)];
-    SetupTriangle* to = triangles_.data() + chunk.triangleAt;
-    for (const SetupTriangle& tri : chunk.triangles) {
-      *to = tri;
-      to->varyingBase += uint32_t(chunk.planeAt);
-      ++to;
-    }
-    std::copy(chunk.varyingPlanes.begin(), chunk.varyingPlanes.end(), varyingPlanes_.begin() + std::ptrdiff_t(chunk.planeAt));
-  });
+}
+
+// Copies a placed chunk into the pass's lists; its varying-plane indices move by where its
+// planes land.
+void Renderer::copyChunk(int c) {
+  const SetupChunk& chunk = setupChunks_[size_t(c)];
+  SetupTriangle* to = triangles_.data() + chunk.triangleAt;
+  for (const SetupTriangle& tri : chunk.triangles) {
+    *to = tri;
+    to->varyingBase += uint32_t(chunk.planeAt);
+    ++to;
+  }
+  std::copy(chunk.varyingPlanes.begin(), chunk.varyingPlanes.end(), varyingPlanes_.begin() + std::ptrdiff_t(chunk.planeAt));
 }
 
 void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& vertices,
@@ -139,7 +143,7 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   setup.varyingFloats = shaded_.varyingFloats;
   setup.drawIndex = uint32_t(draws_.size());
   const uint32_t firstTriangle = uint32_t(triangles_.size());
-  setUpChunked(setup, indices, vertices.vertexCount, size_t(instanceCount) * (indices.size() / 3));
+  const int chunks = setUpChunked(setup, indices, vertices.vertexCount, size_t(instanceCount) * (indices.size() / 3));
   if (history_ && !history_->passes.empty()) history_->passes.back().programs.push_back(shader->name());
   const bool samplesTextures = shader->samplesTextures();
   const int colorOutputs = shader->colorOutputs();
@@ -149,7 +153,7 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   // 4. Binning.
   const uint64_t binStart = cycleCount();
   counters_.setupCycles += binStart - setupStart;
-  bin(firstTriangle);
+  bin(firstTriangle, chunks);
   counters_.binCycles += cycleCount() - binStart;
 }
 
@@ -178,18 +182,19 @@ void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& v
 }
 
 // Assembles and sets up a draw's primitives into the pass's lists. Large draws are set up
-// in chunks of primitives in parallel, each into its own lists, which are then appended in
+// in chunks of primitives in parallel, each into its own lists, which are then placed in
 // chunk order: the same triangles in the same order as one pass through them, for any
-// thread count.
-void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount,
-                            size_t primitives) {
+// thread count. Returns the number of chunks; with more than one, bin() copies them into
+// the lists.
+int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount,
+                           size_t primitives) {
   const AssemblyInput input{setup, shaded_, indices, vertexCount, viewport_};
   const int chunks = pool_.threads() > 1 && primitives >= 2 * kSetupChunkPrimitives
                          ? int(std::min<size_t>(primitives / kSetupChunkPrimitives, size_t(4 * pool_.threads())))
                          : 1;
   if (chunks == 1) {
     assemblePrimitives(input, 0, primitives, {triangles_, varyingPlanes_, history_ ? &triangleOrigins_ : nullptr}, counters_);
-    return;
+    return 1;
   }
   if (setupChunks_.size() < size_t(chunks)) setupChunks_.resize(size_t(chunks));
   pool_.parallelFor(chunks, [&](int c) {
@@ -201,25 +206,38 @@ void Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> i
     assemblePrimitives(input, primitives * size_t(c) / size_t(chunks), primitives * size_t(c + 1) / size_t(chunks),
                        {chunk.triangles, chunk.varyingPlanes, history_ ? &chunk.origins : nullptr}, chunk.counters);
   });
-  appendChunks(chunks);
+  placeChunks(chunks);
+  return chunks;
 }
 
-// Bins triangles [firstTriangle, end) (geometry/bin.h). Large draws are binned in parts,
+// Bins triangles [firstTriangle, end) (geometry/bin.h), first copying them in from the
+// draw's `setupChunks` when there is more than one. Large draws are binned in parts,
 // consecutive ranges of triangles in parallel, each into its own bins; appending those in
-// range order gives every tile its triangles in API order.
-void Renderer::bin(uint32_t firstTriangle) {
+// range order gives every tile its triangles in API order. A part copies the chunks it
+// bins, so it bins triangles it has just written, in one task.
+void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
   const uint32_t end = uint32_t(triangles_.size()), count = end - firstTriangle;
   // A part per thread, of at least half a setup chunk's triangles (each part's own bins
-  // cost a pass over every tile to empty and append).
-  const int parts = std::min(pool_.threads(), int(count / (kSetupChunkPrimitives / 2)));
+  // cost a pass over every tile to empty and append), and whole chunks to each.
+  const int parts = std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)), std::max(setupChunks, 1)});
   if (parts <= 1) {
+    if (setupChunks > 1) pool_.parallelFor(setupChunks, [&](int c) { copyChunk(c); });
     counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, end);
     return;
   }
   if (binParts_.size() < size_t(parts - 1)) binParts_.resize(size_t(parts - 1));
-  const auto partStart = [&](int p) { return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts)); };
+  // Part p takes the chunks [firstChunk(p), firstChunk(p + 1)), or without chunks an even
+  // share of the triangles.
+  const auto firstChunk = [&](int p) { return setupChunks * p / parts; };
+  const auto partStart = [&](int p) {
+    if (p == parts) return end;
+    if (setupChunks > 1) return uint32_t(setupChunks_[size_t(firstChunk(p))].triangleAt);
+    return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts));
+  };
   std::vector<uint64_t> entries(static_cast<size_t>(parts));
   pool_.parallelFor(parts, [&](int p) {
+    if (setupChunks > 1)
+      for (int c = firstChunk(p); c < firstChunk(p + 1); ++c) copyChunk(c);
     // The first part goes straight into the pass's bins: it follows what they hold.
     TileBins& part = p == 0 ? bins_ : binParts_[size_t(p - 1)];
     if (p > 0) part.reset(framebuffer_.width, framebuffer_.height);

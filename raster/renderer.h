@@ -78,9 +78,10 @@ class Renderer {
   bool visibilityFirst() const;
   void beginPassHistory();
   void shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount);
-  void setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount, size_t primitives);
-  void appendChunks(int chunks);
-  void bin(uint32_t firstTriangle);
+  int setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount, size_t primitives);
+  void placeChunks(int chunks);
+  void copyChunk(int c);
+  void bin(uint32_t firstTriangle, int setupChunks);
 
   ThreadPool pool_;
   bool scalarOnly_;

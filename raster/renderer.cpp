@@ -301,7 +301,8 @@ void Renderer::flush() {
       size_t done = 0;
       if (clearing && inspect) merge::clearRect(framebuffer_, pendingClear_, bounds, true);
       else if (clearing)
-        done = scalarOnly_ ? clearTile<ScalarLanes>(job, bin, bounds, pendingClear_) : clearTile<FastLanes>(job, bin, bounds, pendingClear_);
+        done = scalarOnly_ ? clearTile<ScalarLanes>(job, bin, bounds, pendingClear_, tileCounters[size_t(tile)])
+                           : clearTile<FastLanes>(job, bin, bounds, pendingClear_, tileCounters[size_t(tile)]);
       if (bin.size() > done) {
         if (inspect) inspectTile(job, bounds, bin, view->counts, tileCounters[size_t(tile)]);
         else if (scalarOnly_) rasterizeTile<ScalarLanes>(job, bounds, bin.subspan(done), tileCounters[size_t(tile)]);

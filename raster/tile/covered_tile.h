@@ -1,6 +1,8 @@
 // The covered-tile fast path: a tile that one triangle covers whole (the fullscreen triangle
 // of a post-processing pass being the common case) has no coverage to find and no fragment
-// that can fail, so it can be shaded block by block straight from the planes.
+// that can fail, so it can be shaded block by block straight from the planes. The same path
+// shades a tile's first triangle when it covers the tile and passes its depth test at every
+// pixel against the pending clear (tile_clear.h: the floor under a camera).
 //
 // The reference has no such path: it walks such a tile like any other (shadeCoveredTile
 // returns false), which gives the same bits. covered_tile_avx2.h has it for Float8.
@@ -21,6 +23,20 @@ bool shadeCoveredTile(const TileJob&, const TileBounds&, std::span<const uint32_
                       PipelineCounters&) {
   return false;
 }
+
+// Whether lane type F has the path, and for which tiles: whole 4x4 blocks, and draws whose
+// lane groups GroupShader pairs (the path shades a block's two groups as one pair).
+template <class F>
+bool canShadeTileWhole(const TileBounds&, const DrawRecord&) {
+  return false;
+}
+
+// The path itself, for a triangle the caller has shown to cover the tile, each of whose
+// fragments passes its depth test (its codes, where it writes depth, are stored by the
+// caller): every pixel of the tile shaded and merged as the in-order walk would. Only where
+// canShadeTileWhole.
+template <class F>
+void shadeTileWhole(const TileJob&, const TileBounds&, const SetupTriangle&, const LaneLayout<F>&, PipelineCounters&) {}
 
 }  // namespace raster
 

@@ -15,20 +15,21 @@
 
 namespace raster {
 
-inline bool shadeCoveredTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
-                             const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
+template <>
+inline bool canShadeTileWhole<simd::Float8>(const TileBounds& tile, const DrawRecord& draw) {
+  constexpr int kBlock = limits::kBlockSize;
+  // Pairs only where GroupShader forms them; no partial blocks.
+  return shadedInPairs(draw) && (tile.x1 + 1 - tile.x0) % kBlock == 0 && (tile.y1 + 1 - tile.y0) % kBlock == 0;
+}
+
+template <>
+inline void shadeTileWhole<simd::Float8>(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                                         const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
   using simd::Float8;
   using simd::Float8x2;
   constexpr int kBlock = limits::kBlockSize;
-  if (bin.size() != 1) return false;
-  const SetupTriangle& tri = job.triangles[bin.front()];
   const DrawRecord& draw = job.draws[tri.drawIndex];
   const Framebuffer& fb = *job.framebuffer;
-  // Pairs only where GroupShader forms them; a depth test could fail lanes.
-  if (!shadedInPairs(draw) || (draw.state.depthTest && fb.depth)) return false;
-  if ((tile.x1 + 1 - tile.x0) % kBlock || (tile.y1 + 1 - tile.y0) % kBlock) return false;   // partial blocks
-  if (!triangleCoversRect(tri, tile)) return false;
-
   // Lane offsets of the pair: the block's upper group (rows 0-1), then its lower (rows 2-3).
   const Float8x2 dx(layout.dxLanes, layout.dxLanes), dy(layout.dyLanes, layout.dyLanes + Float8(2.0f));
   const int outputs = colorOutputsWritten(draw, fb);
@@ -73,6 +74,16 @@ inline bool shadeCoveredTile(const TileJob& job, const TileBounds& tile, std::sp
   counters.lanesCovered += lanes;
   counters.laneGroupsShaded += lanes / 8;
   counters.lanesShaded += lanes;
+}
+
+inline bool shadeCoveredTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
+                             const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
+  if (bin.size() != 1) return false;
+  const SetupTriangle& tri = job.triangles[bin.front()];
+  // A depth test could fail lanes.
+  if (job.draws[tri.drawIndex].state.depthTest && job.framebuffer->depth) return false;
+  if (!canShadeTileWhole<simd::Float8>(tile, job.draws[tri.drawIndex]) || !triangleCoversRect(tri, tile)) return false;
+  shadeTileWhole(job, tile, tri, layout, counters);
   return true;
 }
 

@@ -13,13 +13,6 @@
 #include "raster/util/cycles.h"
 
 namespace raster {
-namespace {
-
-// A tile crossed by fewer triangles has little overdraw to save (a floor, a cube's faces),
-// and the visibility pass would cost more than it saves. (Speed only: the bytes are the same.)
-constexpr size_t kVisibilityFirstMinTriangles = 16;
-
-}  // namespace
 
 template <class F>
 void rasterizeTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, PipelineCounters& counters) {
@@ -30,7 +23,7 @@ void rasterizeTile(const TileJob& job, const TileBounds& tile, std::span<const u
 
   if (!shadeCoveredTile(job, tile, bin, layout, counters)) {
     GroupShader<F> shader(job, counters);
-    if (job.visibilityFirst && bin.size() >= kVisibilityFirstMinTriangles) {
+    if (walksVisibleFirst(job, bin.size())) {
       rasterizeVisibleFirst<F>(job, tile, bin, layout, counters, shader);
     } else {   // in order: each group is shaded as soon as it passes its depth test
       // Prepared only: a pair of the same triangle's groups is interpolated together.

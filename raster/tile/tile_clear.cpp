@@ -7,7 +7,9 @@
 #include "raster/merge/clear.h"
 #include "raster/texture/format.h"
 #include "raster/tile/coverage.h"
+#include "raster/tile/covered_tile.h"
 #include "raster/tile/depth_test.h"
+#include "raster/tile/rasterize_tile.h"
 
 namespace raster {
 
@@ -35,7 +37,7 @@ bool depthTestPassesEverywhere(const SetupTriangle& tri, const RasterState& stat
 }
 
 TileClearPlan planTileClear(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile,
-                            const ClearValues& pending) {
+                            const ClearValues& pending, bool shadesWhole) {
   TileClearPlan plan{pending, false};
   if (bin.empty() || (!pending.color && !pending.depth)) return plan;
   const SetupTriangle& tri = job.triangles[bin.front()];
@@ -49,24 +51,32 @@ TileClearPlan planTileClear(const TileJob& job, std::span<const uint32_t> bin, c
     return plan;
   const int outputs = colorOutputsWritten(draw, fb);
   if (!draw.state.blendAdditive && outputs == int(fb.colors.size())) plan.rest.color = false;
-  if (depthTested && draw.state.depthWrite && outputs == 0) {
+  if (depthTested && draw.state.depthWrite && (outputs == 0 || shadesWhole)) {
     plan.rest.depth = false;
     plan.firstStoresDepth = true;
+    plan.firstShadedWhole = outputs > 0;
   }
   return plan;
 }
 
 template <class F>
-size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending) {
-  const TileClearPlan plan = planTileClear(job, bin, tile, pending);
+size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending,
+                 PipelineCounters& counters) {
+  const bool shadesWhole = !bin.empty() && !walksVisibleFirst(job, bin.size()) &&
+                           canShadeTileWhole<F>(tile, job.draws[job.triangles[bin.front()].drawIndex]);
+  const TileClearPlan plan = planTileClear(job, bin, tile, pending, shadesWhole);
   const Framebuffer& fb = *job.framebuffer;
   merge::clearRect(fb, plan.rest, tile, true, bin.empty());
   if (!plan.firstStoresDepth) return 0;
-  storeDepthCodes<F>(job.triangles[bin.front()], *fb.depth, fb.width, tile);
+  const SetupTriangle& first = job.triangles[bin.front()];
+  storeDepthCodes<F>(first, *fb.depth, fb.width, tile);
+  if (plan.firstShadedWhole) shadeTileWhole<F>(job, tile, first, LaneLayout<F>(fb.flipY, fb.width), counters);
   return 1;
 }
 
-template size_t clearTile<FastLanes>(const TileJob&, std::span<const uint32_t>, const TileBounds&, const ClearValues&);
-template size_t clearTile<ScalarLanes>(const TileJob&, std::span<const uint32_t>, const TileBounds&, const ClearValues&);
+template size_t clearTile<FastLanes>(const TileJob&, std::span<const uint32_t>, const TileBounds&, const ClearValues&,
+                                     PipelineCounters&);
+template size_t clearTile<ScalarLanes>(const TileJob&, std::span<const uint32_t>, const TileBounds&, const ClearValues&,
+                                       PipelineCounters&);
 
 }  // namespace raster

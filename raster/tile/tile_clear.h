@@ -6,9 +6,12 @@
 //           target without blending, and every one of its fragments passes the depth test
 //           (it has none, or the tile's depth is being cleared to a value all of them pass:
 //           the floor under a camera, a post pass's fullscreen triangle);
-//   depth   the same first triangle belongs to a depth-only draw that writes depth: its
-//           codes are stored in place of the clear, without a test, and the walk starts
-//           at the second triangle (shadow maps whose first triangle fills the tile).
+//   depth   the same first triangle writes depth: its codes are stored in place of the
+//           clear, without a test, and the walk starts at the second triangle. A
+//           depth-only draw needs nothing more (shadow maps whose first triangle fills the
+//           tile); a colour draw's triangle is then shaded whole by the covered-tile path
+//           (covered_tile.h: the floor under a camera), where the lane type has it and the
+//           tile is not walked visibility first (which would shade only what stays seen).
 //
 // Whether every fragment passes is proven from the z plane's extremes over the tile with a
 // bound on the float rounding of its evaluation, so a triangle near the cleared depth
@@ -28,11 +31,13 @@ namespace raster {
 struct TileClearPlan {
   ClearValues rest;              // the clears still to be done (merge::clearRect)
   bool firstStoresDepth = false; // the first triangle's depth codes replace the depth clear
+  bool firstShadedWhole = false; // and its colour fragments are shaded by the covered-tile path
 };
 
-// What of `pending` the tile needs, given its bin (API order).
+// What of `pending` the tile needs, given its bin (API order). `shadesWhole`: the tile's
+// lane type can shade the bin's first triangle whole (canShadeTileWhole).
 TileClearPlan planTileClear(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile,
-                            const ClearValues& pending);
+                            const ClearValues& pending, bool shadesWhole);
 
 // True when the triangle's depth test passes at every pixel centre of `rect` against a
 // buffer holding `stored` everywhere (the test as its draw's state asks for it).
@@ -40,8 +45,10 @@ bool depthTestPassesEverywhere(const SetupTriangle& tri, const RasterState& stat
                                uint32_t stored, const TileBounds& rect);
 
 // Clears the tile as planned; returns how many of the bin's first triangles that did the
-// work of (0 or 1), which the walk then skips. F is the lane type the tile is walked with.
+// work of (0 or 1), which the walk then skips. F is the lane type the tile is walked with;
+// `counters` count the fragments a triangle shaded whole.
 template <class F>
-size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending);
+size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending,
+                 PipelineCounters& counters);
 
 }  // namespace raster

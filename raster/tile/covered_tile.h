@@ -12,6 +12,7 @@
 #include <span>
 
 #include "raster/contract.h"
+#include "raster/limits.h"
 #include "raster/tile/lane_layout.h"
 
 namespace raster {
@@ -24,12 +25,25 @@ bool shadeCoveredTile(const TileJob&, const TileBounds&, std::span<const uint32_
   return false;
 }
 
-// Whether lane type F has the path, and for which tiles: whole 4x4 blocks, and draws whose
-// lane groups GroupShader pairs (the path shades a block's two groups as one pair).
+// Whether lane type F has the path for a draw: one whose lane groups GroupShader pairs (the
+// path shades a block's two groups as one pair).
 template <class F>
-bool canShadeTileWhole(const TileBounds&, const DrawRecord&) {
+bool canShadeBlocksWhole(const DrawRecord&) {
   return false;
 }
+
+// And for a tile of whole 4x4 blocks.
+template <class F>
+bool canShadeTileWhole(const TileBounds& tile, const DrawRecord& draw) {
+  constexpr int kBlock = limits::kBlockSize;
+  return canShadeBlocksWhole<F>(draw) && (tile.x1 + 1 - tile.x0) % kBlock == 0 && (tile.y1 + 1 - tile.y0) % kBlock == 0;
+}
+
+// One 4x4 block of the path: every pixel covered by `tri` and passing its depth test (done
+// by the caller), shaded as one pair, the block's upper group then its lower one, as
+// GroupShader pairs them, and merged. Only where canShadeTileWhole holds for the draw.
+template <class F>
+void shadeBlockWhole(const TileJob&, const SetupTriangle&, const LaneLayout<F>&, int, int, PipelineCounters&) {}
 
 // The path itself, for a triangle the caller has shown to cover the tile, each of whose
 // fragments passes its depth test (its codes, where it writes depth, are stored by the

@@ -16,15 +16,14 @@
 namespace raster {
 
 template <>
-inline bool canShadeTileWhole<simd::Float8>(const TileBounds& tile, const DrawRecord& draw) {
-  constexpr int kBlock = limits::kBlockSize;
-  // Pairs only where GroupShader forms them; no partial blocks.
-  return shadedInPairs(draw) && (tile.x1 + 1 - tile.x0) % kBlock == 0 && (tile.y1 + 1 - tile.y0) % kBlock == 0;
+inline bool canShadeBlocksWhole<simd::Float8>(const DrawRecord& draw) {
+  return shadedInPairs(draw);   // pairs only where GroupShader forms them
 }
 
 template <>
-inline void shadeTileWhole<simd::Float8>(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
-                                         const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
+[[gnu::always_inline]] inline void shadeBlockWhole<simd::Float8>(const TileJob& job, const SetupTriangle& tri,
+                                                                 const LaneLayout<simd::Float8>& layout, int blockX,
+                                                                 int blockY, PipelineCounters& counters) {
   using simd::Float8;
   using simd::Float8x2;
   constexpr int kBlock = limits::kBlockSize;
@@ -37,43 +36,47 @@ inline void shadeTileWhole<simd::Float8>(const TileJob& job, const TileBounds& t
   FragmentInput<Float8x2> in;
   Float8x2 varyings[limits::kMaxVaryingFloats];
   FragmentOutput<Float8x2> out;
-  for (int blockY = tile.y0; blockY <= tile.y1; blockY += kBlock) {
-    for (int blockX = tile.x0; blockX <= tile.x1; blockX += kBlock) {
-      const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
-      interpolateFragment(job, tri, px, py, fragmentDepth(tri, px, py), in, varyings);
-      const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;   // interpolation counts as rasterization
-      draw.shader->shadeFragments(in, varyings, out);
-      const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
+  const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
+  interpolateFragment(job, tri, px, py, fragmentDepth(tri, px, py), in, varyings);
+  const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;   // interpolation counts as rasterization
+  draw.shader->shadeFragments(in, varyings, out);
+  const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
 
-      size_t upper[8], lower[8];
-      const size_t origin = size_t(blockY) * size_t(fb.width) + size_t(blockX);
-      for (int i = 0; i < 8; ++i) {
-        upper[i] = origin + layout.texel[i];
-        lower[i] = upper[i] + 2 * size_t(fb.width);
-      }
-      for (int k = 0; k < outputs; ++k) {
-        Texture& target = *fb.colors[k];
-        merge::prefetchBlockRowsForWrite(target, origin, size_t(fb.width), kBlock);
-        const glsl::vec4<Float8x2>& c = out.color[k];
-        if (!additive && target.format == TexelFormat::RGBA8) {
-          merge::writeRgba8RowsPair(c, target.rgba8.data(), upper, lower);
-        } else if (target.format == TexelFormat::RGBA16F) {
-          merge::writeHalfRowsPair(c, target.half.data(), upper, lower, additive);
-        } else {
-          merge::writeColorOutput(target, merge::lowGroup(c), upper, 0xFFu, additive);
-          merge::writeColorOutput(target, merge::highGroup(c), lower, 0xFFu, additive);
-        }
-      }
-      if (job.timeStages) {
-        counters.shadeCycles += mergeStart - shadeStart;
-        counters.mergeCycles += cycleCount() - mergeStart;
-      }
+  size_t upper[8], lower[8];
+  const size_t origin = size_t(blockY) * size_t(fb.width) + size_t(blockX);
+  for (int i = 0; i < 8; ++i) {
+    upper[i] = origin + layout.texel[i];
+    lower[i] = upper[i] + 2 * size_t(fb.width);
+  }
+  for (int k = 0; k < outputs; ++k) {
+    Texture& target = *fb.colors[k];
+    merge::prefetchBlockRowsForWrite(target, origin, size_t(fb.width), kBlock);
+    const glsl::vec4<Float8x2>& c = out.color[k];
+    if (!additive && target.format == TexelFormat::RGBA8) {
+      merge::writeRgba8RowsPair(c, target.rgba8.data(), upper, lower);
+    } else if (target.format == TexelFormat::RGBA16F) {
+      merge::writeHalfRowsPair(c, target.half.data(), upper, lower, additive);
+    } else {
+      merge::writeColorOutput(target, merge::lowGroup(c), upper, 0xFFu, additive);
+      merge::writeColorOutput(target, merge::highGroup(c), lower, 0xFFu, additive);
     }
   }
-  const unsigned lanes = unsigned((tile.x1 + 1 - tile.x0) * (tile.y1 + 1 - tile.y0));
-  counters.lanesCovered += lanes;
-  counters.laneGroupsShaded += lanes / 8;
-  counters.lanesShaded += lanes;
+  if (job.timeStages) {
+    counters.shadeCycles += mergeStart - shadeStart;
+    counters.mergeCycles += cycleCount() - mergeStart;
+  }
+  counters.lanesCovered += 16;
+  counters.laneGroupsShaded += 2;
+  counters.lanesShaded += 16;
+}
+
+template <>
+inline void shadeTileWhole<simd::Float8>(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                                         const LaneLayout<simd::Float8>& layout, PipelineCounters& counters) {
+  constexpr int kBlock = limits::kBlockSize;
+  for (int blockY = tile.y0; blockY <= tile.y1; blockY += kBlock)
+    for (int blockX = tile.x0; blockX <= tile.x1; blockX += kBlock)
+      shadeBlockWhole(job, tri, layout, blockX, blockY, counters);
 }
 
 inline bool shadeCoveredTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,

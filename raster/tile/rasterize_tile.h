@@ -13,7 +13,9 @@
 //                    triangles: depth-test every triangle first, then shade only each
 //                    pixel's visible fragment;
 //   covered_tile.h   a tile one triangle covers whole (a fullscreen pass) is shaded block
-//                    by block straight from the planes.
+//                    by block straight from the planes; so is a tile's first triangle that
+//                    covers it and passes its depth test everywhere (tile_clear.h), and, in
+//                    the in-order walk, any 4x4 block a triangle covers whole and passes.
 // A tile is rasterized by one task and touches no other tile's pixels, so the output does
 // not depend on the thread count.
 #pragma once

@@ -17,6 +17,7 @@
 #include <span>
 
 #include "raster/contract.h"
+#include "raster/tile/covered_tile.h"
 #include "raster/tile/group_shader.h"
 #include "raster/tile/interpolate.h"
 #include "raster/tile/lane_layout.h"
@@ -49,6 +50,12 @@ class TileTriangles {
   // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
   // triangle `index`, for lane types with kDepthTestsInBlocks (visible_first_avx2.h).
   void markBlock(int lx, int ly, uint32_t passed, uint32_t index);
+
+  // forEachVisible, a 4x4 block at a time (upper group, then lower), where a block whose
+  // 16 pixels all show one triangle goes to whole(lx, ly, index) first: when that returns
+  // false, its groups go to shade as usual. Float8 has it (visible_first_avx2.h).
+  template <class Shade, class Whole>
+  void forEachVisible(Shade&& shade, Whole&& whole) const;
 
   // Calls shade(lx, ly, index, laneMask) once per triangle that marked group (lx, ly).
   template <class Shade>
@@ -98,6 +105,22 @@ class TileTriangles {
 
 namespace raster {
 
+// Pass 2 for one group: the lanes `laneMask` of the group at tile offset (lx, ly), which
+// show triangle `index`, prepared as the in-order walk prepares them and shaded.
+template <class F>
+[[gnu::always_inline]] inline void shadeVisible(const TileJob& job, const TileBounds& tile, const LaneLayout<F>& layout,
+                                                PipelineCounters& counters, GroupShader<F>& shader, int lx, int ly,
+                                                uint32_t index, unsigned laneMask) {
+  const SetupTriangle& tri = job.triangles[index];
+  const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
+  const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
+  counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+  // Interpolated at once: here a pair's groups are mostly of different triangles, and
+  // leaving it to the pair had made the hdr scene pass 8% slower.
+  fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
+  shader.push();
+}
+
 // Rasterizes one tile visibility first (see the top of this file).
 template <class F>
 void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
@@ -105,6 +128,9 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
   thread_local TileTriangles<F> visibleFlip(true), visible(false);
   TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
   shown.reset();
+  const auto shadeGroup = [&](int lx, int ly, uint32_t index, unsigned laneMask) __attribute__((always_inline)) {
+    shadeVisible(job, tile, layout, counters, shader, lx, ly, index, laneMask);
+  };
   if constexpr (kDepthTestsInBlocks<F>) {
     // The visibility pass needs no quads: its depth tests run a whole block at a time.
     for (uint32_t index : bin) {
@@ -115,21 +141,20 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
         if (passed && writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
       });
     }
+    // A block that shows one triangle whole is shaded as one pair straight from the planes
+    // (covered_tile.h); each pixel is written once, so the order of blocks is free.
+    shown.forEachVisible(shadeGroup, [&](int lx, int ly, uint32_t index) __attribute__((always_inline)) {
+      const SetupTriangle& tri = job.triangles[index];
+      if (!canShadeBlocksWhole<F>(job.draws[tri.drawIndex])) return false;
+      shadeBlockWhole(job, tri, layout, tile.x0 + lx, tile.y0 + ly, counters);
+      return true;
+    });
   } else {
     depthTestBin<F>(job, tile, bin, layout, [&](uint32_t index, const SetupTriangle&, GroupAt passed, F) __attribute__((always_inline)) {
       shown.mark(passed.x - tile.x0, passed.y - tile.y0, passed.laneMask, index);
     });
+    shown.forEachVisible(shadeGroup);
   }
-  shown.forEachVisible([&](int lx, int ly, uint32_t index, unsigned laneMask) {
-    const SetupTriangle& tri = job.triangles[index];
-    const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
-    const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
-    counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
-    // Interpolated at once: here a pair's groups are mostly of different triangles, and
-    // leaving it to the pair had made the hdr scene pass 8% slower.
-    fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
-    shader.push();
-  });
 }
 
 }  // namespace raster

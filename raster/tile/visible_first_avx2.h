@@ -70,5 +70,52 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
   }
 }
 
+#if RASTER_ZMM_PAIRS
+template <>
+template <class Shade, class Whole>
+void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) const {
+  const __m256i toLanes = simd::rowsToQuadLanes(flipY_);
+  // The group at (lx, ly) to shade, one call per triangle it shows (as forEachVisible).
+  const auto shadeGroup = [&](int lx, int ly) __attribute__((always_inline)) {
+    const uint32_t* at = entries_ + ly * kTile + lx;
+    alignas(32) uint32_t lanes[8];
+    const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
+                                           _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)));
+    const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+    const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
+    unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
+    while (remaining) {
+      const uint32_t index = lanes[__builtin_ctz(remaining)];
+      const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
+      const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
+      remaining &= ~laneMask;
+      shade(lx, ly, index, laneMask);
+    }
+  };
+  for (int blockRow = 0; blockRow < kTile / 4; ++blockRow) {
+    const uint32_t upper = marked_[2 * blockRow], lower = marked_[2 * blockRow + 1];
+    const int ly = 4 * blockRow;
+    for (uint32_t bits = upper | lower; bits; bits &= bits - 1) {
+      const uint32_t bit = bits & (0u - bits);
+      const int lx = __builtin_ctz(bits) * kGroupWidth;
+      if (upper & lower & bit) {   // both groups marked: does one triangle show in all 16?
+        const uint32_t* at = entries_ + ly * kTile + lx;
+        const __m512i block = _mm512_inserti64x4(
+            _mm512_castsi256_si512(_mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
+                                                     _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)))),
+            _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at + 2 * kTile)),
+                              _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + 3 * kTile))),
+            1);
+        if (at[0] != kNone && _mm512_cmpneq_epi32_mask(block, _mm512_set1_epi32(int(at[0]))) == 0 && whole(lx, ly, at[0]))
+          continue;
+      }
+      if (upper & bit) shadeGroup(lx, ly);
+      if (lower & bit) shadeGroup(lx, ly + 2);
+    }
+  }
+}
+#endif
+
 }  // namespace raster
 #endif

@@ -1,9 +1,11 @@
-// The in-order walk's whole blocks (tile/rasterize_tile.cpp, walkInOrder): a 4x4 block that
+// Whole blocks: in the in-order walk (tile/rasterize_tile.cpp, walkInOrder) a 4x4 block that
 // its triangle covers and passes at every pixel is shaded at once as one pair, while the
 // lane groups of partly covered or partly hidden blocks wait to be paired. Colours must
 // still land in the order the walk makes them: a group left waiting by one triangle is
-// written before a later triangle's whole block over the same pixels. Held against the
-// reference lanes (--scalar: one quad at a time, no pairs, no whole blocks), byte for byte.
+// written before a later triangle's whole block over the same pixels. Visibility first
+// (tile/visible_first.h) shades a block that shows one triangle whole the same way. Held
+// against the reference lanes (--scalar: one quad at a time, no pairs, no whole blocks),
+// byte for byte.
 #include <doctest/doctest.h>
 
 #include <random>
@@ -71,12 +73,14 @@ TEST_SUITE("geometry") {
     CHECK(farPixels == 0);
   }
 
-  TEST_CASE("overlapping draws at random depths, few to a tile: whole blocks and waiting groups in draw order") {
+  TEST_CASE("overlapping draws at random depths: whole blocks in order and visibility first match the reference") {
     std::mt19937 rng(11);
-    for (int trial = 0; trial < 40; ++trial) {
+    for (int trial = 0; trial < 48; ++trial) {
       CAPTURE(trial);
       std::vector<std::vector<gltest::Vertex>> meshes;
-      const int draws = 2 + trial % 6;   // fewer than 16 triangles a tile: walked in order
+      // Up to 7 triangles: the tile is walked in order; 16 to 39: visibility first, where a
+      // block that shows one triangle whole is shaded as one pair too.
+      const int draws = trial < 40 ? 2 + trial % 6 : 16 + 3 * (trial - 40);
       for (int d = 0; d < draws; ++d) {
         const auto point = [&] { return glm::vec2(gltest::uniform(rng, -16.0f, 80.0f), gltest::uniform(rng, -16.0f, 80.0f)); };
         const glm::vec4 color(gltest::uniform(rng, 0.0f, 1.0f), gltest::uniform(rng, 0.0f, 1.0f), gltest::uniform(rng, 0.0f, 1.0f), 1.0f);

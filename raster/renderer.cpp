@@ -219,7 +219,8 @@ void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
   const uint32_t end = uint32_t(triangles_.size()), count = end - firstTriangle;
   // A part per thread, of at least half a setup chunk's triangles (each part's own bins
   // cost a pass over every tile to empty and append), and whole chunks to each.
-  const int parts = std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)), std::max(setupChunks, 1)});
+  const int parts = std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)),
+                              setupChunks > 1 ? setupChunks : pool_.threads()});
   if (parts <= 1) {
     if (setupChunks > 1) pool_.parallelFor(setupChunks, [&](int c) { copyChunk(c); });
     counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, end);

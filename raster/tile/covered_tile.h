@@ -41,7 +41,7 @@ bool canShadeTileWhole(const TileBounds& tile, const DrawRecord& draw) {
 
 // One 4x4 block of the path: every pixel covered by `tri` and passing its depth test (done
 // by the caller), shaded as one pair, the block's upper group then its lower one, as
-// GroupShader pairs them, and merged. Only where canShadeTileWhole holds for the draw.
+// GroupShader pairs them, and merged. Only where canShadeBlocksWhole holds for the draw.
 template <class F>
 void shadeBlockWhole(const TileJob&, const SetupTriangle&, const LaneLayout<F>&, int, int, PipelineCounters&) {}
 

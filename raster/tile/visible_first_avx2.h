@@ -44,6 +44,31 @@ inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t pass
 }
 #endif
 
+namespace visible_first_detail {
+
+// One Float8 group's entries, its two memory rows from `at` (a tile row apart): shade(lx,
+// ly, index, laneMask) once per triangle they name, the lanes in quad order.
+template <class Shade>
+[[gnu::always_inline]] inline void visitGroup(const uint32_t* at, int tileWidth, __m256i toLanes, int lx, int ly,
+                                              Shade&& shade) {
+  alignas(32) uint32_t lanes[8];
+  const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
+                                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + tileWidth)));
+  const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+  const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
+  unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
+  while (remaining) {
+    const uint32_t index = lanes[__builtin_ctz(remaining)];
+    const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
+    const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
+    remaining &= ~laneMask;
+    shade(lx, ly, index, laneMask);
+  }
+}
+
+}  // namespace visible_first_detail
+
 template <>
 template <class Shade>
 void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
@@ -51,21 +76,7 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
   for (int row = 0; row < kTile / 2; ++row) {
     for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
       const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
-      const uint32_t* at = entries_ + ly * kTile + lx;
-      alignas(32) uint32_t lanes[8];
-      const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
-                                             _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)));
-      const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
-      _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
-      const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
-      unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
-      while (remaining) {
-        const uint32_t index = lanes[__builtin_ctz(remaining)];
-        const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
-        const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
-        remaining &= ~laneMask;
-        shade(lx, ly, index, laneMask);
-      }
+      visible_first_detail::visitGroup(entries_ + ly * kTile + lx, kTile, toLanes, lx, ly, shade);
     }
   }
 }
@@ -75,24 +86,6 @@ template <>
 template <class Shade, class Whole>
 void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) const {
   const __m256i toLanes = simd::rowsToQuadLanes(flipY_);
-  // The group at (lx, ly) to shade, one call per triangle it shows (as forEachVisible).
-  const auto shadeGroup = [&](int lx, int ly) __attribute__((always_inline)) {
-    const uint32_t* at = entries_ + ly * kTile + lx;
-    alignas(32) uint32_t lanes[8];
-    const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
-                                           _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)));
-    const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
-    const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
-    unsigned remaining = ~unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
-    while (remaining) {
-      const uint32_t index = lanes[__builtin_ctz(remaining)];
-      const __m256i same = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(int(index)));
-      const unsigned laneMask = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
-      remaining &= ~laneMask;
-      shade(lx, ly, index, laneMask);
-    }
-  };
   for (int blockRow = 0; blockRow < kTile / 4; ++blockRow) {
     const uint32_t upper = marked_[2 * blockRow], lower = marked_[2 * blockRow + 1];
     const int ly = 4 * blockRow;
@@ -110,8 +103,8 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) c
         if (at[0] != kNone && _mm512_cmpneq_epi32_mask(block, _mm512_set1_epi32(int(at[0]))) == 0 && whole(lx, ly, at[0]))
           continue;
       }
-      if (upper & bit) shadeGroup(lx, ly);
-      if (lower & bit) shadeGroup(lx, ly + 2);
+      if (upper & bit) visible_first_detail::visitGroup(entries_ + ly * kTile + lx, kTile, toLanes, lx, ly, shade);
+      if (lower & bit) visible_first_detail::visitGroup(entries_ + (ly + 2) * kTile + lx, kTile, toLanes, lx, ly + 2, shade);
     }
   }
 }

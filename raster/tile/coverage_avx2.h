@@ -4,6 +4,8 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
+#include <type_traits>
+
 #include "raster/simd/intrinsics.h"
 #include "raster/tile/coverage.h"
 
@@ -77,7 +79,7 @@ constexpr int64_t kEdgeValueLimit = int64_t(1) << 30;
 }
 
 #if RASTER_ZMM_PAIRS
-// walkSmallTriangleBlocks (coverage.h) for WalkEdge8: it applies where every edge has small
+// walkSmallTriangleBlocks (coverage.h) for Float8: it applies where every edge has small
 // steps and every edge value over the walked blocks' pixels lies within +-2^30.
 //
 // Each edge's values at a block's 16 pixels sit in one register, stepped by a vector add
@@ -86,24 +88,30 @@ constexpr int64_t kEdgeValueLimit = int64_t(1) << 30;
 // block instead of one per block whose outcome waits on the compares. The values are exact
 // in 32 bits, so every bit is blockCoverage's; the blocks and their order are the region
 // walk's (walk.h), which visits the same blocks row by row, left to right.
-template <class VisitBlock>
-[[gnu::always_inline]] inline bool walkSmallTriangleBlocks(const WalkEdge8 (&edges)[3], int x0, int y0, int x1, int y1,
+template <class F, class VisitBlock>
+  requires std::is_same_v<F, simd::Float8>
+[[gnu::always_inline]] inline bool walkSmallTriangleBlocks(const EdgeFunction (&edges)[3], int x0, int y0, int x1, int y1,
                                                            int width, int height, VisitBlock&& visitBlock) {
   constexpr int kBlock = limits::kBlockSize;
   const int blockX0 = x0 & ~(kBlock - 1), blockY0 = y0 & ~(kBlock - 1);
   const int columns = (x1 - blockX0) / kBlock + 1, rows = (y1 - blockY0) / kBlock + 1;
   static_assert(limits::kTileSize / kBlock <= 16, "a row's masks are kept in 16 bits");
+  const __m512i col = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+  const __m512i row = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3);
   __m512i value[3], stepX[3], stepY[3];
   for (int i = 0; i < 3; ++i) {
-    const WalkEdge8& e = edges[i];
-    if (!e.smallSteps) return false;
-    const int64_t c00 = e.f.at(blockX0, blockY0);
+    const EdgeFunction& e = edges[i];
+    if (std::abs(e.dcdx) + std::abs(e.dcdy) >= (int64_t(1) << 28)) return false;   // WalkEdge::smallSteps
+    const int64_t c00 = e.at(blockX0, blockY0);
     int64_t high, low;   // over every pixel of the blocks
-    edgeExtremes(e.f, columns * kBlock - 1, rows * kBlock - 1, high, low);
+    edgeExtremes(e, columns * kBlock - 1, rows * kBlock - 1, high, low);
     if (c00 + high >= kEdgeValueLimit || c00 + low <= -kEdgeValueLimit) return false;
-    value[i] = _mm512_add_epi32(e.pixel16, _mm512_set1_epi32(int32_t(c00)));
-    stepX[i] = _mm512_set1_epi32(int32_t(-e.f.dcdx * kBlock));
-    stepY[i] = _mm512_set1_epi32(int32_t(e.f.dcdy * kBlock));
+    // WalkEdge8::pixel16: dcdy * row - dcdx * col per pixel, exact in 32 bits here.
+    const __m512i pixel = _mm512_sub_epi32(_mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdy)), row),
+                                           _mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdx)), col));
+    value[i] = _mm512_add_epi32(pixel, _mm512_set1_epi32(int32_t(c00)));
+    stepX[i] = _mm512_set1_epi32(int32_t(-e.dcdx * kBlock));
+    stepY[i] = _mm512_set1_epi32(int32_t(e.dcdy * kBlock));
   }
   const __m512i zero = _mm512_setzero_si512();
   for (int row = 0; row < rows; ++row) {

@@ -30,8 +30,6 @@ template <class F, class VisitBlock>
   const RasterState& state = job.draws[tri.drawIndex].state;
   const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
   const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
-  const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
-  const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
   // Depth test and write, and no colour the shader writes is kept.
   const bool depthOnly =
       state.depthTest && state.depthWrite && fb.depth && colorOutputsWritten(job.draws[tri.drawIndex], fb) == 0;
@@ -40,8 +38,10 @@ template <class F, class VisitBlock>
   // regions fill whole.
   const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
                            ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
-  if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks(edges, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
+  if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks<F>(tri.edge, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
     return;
+  const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
+  const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;
   // 16x16 regions first (llvmpipe's middle level): a region wholly inside needs no edge
   // tests per block, one wholly outside no blocks at all. Blocks are still walked a whole
   // row of the triangle's extent at a time, so texture reads run along long rows.

@@ -26,6 +26,15 @@ uint64_t TileBins::binTriangles(std::span<const SetupTriangle> triangles, uint32
   uint64_t binned = 0;
   for (uint32_t t = first; t < end; ++t) {
     const SetupTriangle& tri = triangles[t];
+    // Bounds inside one tile: binned there without the corner tests, as llvmpipe bins a
+    // triangle contained in a single tile (lp_setup_bin_triangle). Most triangles of a
+    // detailed mesh are; one that covers no pixel centre of its bounds then visits no
+    // block of the tile (the walk tests every pixel).
+    if (tri.minX / kTileSize == tri.maxX / kTileSize && tri.minY / kTileSize == tri.maxY / kTileSize) {
+      bins_[size_t(tri.minY / kTileSize) * size_t(tilesX_) + size_t(tri.minX / kTileSize)].push_back(t);
+      ++binned;
+      continue;
+    }
     for (int tileY = tri.minY / kTileSize; tileY <= tri.maxY / kTileSize; ++tileY) {
       for (int tileX = tri.minX / kTileSize; tileX <= tri.maxX / kTileSize; ++tileX) {
         // The overlap of the tile and the triangle's bounds.

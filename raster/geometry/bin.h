@@ -2,7 +2,8 @@
 //
 // The framebuffer is cut into kTileSize tiles (limits.h). A triangle goes into every tile
 // that its pixel bounds touch, unless one of its edge functions rejects the whole overlap of
-// tile and bounds at all four corners (the function is linear, so the corners decide).
+// tile and bounds at all four corners (the function is linear, so the corners decide); a
+// triangle whose bounds lie in one tile goes there untested, as in llvmpipe.
 // Triangles are appended in API order, so each tile sees its triangles in that order, and
 // the tile stage owes the output's independence of thread count to nothing else.
 //

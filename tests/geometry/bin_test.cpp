@@ -1,6 +1,7 @@
 // Binning (geometry/bin.h) against hand-worked expectations: triangles crossing tile corners
 // go into exactly the tiles they cover (not into a tile their bounds touch but one edge rejects
-// at all four corners of the overlap), a triangle larger than the screen into every tile, tiles
+// at all four corners of the overlap), a triangle inside one tile into it untested (as
+// llvmpipe bins it), a triangle larger than the screen into every tile, tiles
 // of a framebuffer whose size is not a multiple of 64 have clipped bounds, banded binning equals
 // one pass, and each bin keeps API order.
 //
@@ -122,6 +123,23 @@ TEST_SUITE("geometry") {
     const std::vector<SetupTriangle> tris = {triangleAt(200, 150, 193, 130, 199, 130, 193, 149)};
     CHECK(bins.binTriangles(tris, 0, uint32_t(tris.size())) == 1);
     CHECK(binOf(bins, 11) == Bin{0});
+  }
+
+  // llvmpipe bins a triangle whose bounds lie in one tile there without testing its edges
+  // (lp_setup_bin_triangle), and so does this pipeline: a sliver between pixel centres,
+  // bounds 70..71 x 70..70 in tile 5, covers none and still gets the one entry; the walk
+  // then finds no pixel of it.
+  TEST_CASE("a triangle whose bounds lie in one tile is binned there, covered pixels or not") {
+    SetupOutput out;
+    REQUIRE(setUp(setupState(256, 256), windowVertex(70.6f, 70.2f), windowVertex(72.4f, 70.3f), windowVertex(71.5f, 70.45f), out));
+    const SetupTriangle& sliver = out.triangles[0];
+    REQUIRE(coveredPixels(sliver, 256, 256).empty());
+    REQUIRE(sliver.minX / 64 == sliver.maxX / 64);
+    REQUIRE(sliver.minY / 64 == sliver.maxY / 64);
+    raster::TileBins bins;
+    bins.reset(256, 256);
+    CHECK(bins.binTriangles(out.triangles, 0, 1) == 1);
+    CHECK(binOf(bins, 5) == Bin{0});
   }
 
   TEST_CASE("a triangle larger than the screen lands in every tile") {

@@ -188,7 +188,7 @@ void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& v
 // the lists.
 int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount,
                            size_t primitives) {
-  const AssemblyInput input{setup, shaded_, indices, vertexCount, viewport_};
+  const AssemblyInput input{setup, shaded_, indices, vertexCount, viewport_, !scalarOnly_};
   const int chunks = pool_.threads() > 1 && primitives >= 2 * kSetupChunkPrimitives
                          ? int(std::min<size_t>(primitives / kSetupChunkPrimitives, size_t(4 * pool_.threads())))
                          : 1;

@@ -16,6 +16,21 @@ void labelLast(SetupLists out, size_t primitive, bool clipped) {
 void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, SetupLists out, PipelineCounters& counters) {
   const size_t perInstance = in.indices.size() / 3;
   clip::Clipper clipper(in.setup.varyingFloats, in.viewport);
+#if RASTER_ZMM_PAIRS
+  // Unclipped triangles wait in a batch of 16, set up together (setup_avx512.h); a clipped
+  // one first sets up those waiting, so the list keeps primitive order. The batch names
+  // records by 32-bit offsets.
+  const bool batched = in.batched && in.shaded.data.size() < (size_t(1) << 31);
+  TriangleBatch batch;
+  uint32_t batchPrimitive[kSetupBatch];
+  const auto setUpBatch = [&] {
+    for (uint32_t lanes = setupTriangleBatch(in.setup, in.shaded.data.data(), batch, out); lanes; lanes &= lanes - 1) {
+      counters.trianglesSetUp++;
+      labelLast(out, batchPrimitive[__builtin_ctz(lanes)], /*clipped=*/false);
+    }
+    batch.count = 0;
+  };
+#endif
   for (size_t p = first; p < end; ++p) {
     const int base = int(p / perInstance) * in.vertexCount;
     const size_t t = (p % perInstance) * 3;
@@ -27,6 +42,17 @@ void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, Setup
       continue;
     }
     if ((m0 | m1 | m2) == 0) {
+#if RASTER_ZMM_PAIRS
+      if (batched) {
+        const int lane = batch.count++;
+        batch.vertex[0][lane] = r0 * in.shaded.stride;
+        batch.vertex[1][lane] = r1 * in.shaded.stride;
+        batch.vertex[2][lane] = r2 * in.shaded.stride;
+        batchPrimitive[lane] = uint32_t(p);
+        if (batch.count == kSetupBatch) setUpBatch();
+        continue;
+      }
+#endif
       if (setupTriangle(in.setup, in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), out)) {
         counters.trianglesSetUp++;
         labelLast(out, p, /*clipped=*/false);
@@ -34,6 +60,9 @@ void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, Setup
       continue;
     }
     counters.trianglesClipped++;
+#if RASTER_ZMM_PAIRS
+    if (batch.count) setUpBatch();
+#endif
     const clip::Polygon& polygon =
         clipper.clipTriangle(in.shaded.record(r0), in.shaded.record(r1), in.shaded.record(r2), m0 | m1 | m2);
     // The fan (p[i-1], p[i], p[0]) keeps GL's last-vertex convention.
@@ -43,6 +72,9 @@ void assemblePrimitives(const AssemblyInput& in, size_t first, size_t end, Setup
       labelLast(out, p, /*clipped=*/true);
     }
   }
+#if RASTER_ZMM_PAIRS
+  if (batch.count) setUpBatch();
+#endif
 }
 
 }  // namespace raster

@@ -22,6 +22,9 @@ struct AssemblyInput {
   std::span<const uint32_t> indices;   // three per triangle, into one instance's vertices
   int vertexCount;                     // vertices per instance
   const ViewportTransform& viewport;   // for the window positions of vertices clipping makes
+  // Unclipped triangles set up 16 at a time where the build has the batch (setup_avx512.h):
+  // the same records; off for `raster --scalar`.
+  bool batched = true;
 };
 
 // Assembles primitives [first, end) of the draw, appending what survives to `out` in that

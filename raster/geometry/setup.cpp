@@ -12,6 +12,8 @@
 namespace raster {
 namespace {
 
+using setup_detail::PlaneSetup;
+using setup_detail::planeOf;
 using vertex_record::kVaryings;
 using vertex_record::kWindow;
 constexpr int kFixedOrder = limits::kSubPixelBits;   // FIXED_ORDER
@@ -23,23 +25,6 @@ struct FixedTriangle {
 
 // calc_fixed_position (SSE path): (v - pixel_offset) * 256, cvtps2dq.
 int32_t snap(float windowCoord) { return format::roundToNearestEven((windowCoord - 0.5f) * kFixedOne); }
-
-// The setup JIT's per-triangle derived values (init_args).
-struct PlaneSetup {
-  float x0Center, y0Center;
-  float dx01Ooa, dy01Ooa, dx20Ooa, dy20Ooa;
-};
-
-// calc_coef4: the plane of one quantity with values a0, a1, a2 at the three vertices.
-Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
-  const float da01 = a0 - a1;
-  const float da20 = a2 - a0;
-  Plane p;
-  p.dadx = da01 * s.dy20Ooa - da20 * s.dy01Ooa;
-  p.dady = da20 * s.dx01Ooa - da01 * s.dx20Ooa;
-  p.a0 = a0 - (p.dadx * s.x0Center + p.dady * s.y0Center);
-  return p;
-}
 
 // lp_do_offset_tri for a unorm depth buffer: units + max(|dz/dx|, |dz/dy|) * factor.
 float polygonOffset(const SetupState& state, const float* p0, const float* p1, const float* p2, float ooa) {
@@ -137,23 +122,28 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   s.dy01Ooa = fdy01 * ooa;
   tri.z = planeOf(s, p0[2], p1[2], p2[2]);
   tri.w = planeOf(s, p0[3], p1[3], p2[3]);
+  setup_detail::appendVaryingPlanes(state, s, vert[0], vert[1], vert[2], tri, out);
+  tri.drawIndex = state.drawIndex;
+  tri.frontFacing = frontFacing;
+  return true;
+}
 
+void setup_detail::appendVaryingPlanes(const SetupState& state, const PlaneSetup& s, const float* v0, const float* v1,
+                                       const float* v2, SetupTriangle& tri, SetupLists out) {
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
   // The interp=affine method (methods.h) takes the plain values (times 1, exactly): planes
   // that are linear in screen space.
   const bool perspective = methods::active().interp == InterpMethod::Perspective;
-  const float oow0 = perspective ? p0[3] : 1.0f, oow1 = perspective ? p1[3] : 1.0f, oow2 = perspective ? p2[3] : 1.0f;
+  const float oow0 = perspective ? v0[kWindow + 3] : 1.0f, oow1 = perspective ? v1[kWindow + 3] : 1.0f,
+              oow2 = perspective ? v2[kWindow + 3] : 1.0f;
   // The list grows once per triangle (without zeroing), and the loop, free of push_back's
   // capacity checks, is one the compiler vectorizes: the same operations in every lane.
   tri.varyingBase = uint32_t(out.varyingPlanes.size());
   out.varyingPlanes.resize(out.varyingPlanes.size() + size_t(state.varyingFloats));
   Plane* planes = out.varyingPlanes.data() + tri.varyingBase;
-  const float *values0 = vert[0] + kVaryings, *values1 = vert[1] + kVaryings, *values2 = vert[2] + kVaryings;
+  const float *values0 = v0 + kVaryings, *values1 = v1 + kVaryings, *values2 = v2 + kVaryings;
   for (int v = 0; v < state.varyingFloats; ++v)
     planes[v] = planeOf(s, values0[v] * oow0, values1[v] * oow1, values2[v] * oow2);
-  tri.drawIndex = state.drawIndex;
-  tri.frontFacing = frontFacing;
-  return true;
 }
 
 }  // namespace raster

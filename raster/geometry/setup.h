@@ -21,6 +21,9 @@
 // Planes: every interpolated quantity a gets a0, dadx, dady in float32 with the setup
 // JIT's exact operation order, referenced to pixel (0, 0)'s centre; perspective varyings
 // are premultiplied by 1/w. Fragments evaluate fma(dady, py, fma(dadx, px, a0)).
+//
+// setupTriangle is the reference, one triangle at a time; setup_avx512.h sets up 16 at once
+// (assemble.cpp batches unclipped triangles for it) and appends the same records.
 #pragma once
 
 #include <cstdint>
@@ -61,4 +64,33 @@ float polygonOffsetUnits(float units, int depthBits);
 // conservative.)
 bool setupTriangle(const SetupState& state, const float* v0, const float* v1, const float* v2, SetupLists out);
 
+namespace setup_detail {
+
+// The setup JIT's per-triangle derived values (init_args), from the window positions of
+// the vertices in their rotated order.
+struct PlaneSetup {
+  float x0Center, y0Center;
+  float dx01Ooa, dy01Ooa, dx20Ooa, dy20Ooa;
+};
+
+// calc_coef4: the plane of one quantity with values a0, a1, a2 at the three vertices.
+inline Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
+  const float da01 = a0 - a1;
+  const float da20 = a2 - a0;
+  Plane p;
+  p.dadx = da01 * s.dy20Ooa - da20 * s.dy01Ooa;
+  p.dady = da20 * s.dx01Ooa - da01 * s.dx20Ooa;
+  p.a0 = a0 - (p.dadx * s.x0Center + p.dady * s.y0Center);
+  return p;
+}
+
+// The varying planes of the triangle `tri` just appended, from its vertex records in
+// rotated order: appended to out.varyingPlanes, tri.varyingBase set.
+void appendVaryingPlanes(const SetupState& state, const PlaneSetup& s, const float* v0, const float* v1,
+                         const float* v2, SetupTriangle& tri, SetupLists out);
+
+}  // namespace setup_detail
+
 }  // namespace raster
+
+#include "raster/geometry/setup_avx512.h"

@@ -74,5 +74,28 @@ template <>
   return pass;
 }
 
+// storeDepthCodes (depth_test.h) sixteen pixels of a row at a time, each code computed as
+// depthTestBlock computes it (the pixels are exact small integers in any lane) and stored
+// straight from its register: the 8-lane form went through the stack and a copy.
+template <>
+inline void storeDepthCodes<simd::Float8>(const SetupTriangle& tri, Texture& depth, int width, const TileBounds& rect) {
+  using simd::Float8x2;
+  const Float8x2 columns(_mm512_setr_ps(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  const size_t rowBytes = size_t(rect.x1 + 1 - rect.x0) * sizeof(uint32_t);
+  for (int y = rect.y0; y <= rect.y1; ++y) {
+    if (y + simd::kPrefetchRowsAhead <= rect.y1)
+      simd::prefetchLines(depth.depth.data() + size_t(y + simd::kPrefetchRowsAhead) * size_t(width) + size_t(rect.x0),
+                          rowBytes);
+    const Float8x2 py = Float8x2(float(y));
+    uint32_t* row = depth.depth.data() + size_t(y) * size_t(width);
+    for (int x = rect.x0; x <= rect.x1; x += 16) {
+      const __m512i codes = depthCodes16(clampDepth(fragmentDepth(tri, Float8x2(float(x)) + columns, py)), depth.format);
+      const int left = rect.x1 + 1 - x;
+      if (left >= 16) _mm512_storeu_si512(row + x, codes);
+      else _mm512_mask_storeu_epi32(row + x, __mmask16((1u << left) - 1u), codes);
+    }
+  }
+}
+
 }  // namespace raster
 #endif

@@ -49,8 +49,11 @@ raster::SetupTriangle zOnly(float a0, float dadx, float dady, float offset) {
 gltest::Vertex corner(glm::vec2 window, float z, int w, int h) {
   return {gltest::clipFromWindow(window, z, 1.0f, w, h), glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)};
 }
-std::vector<gltest::Vertex> fullscreen(float z, int w, int h) {
-  return {corner({-8.0f, -8.0f}, z, w, h), corner({3.0f * float(w), -8.0f}, z, w, h), corner({-8.0f, 3.0f * float(h)}, z, w, h)};
+// `slope`: how much z rises from the first corner to the second and falls to the third, so
+// that each pixel of a row gets its own code (0: one depth everywhere).
+std::vector<gltest::Vertex> fullscreen(float z, int w, int h, float slope = 0.0f) {
+  return {corner({-8.0f, -8.0f}, z, w, h), corner({3.0f * float(w), -8.0f}, z + slope, w, h),
+          corner({-8.0f, 3.0f * float(h)}, z - 0.5f * slope, w, h)};
 }
 
 // Random triangles over the target, at random depths and colours.
@@ -149,15 +152,17 @@ TEST_SUITE("clears") {
       const char* name;
       float z;
       scenes::DrawState state;
+      float slope = 0.0f;
     };
     const Case cases[] = {{"mid depth, LESS", 0.0f, {}}, {"mid depth, LEQUAL", 0.0f, lequal}, {"at the far plane, LESS", 1.0f, {}},
                           {"at the far plane, LEQUAL", 1.0f, lequal}, {"just short of it", 0.99999f, {}},
-                          {"polygon offset", 0.3f, offset}};
+                          {"polygon offset", 0.3f, offset}, {"sloped", 0.0f, {}, 0.6f},
+                          {"sloped, polygon offset", -0.2f, offset, 0.5f}};
     // The covering triangle first, then more triangles over what it left: a few (its tiles
     // walked in order, so the covered-tile path shades it) or many (visibility first).
     for (const Case& c : cases) {
       for (int moreCount : {6, 40}) {
-        Frame second{fullscreen(c.z, kW, kH), c.state};
+        Frame second{fullscreen(c.z, kW, kH, c.slope), c.state};
         const std::vector<gltest::Vertex> more = scattered(rng, moreCount, kW, kH);
         second.vertices.insert(second.vertices.end(), more.begin(), more.end());
         for (bool withColor : {false, true}) {

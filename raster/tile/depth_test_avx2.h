@@ -90,6 +90,7 @@ inline unsigned depthTestRows(const uint32_t* codes, const GroupRows& rows, unsi
   return depthTestRows(codes, rows, at.laneMask, state);
 }
 
+#if !RASTER_ZMM_PAIRS   // with AVX-512, a region row at a time (depth_test_avx512.h)
 template <>
 [[gnu::noinline]] inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width,
                                           int x, int y) {
@@ -110,6 +111,7 @@ template <>
     }
   }
 }
+#endif
 
 }  // namespace raster
 #endif

@@ -74,6 +74,23 @@ template <>
   return pass;
 }
 
+// depthOnlyRegion (depth_test.h) a 16-pixel region row at a time: its codes, test and
+// write in one register each, as depthTestBlock makes them.
+template <>
+[[gnu::noinline]] inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth,
+                                                           int width, int x, int y) {
+  using simd::Float8x2;
+  static_assert(limits::kRegionSize == 16, "a region row is one register");
+  const Float8x2 px = Float8x2(float(x)) + Float8x2(_mm512_setr_ps(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
+  for (int row = 0; row < limits::kRegionSize; ++row) {
+    const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, Float8x2(float(y + row)))), depth.format);
+    uint32_t* stored = depth.depth.data() + size_t(y + row) * size_t(width) + size_t(x);
+    const __m512i old = _mm512_loadu_si512(stored);
+    _mm512_storeu_si512(stored, _mm512_mask_blend_epi32(depthPasses16(0xFFFF, code, old, lessEqual), old, code));
+  }
+}
+
 // storeDepthCodes (depth_test.h) sixteen pixels of a row at a time, each code computed as
 // depthTestBlock computes it (the pixels are exact small integers in any lane) and stored
 // straight from its register: the 8-lane form went through the stack and a copy.

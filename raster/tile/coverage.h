@@ -26,18 +26,22 @@ inline void edgeExtremes(const EdgeFunction& e, int farX, int farY, int64_t& hig
   low = std::min<int64_t>(alongX, 0) + std::min<int64_t>(alongY, 0);
 }
 
+// Whether an edge's steps are small, |dcdx| + |dcdy| < 2^28: a 4x4 block's pixel offsets,
+// dcdy * row - dcdx * col, then fit 30 bits, so the vector walks keep them in 32-bit lanes.
+inline bool hasSmallSteps(const EdgeFunction& e) { return std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28); }
+
 // One edge function as the walk uses it, set up once per triangle and tile.
 struct WalkEdge {
   EdgeFunction f;
   int64_t blockMax, blockMin;     // over a 4x4 block's pixel centres
   int64_t regionMax, regionMin;   // over a 16x16 region's
-  bool smallSteps;                // |dcdx| + |dcdy| < 2^28: a block's pixel offsets fit 30 bits
+  bool smallSteps;                // hasSmallSteps(f)
 
   explicit WalkEdge(const EdgeFunction& e) : f(e) {
     constexpr int kBlock = limits::kBlockSize, kRegion = limits::kRegionSize;
     edgeExtremes(e, kBlock - 1, kBlock - 1, blockMax, blockMin);
     edgeExtremes(e, kRegion - 1, kRegion - 1, regionMax, regionMin);
-    smallSteps = std::abs(e.dcdx) + std::abs(e.dcdy) < (int64_t(1) << 28);
+    smallSteps = hasSmallSteps(e);
   }
 
   // Bits (row * 4 + col) of a block whose first pixel has value c00, set where

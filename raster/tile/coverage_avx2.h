@@ -11,23 +11,36 @@
 
 namespace raster {
 
+#if RASTER_ZMM_PAIRS
+// An edge's offsets from a 4x4 block's first pixel to each of its 16 (lane row * 4 + col):
+// dcdy * row - dcdx * col, exact in 32 bits when the edge hasSmallSteps.
+[[gnu::always_inline]] inline __m512i blockPixelOffsets16(const EdgeFunction& e) {
+  const __m512i col = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+  const __m512i row = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3);
+  return _mm512_sub_epi32(_mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdy)), row),
+                          _mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdx)), col));
+}
+#endif
+
 // A WalkEdge that also holds, for small steps, the offset from a block's first pixel to
 // each of its 16 (bit row * 4 + col): -dcdx * col + dcdy * row, which then fits 32 bits.
 struct WalkEdge8 : WalkEdge {
-  __m256i pixel[2];   // rows 0-1, rows 2-3
 #if RASTER_ZMM_PAIRS
-  __m512i pixel16;    // both in one register
+  __m512i pixel16;    // all 16 in one register (blockPixelOffsets16)
+#else
+  __m256i pixel[2];   // rows 0-1, rows 2-3
 #endif
   explicit WalkEdge8(const EdgeFunction& e) : WalkEdge(e) {
     if (!smallSteps) return;
+#if RASTER_ZMM_PAIRS
+    pixel16 = blockPixelOffsets16(e);
+#else
     const __m256i col = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
     const __m256i xTerm = _mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdx)), col);
     for (int half = 0; half < 2; ++half) {
       const __m256i row = _mm256_add_epi32(_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_set1_epi32(2 * half));
       pixel[half] = _mm256_sub_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdy)), row), xTerm);
     }
-#if RASTER_ZMM_PAIRS
-    pixel16 = _mm512_inserti64x4(_mm512_castsi256_si512(pixel[0]), pixel[1], 1);
 #endif
   }
 
@@ -96,20 +109,15 @@ template <class F, class VisitBlock>
   const int blockX0 = x0 & ~(kBlock - 1), blockY0 = y0 & ~(kBlock - 1);
   const int columns = (x1 - blockX0) / kBlock + 1, rows = (y1 - blockY0) / kBlock + 1;
   static_assert(limits::kTileSize / kBlock <= 16, "a row's masks are kept in 16 bits");
-  const __m512i col = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
-  const __m512i row = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3);
   __m512i value[3], stepX[3], stepY[3];
   for (int i = 0; i < 3; ++i) {
     const EdgeFunction& e = edges[i];
-    if (std::abs(e.dcdx) + std::abs(e.dcdy) >= (int64_t(1) << 28)) return false;   // WalkEdge::smallSteps
+    if (!hasSmallSteps(e)) return false;
     const int64_t c00 = e.at(blockX0, blockY0);
     int64_t high, low;   // over every pixel of the blocks
     edgeExtremes(e, columns * kBlock - 1, rows * kBlock - 1, high, low);
     if (c00 + high >= kEdgeValueLimit || c00 + low <= -kEdgeValueLimit) return false;
-    // WalkEdge8::pixel16: dcdy * row - dcdx * col per pixel, exact in 32 bits here.
-    const __m512i pixel = _mm512_sub_epi32(_mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdy)), row),
-                                           _mm512_mullo_epi32(_mm512_set1_epi32(int32_t(e.dcdx)), col));
-    value[i] = _mm512_add_epi32(pixel, _mm512_set1_epi32(int32_t(c00)));
+    value[i] = _mm512_add_epi32(blockPixelOffsets16(e), _mm512_set1_epi32(int32_t(c00)));
     stepX[i] = _mm512_set1_epi32(int32_t(-e.dcdx * kBlock));
     stepY[i] = _mm512_set1_epi32(int32_t(e.dcdy * kBlock));
   }

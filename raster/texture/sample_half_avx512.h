@@ -137,6 +137,14 @@ struct LinearTaps16 {
   for (int lane : {0, 2, 8, 10}) simd::prefetchRowsAhead(t.half.data(), last, size_t(start[lane]), size_t(t.width), rows);
 }
 
+// The permutation that spreads lanes k, k + 4, k + 8 and k + 12 of a 16-lane register over
+// the four elements of their 128-bit blocks, one lane a block, as blendHalfPairs16 and
+// windowRowTexels16 lay the lanes out.
+[[gnu::always_inline]] inline __m512i blockLanes(int k) {
+  return _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12, k + 12, k + 12,
+                           k + 12);
+}
+
 // Four registers of rgba per lane, v[k] holding lanes k | k + 4 | k + 8 | k + 12 (one lane
 // per 128-bit block), as Float8x2 planes r, g, b, a: a 4x4 transpose in each block, after
 // which block b holds lanes 4b..4b + 3.
@@ -175,8 +183,7 @@ struct LinearTaps16 {
   };
   __m512 blended[4];   // [lane k | k + 4 | k + 8 | k + 12], rgba each
   for (int k = 0; k < 4; ++k) {
-    const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,
-                                            k + 12, k + 12, k + 12);
+    const __m512i lanes = blockLanes(k);
     const __m512 weightX = _mm512_permutexvar_ps(lanes, x.weight), weightY = _mm512_permutexvar_ps(lanes, y.weight);
     __m512 row[2];
     for (int r = 0; r < 2; ++r) {
@@ -210,15 +217,91 @@ inline bool isHalfBilinearClamp(const Texture& t) {
   return blendHalfPairs16(t, x, y, out);
 }
 
-// textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's taps are one
-// texel apart along both axes (tap k spans window texels k and k + 1 of the lane's 4x4
-// window, so the window lies inside the texture): each window row read with one 32-byte load
-// per lane, its texels lined up lane by lane as blendHalfPairs16 lines up a pair (lanes k,
-// k + 4, k + 8 and k + 12 in one register), and blended in the same order, rows then
-// columns, as sampleHalfGridShared does per 8 lanes. Inline, so the shader's compiler drops
-// the taps a port never reads (the downsample reads five of nine). False, with nothing
-// written, when some lane's taps are not one texel apart (an edge, a step other than one
-// texel, a NaN); sampleColorGrid8 takes those.
+// Window row `rowOffset` (texels below each lane's start) of lanes k, k + 4, k + 8 and
+// k + 12, each read with one 32-byte load from its texel start[lane]: texel[v] holds window
+// texel v of the four lanes, one lane per 128-bit block, rgba each (the layout
+// blendHalfPairs16 lines a pair up in).
+[[gnu::always_inline]] inline void windowRowTexels16(const uint16_t* texels, const int* start, size_t rowOffset, int k,
+                                                     __m512 (&texel)[4]) {
+  auto row = [&](int lane) {   // [texel 0 | 1 | 2 | 3] of the lane's window row
+    return _mm512_cvtph_ps(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + (size_t(start[lane]) + rowOffset) * 4)));
+  };
+  const __m512 a = row(k), b = row(k + 4), c = row(k + 8), d = row(k + 12);
+  // Lane blocks [a | b | c | d] of texel v, from each lane's [0 | 1 | 2 | 3]: a 4x4
+  // transpose of 128-bit blocks.
+  const __m512 abLow = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(1, 0, 1, 0));    // a0 a1 b0 b1
+  const __m512 abHigh = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(3, 2, 3, 2));   // a2 a3 b2 b3
+  const __m512 cdLow = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m512 cdHigh = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(3, 2, 3, 2));
+  texel[0] = _mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(2, 0, 2, 0));
+  texel[1] = _mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(3, 1, 3, 1));
+  texel[2] = _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(2, 0, 2, 0));
+  texel[3] = _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(3, 1, 3, 1));
+}
+
+// tapsInWindow (linear_taps_avx2.h) on 16 lanes: whether both texels of every tap lie in
+// the 4-texel window from `start` in every lane.
+[[gnu::always_inline]] inline bool tapsInWindow16(const LinearTaps16 (&taps)[3], __m512i start) {
+  __mmask16 inside = 0xFFFF;
+  for (const LinearTaps16& tap : taps)
+    for (__m512i texel : {tap.i0, tap.i1})
+      inside &= _mm512_cmple_epu32_mask(_mm512_sub_epi32(texel, start), _mm512_set1_epi32(3));
+  return inside == 0xFFFF;
+}
+
+// Per lane block (blockLanes), value[v] for the window texel v = at of that lane, as
+// pickInWindow does per 8 lanes.
+[[gnu::always_inline]] inline __m512 pickInWindow16(const __m512 (&value)[4], __m512i at) {
+  __m512 picked = value[0];
+  for (int v = 1; v < 4; ++v) picked = _mm512_mask_mov_ps(picked, _mm512_cmpeq_epi32_mask(at, _mm512_set1_epi32(v)), value[v]);
+  return picked;
+}
+
+// blendHalfGrid16 near an edge, where clamping piles taps onto the same texels: each lane's
+// window starts at tap 0's first texel moved in from the far edge (startX, startY), and each
+// tap blends the window texels its lane picks, with the same operations as where the taps
+// lie in place (blendGridPicked does this per 8 lanes). All four window rows' blends are
+// kept, since a tap row may take any two of them.
+[[gnu::always_inline]] inline void blendHalfGridPicked16(const Texture& t, const int* start, const LinearTaps16 (&x)[3],
+                                                         const LinearTaps16 (&y)[3], __m512i startX, __m512i startY,
+                                                         __m512 (&blended)[9][4]) {
+  const uint16_t* texels = t.half.data();
+  for (int k = 0; k < 4; ++k) {
+    const __m512i lanes = blockLanes(k);
+    __m512 rowBlend[3][4];   // [tap column][window row]
+    for (int r = 0; r < 4; ++r) {
+      __m512 texel[4];
+      windowRowTexels16(texels, start, size_t(r) * size_t(t.width), k, texel);
+      for (int i = 0; i < 3; ++i) {
+        const __m512 left = pickInWindow16(texel, _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i0, startX)));
+        const __m512 right = pickInWindow16(texel, _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i1, startX)));
+        const __m512 weightX = _mm512_permutexvar_ps(lanes, x[i].weight);
+        rowBlend[i][r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
+      }
+    }
+    for (int j = 0; j < 3; ++j) {
+      const __m512i topRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i0, startY));
+      const __m512i bottomRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i1, startY));
+      const __m512 weightY = _mm512_permutexvar_ps(lanes, y[j].weight);
+      for (int i = 0; i < 3; ++i) {
+        const __m512 top = pickInWindow16(rowBlend[i], topRow), bottom = pickInWindow16(rowBlend[i], bottomRow);
+        blended[j * 3 + i][k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(bottom, top), top);
+      }
+    }
+  }
+}
+
+// textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's nine 2x2
+// footprints lie in one 4x4 window of texels inside the texture. Usually tap k spans window
+// texels k and k + 1 along both axes in every lane: each window row is then read with one
+// 32-byte load per lane, its texels lined up lane by lane as blendHalfPairs16 lines up a pair
+// (lanes k, k + 4, k + 8 and k + 12 in one register), and blended in the same order, rows
+// then columns, as sampleHalfGridShared does per 8 lanes. Near an edge of the texture each
+// lane picks the texels its taps span (blendHalfGridPicked16). Inline, so the shader's
+// compiler drops the taps a port never reads (the downsample reads five of nine). False, with
+// nothing written, when some footprint leaves its window (a step other than one texel, a
+// texture smaller than 4x4 near its edge); sampleColorGrid8 takes those.
 [[gnu::always_inline]] inline bool blendHalfGrid16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
                                                    simd::Float8x2 (&taps)[9][4]) {
   LinearTaps16 x[3], y[3];
@@ -226,42 +309,38 @@ inline bool isHalfBilinearClamp(const Texture& t) {
     x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(float(k - 1) * stepS)), t.width);
     y[k] = wrapLinearClampToEdge16(_mm512_add_ps(tc, _mm512_set1_ps(float(k - 1) * stepT)), t.height);
   }
-  if (!tapsAreConsecutive16(x, y, 3)) return false;
+  const bool inPlace = tapsAreConsecutive16(x, y, 3);   // then the window starts at tap 0's first texel
+  __m512i startX = x[0].i0, startY = y[0].i0;
+  if (!inPlace) {
+    if (t.width < 4 || t.height < 4) return false;
+    startX = _mm512_min_epi32(startX, _mm512_set1_epi32(t.width - 4));
+    startY = _mm512_min_epi32(startY, _mm512_set1_epi32(t.height - 4));
+    if (!tapsInWindow16(x, startX) || !tapsInWindow16(y, startY)) return false;
+  }
   const uint16_t* texels = t.half.data();
   alignas(64) int start[16];   // each lane's top-left window texel
-  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y[0].i0, _mm512_set1_epi32(t.width)), x[0].i0));
+  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(startY, _mm512_set1_epi32(t.width)), startX));
   asm volatile("" : "+m"(start));   // read back as scalars (blendHalfPairs16 says why)
   prefetchFootprintRows(t, start, 4);
   __m512 blended[9][4];   // [tap][k]: lanes k | k + 4 | k + 8 | k + 12, rgba each
-  for (int k = 0; k < 4; ++k) {
-    const __m512i lanes = _mm512_setr_epi32(k, k, k, k, k + 4, k + 4, k + 4, k + 4, k + 8, k + 8, k + 8, k + 8, k + 12,
-                                            k + 12, k + 12, k + 12);
-    __m512 above[3];   // the previous window row's blends, one per tap column
-    for (int r = 0; r < 4; ++r) {
-      const size_t rowOffset = size_t(r) * size_t(t.width);
-      auto row = [&](int lane) {   // [texel 0 | 1 | 2 | 3] of the lane's window row r
-        return _mm512_cvtph_ps(
-            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + (size_t(start[lane]) + rowOffset) * 4)));
-      };
-      const __m512 a = row(k), b = row(k + 4), c = row(k + 8), d = row(k + 12);
-      // Lane blocks [a | b | c | d] of texel v, from each lane's [0 | 1 | 2 | 3]: a 4x4
-      // transpose of 128-bit blocks.
-      const __m512 abLow = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(1, 0, 1, 0));    // a0 a1 b0 b1
-      const __m512 abHigh = _mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(3, 2, 3, 2));   // a2 a3 b2 b3
-      const __m512 cdLow = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(1, 0, 1, 0));
-      const __m512 cdHigh = _mm512_shuffle_f32x4(c, d, _MM_SHUFFLE(3, 2, 3, 2));
-      const __m512 texel[4] = {_mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(2, 0, 2, 0)),
-                               _mm512_shuffle_f32x4(abLow, cdLow, _MM_SHUFFLE(3, 1, 3, 1)),
-                               _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(2, 0, 2, 0)),
-                               _mm512_shuffle_f32x4(abHigh, cdHigh, _MM_SHUFFLE(3, 1, 3, 1))};
-      for (int i = 0; i < 3; ++i) {
-        const __m512 weightX = _mm512_permutexvar_ps(lanes, x[i].weight);
-        const __m512 blend = _mm512_fmadd_ps(weightX, _mm512_sub_ps(texel[i + 1], texel[i]), texel[i]);
-        if (r > 0) {
-          const __m512 weightY = _mm512_permutexvar_ps(lanes, y[r - 1].weight);
-          blended[(r - 1) * 3 + i][k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(blend, above[i]), above[i]);
+  if (!inPlace) {
+    blendHalfGridPicked16(t, start, x, y, startX, startY, blended);
+  } else {
+    for (int k = 0; k < 4; ++k) {
+      const __m512i lanes = blockLanes(k);
+      __m512 above[3];   // the previous window row's blends, one per tap column
+      for (int r = 0; r < 4; ++r) {
+        __m512 texel[4];
+        windowRowTexels16(texels, start, size_t(r) * size_t(t.width), k, texel);
+        for (int i = 0; i < 3; ++i) {
+          const __m512 weightX = _mm512_permutexvar_ps(lanes, x[i].weight);
+          const __m512 blend = _mm512_fmadd_ps(weightX, _mm512_sub_ps(texel[i + 1], texel[i]), texel[i]);
+          if (r > 0) {
+            const __m512 weightY = _mm512_permutexvar_ps(lanes, y[r - 1].weight);
+            blended[(r - 1) * 3 + i][k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(blend, above[i]), above[i]);
+          }
+          above[i] = blend;
         }
-        above[i] = blend;
       }
     }
   }

@@ -333,12 +333,12 @@ TEST_SUITE("texture") {
 #if RASTER_AVX2
   // Every tap of textureGrid3x3 for `Lanes` (Float8, or Float8x2 with its 16-lane path)
   // against its lone scalar lookup; returns {taps, channel mismatches, grids that took the
-  // 16-lane shared path}.
+  // 16-lane shared path, those of them whose taps some edge piled onto the same texels}.
   template <class Lanes>
-  std::tuple<long, long, long> gridTapsAgainstScalar() {
+  std::tuple<long, long, long, long> gridTapsAgainstScalar() {
     constexpr int kLanes = int(sizeof(Lanes) / sizeof(float));
     std::mt19937 rng(78);
-    long mismatches = 0, taps = 0, shared16 = 0;
+    long mismatches = 0, taps = 0, shared16 = 0, picked16 = 0;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{4, 4}, std::pair{2, 1}}) {
         raster::Texture tex = randomTexture(rng, w, h, format);
@@ -373,8 +373,15 @@ TEST_SUITE("texture") {
             if constexpr (kLanes == 16) {
               raster::simd::Float8x2 planes[9][4];
               const __m512 s = Lanes::load(s16).v, t = Lanes::load(t16).v;
-              shared16 += raster::sampling::isHalfBilinearClamp(tex) &&
-                          raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
+              const bool shared = raster::sampling::isHalfBilinearClamp(tex) &&
+                                  raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
+              raster::sampling::LinearTaps16 x[3], y[3];
+              for (int k = 0; k < 3; ++k) {
+                x[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(float(k - 1) * step.x)), w);
+                y[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(t, _mm512_set1_ps(float(k - 1) * step.y)), h);
+              }
+              shared16 += shared;
+              picked16 += shared && !raster::sampling::tapsAreConsecutive16(x, y, 3);
             }
 #endif
             for (int j = 0; j < 3; ++j)
@@ -394,22 +401,23 @@ TEST_SUITE("texture") {
         }
       }
     }
-    return {taps, mismatches, shared16};
+    return {taps, mismatches, shared16, picked16};
   }
 
   TEST_CASE("3x3 lookup grids: every tap equals its lone scalar lookup, shared texels or not") {
-    const auto [taps, mismatches, shared16] = gridTapsAgainstScalar<raster::simd::Float8>();
+    const auto [taps, mismatches, shared16, picked16] = gridTapsAgainstScalar<raster::simd::Float8>();
     MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches");
     CHECK(taps == 2 * 4 * 2 * 300 * 9 * 8);
     CHECK(mismatches == 0);
   }
 #if RASTER_ZMM_PAIRS
   TEST_CASE("3x3 lookup grids on 16 lanes (Float8x2): every tap equals its lone scalar lookup") {
-    const auto [taps, mismatches, shared16] = gridTapsAgainstScalar<raster::simd::Float8x2>();
+    const auto [taps, mismatches, shared16, picked16] = gridTapsAgainstScalar<raster::simd::Float8x2>();
     MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches, " << shared16
-                 << " grids on the 16-lane path");
+                 << " grids on the 16-lane path, " << picked16 << " of them picking texels at an edge");
     CHECK(taps == 2 * 4 * 2 * 300 * 9 * 16);
     CHECK(shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
+    CHECK(picked16 > 20);   // and its edge form too
     CHECK(mismatches == 0);
   }
 #endif

@@ -307,11 +307,14 @@ bool compareNearestGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2
 
 }  // namespace
 
-// compareGridN's shared case for both groups in 512-bit registers, lane k of Float8x2 in
-// element k: the same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on
-// 16 lanes), the same window loads, compares and blends per lane, half the instructions.
-// False, with nothing written, unless every lane's taps are one texel apart (no edge).
-// compare=nearest takes compareNearestGrid16.
+// compareGridN for both groups in 512-bit registers, lane k of Float8x2 in element k: the
+// same tap coordinates (wrapLinearClampToEdge16 is wrapLinearClampToEdge8 on 16 lanes), the
+// same window loads, compares and blends per lane, half the instructions. Near a map edge
+// (a shadow coordinate outside the map clamps every tap) each lane picks the compare results
+// of the texels its taps span, as compareGridN does per 8 lanes. False, with nothing
+// written, when some footprint leaves its window (rounding that moves a tap, a step that is
+// not one texel) or the map is smaller than the window. compare=nearest takes
+// compareNearestGrid16.
 template <int R>
 bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
                    simd::Float8x2* taps) {
@@ -323,21 +326,67 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
     x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
     y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
   }
-  if (!tapsAreConsecutive16(x, y, count)) return false;
+  const bool inPlace = tapsAreConsecutive16(x, y, count);   // then the window starts at tap 0's first texel
+  __m512i startX = x[0].i0, startY = y[0].i0;
+  if (!inPlace) {
+    if (depth.width < texels || depth.height < texels) return false;
+    startX = _mm512_min_epi32(startX, _mm512_set1_epi32(depth.width - texels));   // windowStart
+    startY = _mm512_min_epi32(startY, _mm512_set1_epi32(depth.height - texels));
+    if (!tapsInWindow16(x, startX) || !tapsInWindow16(y, startY)) return false;
+  }
 
   alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
-  storeWindowStarts(depth, x[0].i0, y[0].i0, start);
+  storeWindowStarts(depth, startX, startY, start);
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
   windowPasses16(depth, start, clampRef16(ref16.v), passes);
-  // The blends of compareGridN, a mask's lanes holding the weight and the others +0.
-  for (int j = 0; j < count; ++j)
+  if (inPlace) {
+    // The blends of compareGridN, a mask's lanes holding the weight and the others +0.
+    for (int j = 0; j < count; ++j)
+      for (int i = 0; i < count; ++i) {
+        const __m512 w = x[i].weight, oneMinusW = _mm512_sub_ps(_mm512_set1_ps(1.0f), w);
+        const __m512 r0 = _mm512_add_ps(_mm512_maskz_mov_ps(passes[j][i + 1], w), _mm512_maskz_mov_ps(passes[j][i], oneMinusW));
+        const __m512 r1 =
+            _mm512_add_ps(_mm512_maskz_mov_ps(passes[j + 1][i + 1], w), _mm512_maskz_mov_ps(passes[j + 1][i], oneMinusW));
+        taps[j * count + i] = simd::Float8x2(_mm512_fmadd_ps(y[j].weight, _mm512_sub_ps(r1, r0), r0));
+      }
+    return true;
+  }
+  // Near an edge, compareGridN's picked blends: the lanes whose tap starts (ends) at window
+  // texel v, per tap and axis; a window row's blend for tap column i from the compare results
+  // of the two columns the tap spans, then a tap from the two rows it spans.
+  auto windowTexels = [](const LinearTaps16& tap, __m512i from, __mmask16 (&first)[texels], __mmask16 (&second)[texels]) {
+    const __m512i at[2] = {_mm512_sub_epi32(tap.i0, from), _mm512_sub_epi32(tap.i1, from)};
+    for (int v = 0; v < texels; ++v) {
+      first[v] = _mm512_cmpeq_epi32_mask(at[0], _mm512_set1_epi32(v));
+      second[v] = _mm512_cmpeq_epi32_mask(at[1], _mm512_set1_epi32(v));
+    }
+  };
+  auto pickPasses = [](const __mmask16 (&row)[texels], const __mmask16 (&is)[texels]) {
+    __mmask16 picked = 0;
+    for (int v = 0; v < texels; ++v) picked |= row[v] & is[v];
+    return picked;
+  };
+  __m512 rowBlend[count][texels];   // [tap column][window row]
+  for (int i = 0; i < count; ++i) {
+    __mmask16 left[texels], right[texels];
+    windowTexels(x[i], startX, left, right);
+    const __m512 w = x[i].weight, oneMinusW = _mm512_sub_ps(_mm512_set1_ps(1.0f), w);
+    for (int r = 0; r < texels; ++r)
+      rowBlend[i][r] = _mm512_add_ps(_mm512_maskz_mov_ps(pickPasses(passes[r], right), w),
+                                     _mm512_maskz_mov_ps(pickPasses(passes[r], left), oneMinusW));
+  }
+  for (int j = 0; j < count; ++j) {
+    __mmask16 top[texels], bottom[texels];
+    windowTexels(y[j], startY, top, bottom);
     for (int i = 0; i < count; ++i) {
-      const __m512 w = x[i].weight, oneMinusW = _mm512_sub_ps(_mm512_set1_ps(1.0f), w);
-      const __m512 r0 = _mm512_add_ps(_mm512_maskz_mov_ps(passes[j][i + 1], w), _mm512_maskz_mov_ps(passes[j][i], oneMinusW));
-      const __m512 r1 =
-          _mm512_add_ps(_mm512_maskz_mov_ps(passes[j + 1][i + 1], w), _mm512_maskz_mov_ps(passes[j + 1][i], oneMinusW));
+      __m512 r0 = rowBlend[i][0], r1 = rowBlend[i][0];
+      for (int v = 1; v < texels; ++v) {
+        r0 = _mm512_mask_mov_ps(r0, top[v], rowBlend[i][v]);
+        r1 = _mm512_mask_mov_ps(r1, bottom[v], rowBlend[i][v]);
+      }
       taps[j * count + i] = simd::Float8x2(_mm512_fmadd_ps(y[j].weight, _mm512_sub_ps(r1, r0), r0));
     }
+  }
   return true;
 }
 

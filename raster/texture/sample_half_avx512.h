@@ -241,12 +241,13 @@ inline bool isHalfBilinearClamp(const Texture& t) {
 }
 
 // tapsInWindow (linear_taps_avx2.h) on 16 lanes: whether both texels of every tap lie in
-// the 4-texel window from `start` in every lane.
-[[gnu::always_inline]] inline bool tapsInWindow16(const LinearTaps16 (&taps)[3], __m512i start) {
+// the window of kTaps + 1 texels from `start` in every lane.
+template <int kTaps>
+[[gnu::always_inline]] inline bool tapsInWindow16(const LinearTaps16 (&taps)[kTaps], __m512i start) {
   __mmask16 inside = 0xFFFF;
   for (const LinearTaps16& tap : taps)
     for (__m512i texel : {tap.i0, tap.i1})
-      inside &= _mm512_cmple_epu32_mask(_mm512_sub_epi32(texel, start), _mm512_set1_epi32(3));
+      inside &= _mm512_cmple_epu32_mask(_mm512_sub_epi32(texel, start), _mm512_set1_epi32(kTaps));
   return inside == 0xFFFF;
 }
 

@@ -33,9 +33,10 @@ template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
 #if RASTER_ZMM_PAIRS
-// Both grids in 512-bit registers where every lane's taps are one texel apart (no map edge
-// between them): taps[(j + R) * (2R + 1) + (i + R)], each bit-identical to compareGrid8x2's.
-// False, with nothing written, otherwise.
+// Both grids in 512-bit registers where every lane's footprints lie in one window of
+// 2R + 2 texels a side (one texel apart, or piled together at a map edge):
+// taps[(j + R) * (2R + 1) + (i + R)], each bit-identical to compareGrid8x2's. False, with
+// nothing written, otherwise.
 template <int R>
 bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref,
                    simd::Float8x2* taps);

@@ -192,7 +192,7 @@ TEST_SUITE("shadow_compare") {
   TEST_CASE("PCF grids, lone and paired: every tap equals its lone lookup, shared texels or not, either compare method") {
     using raster::simd::Float8;
     std::mt19937 rng(8008);
-    long lanesCompared = 0;
+    long lanesCompared = 0, edgeGrids16 = 0;   // paired grids made on 16 lanes where an edge piles taps together
     using raster::CompareMethod, raster::TexelFormat;
     const std::pair<CompareMethod, TexelFormat> cases[] = {{CompareMethod::Bilinear, TexelFormat::Depth24},
                                                            {CompareMethod::Bilinear, TexelFormat::Depth16},
@@ -264,10 +264,27 @@ TEST_SUITE("shadow_compare") {
           check([&](int j, int i) { return pair3[j][i].high(); }, 1, sr, tr, refr);
           check([&](int j, int i) { return pair5[j][i].low(); }, 2, s, t, ref);
           check([&](int j, int i) { return pair5[j][i].high(); }, 2, sr, tr, refr);
+#if RASTER_ZMM_PAIRS
+          if (method == CompareMethod::Bilinear) {   // did the pair's 3x3 grid take its 16-lane edge form?
+            raster::sampling::LinearTaps16 x[3], y[3];
+            for (int k = 0; k < 3; ++k) {
+              const __m512 offset = _mm512_set1_ps(origin + float(k - 1) * step);
+              x[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(uvPair.x.v, offset), width);
+              y[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(uvPair.y.v, offset), height);
+            }
+            Float8x2 direct[9];
+            edgeGrids16 += !raster::sampling::tapsAreConsecutive16(x, y, 3) &&
+                           raster::sampling::compareGrid16<1>(map, uvPair.x, uvPair.y, origin, step, refPair, direct);
+          }
+#endif
         }
       }
     }
     CHECK(lanesCompared == 2 * 2 * 3 * 600 * 8 * 3 * (9 + 25));   // methods, formats, maps; lone, paired low, paired high
+#if RASTER_ZMM_PAIRS
+    MESSAGE(edgeGrids16 << " paired 3x3 grids made on 16 lanes with taps piled together at an edge");
+    CHECK(edgeGrids16 > 50);   // the 16-lane grid's edge form ran, not only the 8-lane fallback
+#endif
   }
 #endif
 

@@ -192,7 +192,10 @@ TEST_SUITE("shadow_compare") {
   TEST_CASE("PCF grids, lone and paired: every tap equals its lone lookup, shared texels or not, either compare method") {
     using raster::simd::Float8;
     std::mt19937 rng(8008);
-    long lanesCompared = 0, edgeGrids16 = 0;   // paired grids made on 16 lanes where an edge piles taps together
+    long lanesCompared = 0;
+#if RASTER_ZMM_PAIRS
+    long edgeGrids16 = 0;   // paired grids made on 16 lanes where an edge piles taps together
+#endif
     using raster::CompareMethod, raster::TexelFormat;
     const std::pair<CompareMethod, TexelFormat> cases[] = {{CompareMethod::Bilinear, TexelFormat::Depth24},
                                                            {CompareMethod::Bilinear, TexelFormat::Depth16},

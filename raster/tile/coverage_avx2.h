@@ -126,14 +126,16 @@ template <class F, class VisitBlock>
     const int blockY = blockY0 + row * kBlock;
     uint16_t coverage[16];
     uint32_t covered = 0;
-    __m512i at[3] = {value[0], value[1], value[2]};
+    // Three named registers, not an array: GCC kept an array's values on the stack, each
+    // column's adds then waiting on the last one's stores.
+    __m512i at0 = value[0], at1 = value[1], at2 = value[2];
     for (int column = 0; column < columns; ++column) {
-      __mmask16 mask = _mm512_cmpgt_epi32_mask(at[0], zero);
-      mask = _mm512_mask_cmpgt_epi32_mask(mask, at[1], zero);
-      mask = _mm512_mask_cmpgt_epi32_mask(mask, at[2], zero);
+      __mmask16 mask = _mm512_cmpgt_epi32_mask(at0, zero);
+      mask = _mm512_mask_cmpgt_epi32_mask(mask, at1, zero);
+      mask = _mm512_mask_cmpgt_epi32_mask(mask, at2, zero);
       coverage[column] = mask;
       covered |= uint32_t(mask != 0) << column;
-      for (int i = 0; i < 3; ++i) at[i] = _mm512_add_epi32(at[i], stepX[i]);
+      at0 = _mm512_add_epi32(at0, stepX[0]), at1 = _mm512_add_epi32(at1, stepX[1]), at2 = _mm512_add_epi32(at2, stepX[2]);
     }
     for (; covered; covered &= covered - 1) {
       const int column = __builtin_ctz(covered), blockX = blockX0 + column * kBlock;

@@ -50,26 +50,41 @@ template <>
   const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
   const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
   const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, py)), fb.depth->format);
-  // The block's four memory rows. Where the block sticks out of the framebuffer, rows and
-  // pixels outside it (never covered) are neither read nor written; otherwise whole rows
-  // are read and written back blended, as masked stores are slow.
-  const bool whole = blockX + 4 <= fb.width && blockY + 4 <= fb.height;
+  const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
+  // The block's four memory rows, read whole and written back blended, as masked stores are
+  // slow. This case goes first, straight from memory to registers and back: through the
+  // row arrays below, GCC had kept the rows on the stack.
+  if (blockX + 4 <= fb.width && blockY + 4 <= fb.height) {
+    uint32_t* const first = fb.depth->depth.data() + size_t(blockY) * size_t(fb.width) + size_t(blockX);
+    const size_t stride = size_t(fb.width);
+    const auto row = [&](int r) { return reinterpret_cast<__m128i*>(first + size_t(r) * stride); };
+    const __m512i stored = joinRows({_mm_loadu_si128(row(0)), _mm_loadu_si128(row(1)), _mm_loadu_si128(row(2)),
+                                     _mm_loadu_si128(row(3))});
+    const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual);
+    if (state.depthWrite && pass) {
+      const __m512i blended = _mm512_mask_blend_epi32(pass, stored, code);
+      _mm_storeu_si128(row(0), _mm512_castsi512_si128(blended));
+      _mm_storeu_si128(row(1), _mm512_extracti32x4_epi32(blended, 1));
+      _mm_storeu_si128(row(2), _mm512_extracti32x4_epi32(blended, 2));
+      _mm_storeu_si128(row(3), _mm512_extracti32x4_epi32(blended, 3));
+    }
+    return pass;
+  }
+  // Where the block sticks out of the framebuffer, rows and pixels outside it (never
+  // covered) are neither read nor written.
   uint32_t* rows[4];
   __m128i rowCodes[4];
   for (int r = 0; r < 4; ++r) {
     const __mmask8 covered = __mmask8(coverage >> (4 * r) & 0xFu);
-    rows[r] = whole || covered ? fb.depth->depth.data() + size_t(blockY + r) * size_t(fb.width) + size_t(blockX) : nullptr;
-    rowCodes[r] = whole ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(rows[r]))
-                        : covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
+    rows[r] = covered ? fb.depth->depth.data() + size_t(blockY + r) * size_t(fb.width) + size_t(blockX) : nullptr;
+    rowCodes[r] = covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
   }
   const __m512i stored = joinRows(rowCodes);
-  const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, state.depthFunc == DepthFunc::Lequal);
+  const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual);
   if (state.depthWrite && pass) {
     splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
-    for (int r = 0; r < 4; ++r) {
-      if (whole) _mm_storeu_si128(reinterpret_cast<__m128i*>(rows[r]), rowCodes[r]);
-      else if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
-    }
+    for (int r = 0; r < 4; ++r)
+      if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
   }
   return pass;
 }

@@ -319,13 +319,9 @@ template <int R>
 bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
                    simd::Float8x2* taps) {
   if (nearestCompare()) return compareNearestGrid16<R>(depth, s, t, origin, step, ref16, taps);
-  constexpr int radius = R, count = 2 * R + 1, texels = count + 1;
+  constexpr int count = 2 * R + 1, texels = count + 1;
   LinearTaps16 x[count], y[count];
-  for (int k = 0; k < count; ++k) {
-    const __m512 offset = _mm512_set1_ps(origin + float(k - radius) * step);
-    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s.v, offset), depth.width);
-    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t.v, offset), depth.height);
-  }
+  compareGridTaps16<R>(depth, s.v, t.v, origin, step, x, y);
   const bool inPlace = tapsAreConsecutive16(x, y, count);   // then the window starts at tap 0's first texel
   __m512i startX = x[0].i0, startY = y[0].i0;
   if (!inPlace) {

@@ -114,6 +114,33 @@ struct LinearTaps16 {
   return taps;
 }
 
+// The taps along both axes of a grid of lookups, tap k at s + offsetS(k) and t + offsetT(k),
+// each offset a float made as the grid's scalar reference makes it: bloomGridTaps16 and
+// compareGridTaps16 below, which the 16-lane grids and their tests share.
+template <int N, class OffsetS, class OffsetT>
+[[gnu::always_inline]] inline void gridTaps16(__m512 s, __m512 t, int width, int height, OffsetS offsetS, OffsetT offsetT,
+                                              LinearTaps16 (&x)[N], LinearTaps16 (&y)[N]) {
+  for (int k = 0; k < N; ++k) {
+    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(offsetS(k))), width);
+    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(t, _mm512_set1_ps(offsetT(k))), height);
+  }
+}
+
+// textureGrid3x3's taps (sampler.h): tap k at coord + float(k - 1) * step.
+[[gnu::always_inline]] inline void bloomGridTaps16(const Texture& texture, __m512 s, __m512 t, float stepS, float stepT,
+                                                   LinearTaps16 (&x)[3], LinearTaps16 (&y)[3]) {
+  gridTaps16(s, t, texture.width, texture.height, [&](int k) { return float(k - 1) * stepS; },
+             [&](int k) { return float(k - 1) * stepT; }, x, y);
+}
+
+// compareGrid8's taps (sampler_avx2.h): tap k at coord + (origin + float(k - R) * step).
+template <int R>
+[[gnu::always_inline]] inline void compareGridTaps16(const Texture& depth, __m512 s, __m512 t, float origin, float step,
+                                                     LinearTaps16 (&x)[2 * R + 1], LinearTaps16 (&y)[2 * R + 1]) {
+  const auto offset = [&](int k) { return origin + float(k - R) * step; };
+  gridTaps16(s, t, depth.width, depth.height, offset, offset, x, y);
+}
+
 // tapsAreConsecutive (linear_taps_avx2.h) on 16 lanes: true when, in every lane and along
 // both axes, tap k of a grid spans texels first + k and first + k + 1.
 [[gnu::always_inline]] inline bool tapsAreConsecutive16(const LinearTaps16* x, const LinearTaps16* y, int count) {
@@ -270,15 +297,21 @@ template <int kTaps>
   const uint16_t* texels = t.half.data();
   for (int k = 0; k < 4; ++k) {
     const __m512i lanes = blockLanes(k);
+    // Each tap column's window texels and weight, the same in every row.
+    __m512i leftColumn[3], rightColumn[3];
+    __m512 weightX[3];
+    for (int i = 0; i < 3; ++i) {
+      leftColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i0, startX));
+      rightColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i1, startX));
+      weightX[i] = _mm512_permutexvar_ps(lanes, x[i].weight);
+    }
     __m512 rowBlend[3][4];   // [tap column][window row]
     for (int r = 0; r < 4; ++r) {
       __m512 texel[4];
       windowRowTexels16(texels, start, size_t(r) * size_t(t.width), k, texel);
       for (int i = 0; i < 3; ++i) {
-        const __m512 left = pickInWindow16(texel, _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i0, startX)));
-        const __m512 right = pickInWindow16(texel, _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i1, startX)));
-        const __m512 weightX = _mm512_permutexvar_ps(lanes, x[i].weight);
-        rowBlend[i][r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
+        const __m512 left = pickInWindow16(texel, leftColumn[i]), right = pickInWindow16(texel, rightColumn[i]);
+        rowBlend[i][r] = _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left);
       }
     }
     for (int j = 0; j < 3; ++j) {
@@ -306,10 +339,7 @@ template <int kTaps>
 [[gnu::always_inline]] inline bool blendHalfGrid16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
                                                    simd::Float8x2 (&taps)[9][4]) {
   LinearTaps16 x[3], y[3];
-  for (int k = 0; k < 3; ++k) {
-    x[k] = wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(float(k - 1) * stepS)), t.width);
-    y[k] = wrapLinearClampToEdge16(_mm512_add_ps(tc, _mm512_set1_ps(float(k - 1) * stepT)), t.height);
-  }
+  bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
   const bool inPlace = tapsAreConsecutive16(x, y, 3);   // then the window starts at tap 0's first texel
   __m512i startX = x[0].i0, startY = y[0].i0;
   if (!inPlace) {

@@ -372,14 +372,11 @@ TEST_SUITE("texture") {
 #if RASTER_ZMM_PAIRS
             if constexpr (kLanes == 16) {
               raster::simd::Float8x2 planes[9][4];
-              const __m512 s = Lanes::load(s16).v, t = Lanes::load(t16).v;
+              const auto s = Lanes::load(s16).v, t = Lanes::load(t16).v;
               const bool shared = raster::sampling::isHalfBilinearClamp(tex) &&
                                   raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
               raster::sampling::LinearTaps16 x[3], y[3];
-              for (int k = 0; k < 3; ++k) {
-                x[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(s, _mm512_set1_ps(float(k - 1) * step.x)), w);
-                y[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(t, _mm512_set1_ps(float(k - 1) * step.y)), h);
-              }
+              raster::sampling::bloomGridTaps16(tex, s, t, step.x, step.y, x, y);
               shared16 += shared;
               picked16 += shared && !raster::sampling::tapsAreConsecutive16(x, y, 3);
             }

@@ -270,11 +270,7 @@ TEST_SUITE("shadow_compare") {
 #if RASTER_ZMM_PAIRS
           if (method == CompareMethod::Bilinear) {   // did the pair's 3x3 grid take its 16-lane edge form?
             raster::sampling::LinearTaps16 x[3], y[3];
-            for (int k = 0; k < 3; ++k) {
-              const __m512 offset = _mm512_set1_ps(origin + float(k - 1) * step);
-              x[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(uvPair.x.v, offset), width);
-              y[k] = raster::sampling::wrapLinearClampToEdge16(_mm512_add_ps(uvPair.y.v, offset), height);
-            }
+            raster::sampling::compareGridTaps16<1>(map, uvPair.x.v, uvPair.y.v, origin, step, x, y);
             Float8x2 direct[9];
             edgeGrids16 += !raster::sampling::tapsAreConsecutive16(x, y, 3) &&
                            raster::sampling::compareGrid16<1>(map, uvPair.x, uvPair.y, origin, step, refPair, direct);

@@ -131,6 +131,13 @@ def summarize(args, runs):
     return rows
 
 
+def ratio_text(value, line):
+    """Two decimals, or three where two would round a ratio onto the other side of `line`
+    (2.996 against a 3.0 goal reads 2.996, not a 3.00 that failed)."""
+    text = f"{value:.2f}"
+    return text if (float(text) >= line) == (value >= line) else f"{value:.3f}"
+
+
 def table(args, rows, host):
     lines = [f"Host: {host}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
              f"(`bench/goal_runs.py`). Goal: median >= {args.goal}, no run below {args.floor}.", "",
@@ -139,9 +146,10 @@ def table(args, rows, host):
              "| --- | --- | --- | --- | ---: | ---: | :---: |" + (" --- |" if args.passes else "")]
     for row in rows:
         line = (f"| {row['size']} | {row['preset']} | {row['scene']} | {', '.join(f'{r:.2f}' for r in row['ratios'])} | "
-                f"{row['median']:.2f} | {row['min']:.2f} | {'yes' if row['met'] else 'no'} |")
+                f"{ratio_text(row['median'], args.goal)} | {ratio_text(row['min'], args.floor)} | "
+                f"{'yes' if row['met'] else 'no'} |")
         if args.passes:
-            weak = [f"{p['pass']} `{p['program']}` {p['median_ratio']:.2f}" for p in row["passes"]
+            weak = [f"{p['pass']} `{p['program']}` {ratio_text(p['median_ratio'], args.pass_goal)}" for p in row["passes"]
                     if p["median_ratio"] < args.pass_goal]
             line += f" {'; '.join(weak) if weak else 'none'} |"
         lines.append(line)

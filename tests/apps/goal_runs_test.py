@@ -66,6 +66,15 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
     with open(os.path.join(out, "goals.md")) as f:
         check(f.read() == table, "--replot wrote a different table")
     check(os.path.exists(os.path.join(out, "goals.png")), "--replot wrote no chart")
+    # A median just under the goal is not printed rounded onto it: 2.996 against 3, not "3.00 | no".
+    result["goal"], result["configurations"][0]["median"], result["configurations"][0]["met"] = 3.0, 2.996, False
+    with open(os.path.join(out, "goals.json"), "w") as f:
+        json.dump(result, f)
+    done = subprocess.run([sys.executable, runner, "--replot", "--out", out], capture_output=True, text=True)
+    with open(os.path.join(out, "goals.md")) as f:
+        first = next(line for line in f.read().splitlines() if line.startswith("| 48x32"))
+    check(done.returncode == 0 and "| 2.996 |" in first and "| no |" in first,
+          f"a median of 2.996 against a goal of 3 reads: {first}")
     done = subprocess.run([sys.executable, runner, "--replot", "--out", os.path.join(tmp, "nothing-here")],
                           capture_output=True, text=True)
     check(done.returncode == 2 and "goals.json" in done.stderr, f"--replot without goals.json exited {done.returncode}")

@@ -126,8 +126,8 @@ template <class F, class VisitBlock>
     const int blockY = blockY0 + row * kBlock;
     uint16_t coverage[16];
     uint32_t covered = 0;
-    // Three named registers, not an array: GCC kept an array's values on the stack, each
-    // column's adds then waiting on the last one's stores.
+    // Three named registers, not an array: at -O2 GCC kept an array's values on the stack,
+    // each column's adds then waiting on the last one's stores.
     __m512i at0 = value[0], at1 = value[1], at2 = value[2];
     for (int column = 0; column < columns; ++column) {
       __mmask16 mask = _mm512_cmpgt_epi32_mask(at0, zero);

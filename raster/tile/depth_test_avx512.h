@@ -53,7 +53,7 @@ template <>
   const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
   // The block's four memory rows, read whole and written back blended, as masked stores are
   // slow. This case goes first, straight from memory to registers and back: through the
-  // row arrays below, GCC had kept the rows on the stack.
+  // row arrays below, GCC at -O2 kept the rows on the stack.
   if (blockX + 4 <= fb.width && blockY + 4 <= fb.height) {
     uint32_t* const first = fb.depth->depth.data() + size_t(blockY) * size_t(fb.width) + size_t(blockX);
     const size_t stride = size_t(fb.width);

@@ -7,6 +7,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRASTER_SANITIZE=thread -DRASTER_STD_THREADS=ON > /dev/null
-cmake --build build-tsan -j"$(nproc)" --target raster_tests raster_cli
+cmake --build build-tsan -j"$(nproc)" --target raster_tests   # (no raster_cli: these suites do not run it)
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
 ctest --test-dir build-tsan --output-on-failure -R '^(determinism|geometry|simd|format)$'

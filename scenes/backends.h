@@ -36,6 +36,13 @@ void setViewRecorder(Backend& rasterBackend, raster::ViewRecorder* recorder);
 // context can be made.
 std::unique_ptr<Backend> makeGlBackend();
 
+// How many GL backends this process has made so far. llvmpipe's rasterizer threads belong
+// to the process, not to a context, and carry state from one backend to the next: after a
+// draw into a half-float target, some of them can be left with denormals no longer flushed
+// (Mesa 22.3 turns DAZ/FTZ off around that blend, lp_state_fs.c). A check of llvmpipe's
+// denormal handling needs the first backend of its process.
+int glBackendsMade();
+
 // Throws SceneError when GALLIUM_DRIVER names a driver other than llvmpipe or softpipe, or
 // LP_NUM_THREADS is not a whole number 0..1024 (Mesa crashes on an unknown driver).
 // makeGlBackend checks this first; commands call it before rendering anything.

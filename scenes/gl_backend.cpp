@@ -67,6 +67,7 @@ void flipRows(std::vector<T>& pixels, size_t rowElements) {
 }
 
 int liveBackends = 0;  // enforces one GlBackend at a time
+int backendsMade = 0;  // glBackendsMade()
 
 class GlBackend : public Backend {
  public:
@@ -87,6 +88,7 @@ class GlBackend : public Backend {
           "GL backend: OSMesaCreateContextAttribs failed (no OpenGL 3.3 core context; "
           "check GALLIUM_DRIVER is llvmpipe or softpipe)");
     ++liveBackends;
+    ++backendsMade;
     resizeDefaultFramebuffer(640, 480);
 
     // The driver name is the first word of GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
@@ -480,5 +482,7 @@ void checkGalliumEnvironment() {
 }
 
 std::unique_ptr<Backend> makeGlBackend() { return std::make_unique<GlBackend>(); }
+
+int glBackendsMade() { return backendsMade; }
 
 }  // namespace scenes

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "raster/simd/glsl.h"
+#include "tests/apps/cli_test_helpers.h"
 #include "scenes/backends.h"
 #include "shaders_cpp/test/math_probe.h"
 
@@ -344,6 +345,18 @@ Agreement compare(const scenes::ImageData& ours, const scenes::ImageData& gl, co
 
 TEST_SUITE("gl_math") {
   TEST_CASE("every transcendental is bit-identical to llvmpipe through real GL") {
+    // The denormal echoes need llvmpipe's threads as they start, flushing denormals; after
+    // an earlier GL test's draw into a half-float target some of them may not (see
+    // scenes::glBackendsMade). ctest runs each suite in its own process; the whole test
+    // binary run at once runs this case again in a fresh process of its own.
+    if (scenes::glBackendsMade() > 0) {
+      const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+      const cli_test::RunResult fresh = cli_test::runShell(std::filesystem::current_path(), "exec " + cli_test::shellQuote(self) +
+                                       " --no-intro --test-case='every transcendental is bit-identical to llvmpipe through real GL'");
+      INFO("the case in a fresh process:\n" << fresh.out << fresh.err);
+      CHECK(fresh.status == 0);
+      return;
+    }
     auto gl = scenes::makeGlBackend();
     auto fast = scenes::makeRasterBackend(0);
     auto reference = scenes::makeRasterBackend(0, true);   // the Lanes<8> path

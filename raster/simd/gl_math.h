@@ -39,8 +39,8 @@
 //
 // Lane types: float, simd::Lanes<N> (plain loops: the readable reference), simd::Float8
 // (AVX2) and simd::Float8x2 (two Float8 groups). One generic text per function, over a few
-// bit-level helpers (detail::), so all of them give identical bits; tests/simd/gl_math_test.cpp
-// checks it, and checks them against llvmpipe through real GL.
+// bit-level helpers (detail::), so all of them give identical bits; tests/simd/gl_math_lanes_test.cpp
+// checks it, and tests/simd/gl_math_test.cpp checks them against llvmpipe through real GL.
 #pragma once
 
 #include <cmath>

@@ -262,8 +262,7 @@ void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __
 
 // Each lane's window origin, start[lane] = y * width + x, in memory to be read as scalars.
 void storeWindowStarts(const Texture& depth, __m512i x, __m512i y, int (&start)[16]) {
-  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(depth.width)), x));
-  asm volatile("" : "+m"(start));   // read back as scalars (sample_half_avx512.h says why)
+  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(depth.width)), x), start);
 }
 
 __m512 clampRef16(__m512 ref) { return _mm512_min_ps(_mm512_max_ps(ref, _mm512_setzero_ps()), _mm512_set1_ps(1.0f)); }

@@ -38,6 +38,19 @@ namespace raster::sampling {
   return tiles.cleared[size_t(tile >> 16) * size_t(tiles.tilesX) + (tile & 0xFFFFu)] ? tiles.value : nullptr;
 }
 
+// Sixteen lane indices (texel or window starts) stored for the caller to read back one
+// scalar load at a time, as four 16-byte stores. Left to itself the compiler pulls each out
+// of a vector register, three instructions per texel load (composite -2%); and a 4-byte load
+// from the middle of one 64-byte store waited for it on the Intel Xeon host, where from a
+// 16-byte store it is forwarded (BENCHMARKS.md, "Window starts stored in quarters").
+[[gnu::always_inline]] inline void storeLaneIndices16(__m512i index, int (&out)[16]) {
+  _mm_store_si128(reinterpret_cast<__m128i*>(out), _mm512_castsi512_si128(index));
+  _mm_store_si128(reinterpret_cast<__m128i*>(out + 4), _mm512_extracti32x4_epi32(index, 1));
+  _mm_store_si128(reinterpret_cast<__m128i*>(out + 8), _mm512_extracti32x4_epi32(index, 2));
+  _mm_store_si128(reinterpret_cast<__m128i*>(out + 12), _mm512_extracti32x4_epi32(index, 3));
+  asm volatile("" : "+m"(out));   // read back from memory, not from the register
+}
+
 // The texel index along one axis for NEAREST, as the 8-lane wrapNearest of the float path
 // (no floor before the CLAMP_TO_EDGE clamp): REPEAT of a power-of-two size masks the
 // floored coordinate, of another size scales the fraction (at most 0.99999994, NaN too);
@@ -197,11 +210,8 @@ template <int R>
   const uint16_t* texels = t.half.data();
   const __m512i width = _mm512_set1_epi32(t.width);
   alignas(64) int start[2][16];   // [row y0 | y1][lane]: the lane's left texel
-  _mm512_store_si512(start[0], _mm512_add_epi32(_mm512_mullo_epi32(y.i0, width), x.i0));
-  _mm512_store_si512(start[1], _mm512_add_epi32(_mm512_mullo_epi32(y.i1, width), x.i0));
-  // Read the indices back from memory, one scalar load each: left to itself the compiler
-  // pulls each out of a vector register, three instructions per texel load (composite -2%).
-  asm volatile("" : "+m"(start));
+  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(y.i0, width), x.i0), start[0]);
+  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(y.i1, width), x.i0), start[1]);
   prefetchFootprintRows(t, start[0], 2);
   auto pair = [&](int r, int lane) {   // [lane left | right | lane + 4 left | right]
     const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane]) * 4));
@@ -350,8 +360,7 @@ template <int kTaps>
   }
   const uint16_t* texels = t.half.data();
   alignas(64) int start[16];   // each lane's top-left window texel
-  _mm512_store_si512(start, _mm512_add_epi32(_mm512_mullo_epi32(startY, _mm512_set1_epi32(t.width)), startX));
-  asm volatile("" : "+m"(start));   // read back as scalars (blendHalfPairs16 says why)
+  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(startY, _mm512_set1_epi32(t.width)), startX), start);
   prefetchFootprintRows(t, start, 4);
   __m512 blended[9][4];   // [tap][k]: lanes k | k + 4 | k + 8 | k + 12, rgba each
   if (!inPlace) {

@@ -230,33 +230,70 @@ void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::F
 #if RASTER_ZMM_PAIRS
 namespace {
 
+// Four codes of each lane from its row pointer: lanes k, k + 4, k + 8 and k + 12 in one
+// register, the 128-bit block of each.
+__m512i rowsOfFourLanes(const uint32_t* const (&lane)[4]) {
+  auto row = [&](int q) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[q])); };
+  const __m256i low = _mm256_setr_m128i(row(0), row(1)), high = _mm256_setr_m128i(row(2), row(3));
+  return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+}
+
+// passes[first + c] = ref <= column c of v (refPasses, 16 lanes), v[k] as rowsOfFourLanes
+// reads it; columns from `first` to Cols - 1 only.
+template <int Cols>
+void comparedColumns(const __m512i (&v)[4], __m512 ref, __m512 scale, int first, __mmask16 (&passes)[Cols]) {
+  const __m512i t0 = _mm512_unpacklo_epi32(v[0], v[1]), t1 = _mm512_unpackhi_epi32(v[0], v[1]);
+  const __m512i t2 = _mm512_unpacklo_epi32(v[2], v[3]), t3 = _mm512_unpackhi_epi32(v[2], v[3]);
+  const __m512i column[4] = {_mm512_unpacklo_epi64(t0, t2), _mm512_unpackhi_epi64(t0, t2),
+                             _mm512_unpacklo_epi64(t1, t3), _mm512_unpackhi_epi64(t1, t3)};
+  for (int c = 0; c < 4 && first + c < Cols; ++c)
+    passes[first + c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(column[c]), scale), _CMP_LE_OQ);
+}
+
 // passes[r][c] = ref <= texel (r, c) of each lane's Rows x Cols window from start[lane]
 // (refPasses, 16 lanes): each window row is read with 16-byte loads of four codes, columns
 // 0-3, then 4-7 or the last four, so a window narrower than four reads codes past its right
 // edge (the caller makes sure they lie in the map) and leaves them out.
+//
+// A window of up to four rows (the 3x3 grid's) is read four lanes at a time down all its
+// rows, with four row pointers live: read a row at a time, the sixteen lanes' pointers did
+// not fit the general registers, and GCC moved them in and out of vector registers on every
+// row (BENCHMARKS.md, "The 3x3 PCF window read lane by lane"). Taller windows (the 5x5
+// grid's six rows, 24 registers of rows) measured slower that way than a row at a time.
 template <int Rows, int Cols>
 void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __mmask16 (&passes)[Rows][Cols]) {
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
   const uint32_t* codes = depth.depth.data();
-  for (int r = 0; r < Rows; ++r) {
-    const size_t rowOffset = size_t(r) * size_t(depth.width);
+  const size_t width = size_t(depth.width);
+  // Lanes k, k + 4, k + 8 and k + 12 of window row r from column `first` on.
+  auto lanePointers = [&](int k, int r, int first, const uint32_t* (&lane)[4]) {
+    for (int q = 0; q < 4; ++q) lane[q] = codes + size_t(start[k + 4 * q]) + size_t(r) * width + size_t(first);
+  };
+  auto firstColumn = [](int next) { return std::min(next, std::max(Cols - 4, 0)); };
+  if constexpr (Rows <= 4) {
     for (int next = 0; next < Cols; next += 4) {
-      const int first = std::min(next, std::max(Cols - 4, 0));
-      __m512i v[4];   // v[k]: the four codes of lanes k, k + 4, k + 8, k + 12
+      __m512i v[Rows][4];   // v[r][k]: row r of lanes k, k + 4, k + 8, k + 12
       for (int k = 0; k < 4; ++k) {
-        auto row = [&](int lane) {
-          return _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + size_t(start[lane]) + rowOffset + size_t(first)));
-        };
-        const __m256i low = _mm256_setr_m128i(row(k), row(k + 4)), high = _mm256_setr_m128i(row(k + 8), row(k + 12));
-        v[k] = _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+        const uint32_t* lane[4];
+        lanePointers(k, 0, firstColumn(next), lane);
+        for (int r = 0; r < Rows; ++r) {
+          v[r][k] = rowsOfFourLanes(lane);
+          for (const uint32_t*& p : lane) p += width;
+        }
       }
-      const __m512i t0 = _mm512_unpacklo_epi32(v[0], v[1]), t1 = _mm512_unpackhi_epi32(v[0], v[1]);
-      const __m512i t2 = _mm512_unpacklo_epi32(v[2], v[3]), t3 = _mm512_unpackhi_epi32(v[2], v[3]);
-      const __m512i column[4] = {_mm512_unpacklo_epi64(t0, t2), _mm512_unpackhi_epi64(t0, t2),
-                                 _mm512_unpacklo_epi64(t1, t3), _mm512_unpackhi_epi64(t1, t3)};
-      for (int c = 0; c < 4 && first + c < Cols; ++c)
-        passes[r][first + c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(column[c]), scale), _CMP_LE_OQ);
+      for (int r = 0; r < Rows; ++r) comparedColumns<Cols>(v[r], ref, scale, firstColumn(next), passes[r]);
     }
+  } else {
+    for (int r = 0; r < Rows; ++r)
+      for (int next = 0; next < Cols; next += 4) {
+        __m512i v[4];
+        for (int k = 0; k < 4; ++k) {
+          const uint32_t* lane[4];
+          lanePointers(k, r, firstColumn(next), lane);
+          v[k] = rowsOfFourLanes(lane);
+        }
+        comparedColumns<Cols>(v, ref, scale, firstColumn(next), passes[r]);
+      }
   }
 }
 

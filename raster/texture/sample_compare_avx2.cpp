@@ -372,15 +372,28 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
   windowPasses16(depth, start, clampRef16(ref16.v), passes);
   if (inPlace) {
-    // The blends of compareGridN, a mask's lanes holding the weight and the others +0.
-    for (int j = 0; j < count; ++j)
+    // The blends of compareGridN. A row's blend for tap column i, (w and right) + ((1 - w)
+    // and left), is the left term with w added where the right texel passes: the same sum
+    // where it does, and where it does not the left term alone, which +0 + it is (the left
+    // term is +0 or 1 - w >= +0). Each window row's blends serve the taps above and below
+    // it; two rows of them are live at a time.
+    __m512 oneMinusW[count];
+    for (int i = 0; i < count; ++i) oneMinusW[i] = _mm512_sub_ps(_mm512_set1_ps(1.0f), x[i].weight);
+    auto blendRow = [&](int r, __m512 (&out)[count]) {
       for (int i = 0; i < count; ++i) {
-        const __m512 w = x[i].weight, oneMinusW = _mm512_sub_ps(_mm512_set1_ps(1.0f), w);
-        const __m512 r0 = _mm512_add_ps(_mm512_maskz_mov_ps(passes[j][i + 1], w), _mm512_maskz_mov_ps(passes[j][i], oneMinusW));
-        const __m512 r1 =
-            _mm512_add_ps(_mm512_maskz_mov_ps(passes[j + 1][i + 1], w), _mm512_maskz_mov_ps(passes[j + 1][i], oneMinusW));
-        taps[j * count + i] = simd::Float8x2(_mm512_fmadd_ps(y[j].weight, _mm512_sub_ps(r1, r0), r0));
+        const __m512 left = _mm512_maskz_mov_ps(passes[r][i], oneMinusW[i]);
+        out[i] = _mm512_mask_add_ps(left, passes[r][i + 1], left, x[i].weight);
       }
+    };
+    __m512 above[count], below[count];
+    blendRow(0, above);
+    for (int j = 0; j < count; ++j) {
+      blendRow(j + 1, below);
+      for (int i = 0; i < count; ++i) {
+        taps[j * count + i] = simd::Float8x2(_mm512_fmadd_ps(y[j].weight, _mm512_sub_ps(below[i], above[i]), above[i]));
+        above[i] = below[i];
+      }
+    }
     return true;
   }
   // Near an edge, compareGridN's picked blends: the lanes whose tap starts (ends) at window

@@ -12,8 +12,11 @@ void TileBins::reset(int width, int height) {
   height_ = height;
   tilesX_ = (width + kTileSize - 1) / kTileSize;
   tilesY_ = (height + kTileSize - 1) / kTileSize;
-  // Bins keep their capacity from pass to pass (clear() empties them).
-  if (bins_.size() != size_t(tilesX_) * size_t(tilesY_)) bins_.assign(size_t(tilesX_) * size_t(tilesY_), {});
+  // Bins keep their capacity from pass to pass (clear() empties them), and so do the bins
+  // of a larger framebuffer when a smaller one comes: a frame's passes alternate sizes (the
+  // shadow map and the screen, the bloom chain), and freeing and regrowing every list per
+  // pass was about half of the shadow frame's serial time between its two passes.
+  if (bins_.size() < size_t(tileCount())) bins_.resize(size_t(tileCount()));
   clear();
 }
 
@@ -53,7 +56,7 @@ uint64_t TileBins::binTriangles(std::span<const SetupTriangle> triangles, uint32
 }
 
 void TileBins::append(const TileBins& part) {
-  for (size_t tile = 0; tile < bins_.size(); ++tile)
+  for (size_t tile = 0; tile < size_t(tileCount()); ++tile)
     bins_[tile].insert(bins_[tile].end(), part.bins_[tile].begin(), part.bins_[tile].end());
 }
 

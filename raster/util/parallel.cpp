@@ -27,6 +27,8 @@ ThreadPool::ThreadPool(int threads)
 
 ThreadPool::~ThreadPool() = default;
 
+void ThreadPool::wake() {}   // each parallelFor starts its own threads
+
 // Fork-join per call: the workers take items from a shared counter until none are left.
 void ThreadPool::parallelFor(int count, const std::function<void(int)>& fn) {
   if (threads_ == 1 || count <= 1) {
@@ -54,6 +56,12 @@ ThreadPool::ThreadPool(int threads)
     : threads_(threads > 0 ? threads : tbb::info::default_concurrency()), arena_(std::make_unique<Arena>(threads_)) {}
 
 ThreadPool::~ThreadPool() = default;
+
+// An empty task enqueued into the arena: a helper wakes to run it, then looks for more
+// work for a while before it sleeps again.
+void ThreadPool::wake() {
+  if (threads_ > 1) arena_->arena.enqueue([] {});
+}
 
 void ThreadPool::parallelFor(int count, const std::function<void(int)>& fn) {
   if (threads_ == 1 || count <= 1) {

@@ -21,6 +21,11 @@ class ThreadPool {
   int threads() const { return threads_; }
   // Calls fn(i) for every i in [0, count), in parallel, and returns when all are done.
   void parallelFor(int count, const std::function<void(int)>& fn);
+  // Wakes the pool's sleeping helpers now, without waiting for them, so that the next
+  // parallelFor finds them running: a helper that slept through a long pause (another
+  // renderer's frame, the application's own work) takes tens of microseconds to wake,
+  // which a pass's serial start (vertex shading, setup, binning) can hide.
+  void wake();
 
  private:
   int threads_;

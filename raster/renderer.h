@@ -93,6 +93,12 @@ class Renderer {
   PlaneList varyingPlanes_;
   std::vector<uint32_t> triangleOrigins_;   // beside triangles_, only while pixel history is on
   TileBins bins_;
+  // flush()'s items: the pass's tiles, or bands of them where the tiles are few.
+  struct WorkItem {
+    int tile;
+    TileBounds bounds;
+  };
+  std::vector<WorkItem> workItems_;
   std::vector<TileBins> binParts_;   // a large draw's parts, binned in parallel, then appended to bins_
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
   std::vector<SetupChunk> setupChunks_;

@@ -30,6 +30,10 @@ template <class F, class VisitBlock>
   const RasterState& state = job.draws[tri.drawIndex].state;
   const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
   const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+  // Binning puts a triangle only into tiles its bounds touch, but a band of a tile (a pass
+  // of few tiles is walked in bands, renderer.cpp) may lie wholly beside it: the block
+  // rows below would then start past y1 and walk the next band's blocks.
+  if (x0 > x1 || y0 > y1) return;
   // Depth test and write, and no colour the shader writes is kept.
   const bool depthOnly =
       state.depthTest && state.depthWrite && fb.depth && colorOutputsWritten(job.draws[tri.drawIndex], fb) == 0;

@@ -1,8 +1,9 @@
 // The one place threads appear: a parallel loop over independent work items, on oneTBB.
 //
-// Stage code never sees a thread. Work items must be independent (each screen tile is
-// owned by exactly one item), so results do not depend on the thread count: ThreadPool(1)
-// runs items serially in order and is bit-identical to any other count.
+// Stage code never sees a thread. Work items must be independent (each pixel of a pass is
+// owned by exactly one item: a screen tile, or a band of one), so results do not depend on
+// the thread count: ThreadPool(1) runs items serially in order and is bit-identical to any
+// other count.
 #pragma once
 
 #include <functional>

@@ -2,7 +2,8 @@
 // edge functions, block by block in row-major order, for triangles of a fraction of a pixel
 // to thousands of pixels: at block, region, tile and framebuffer edges, with both lane types'
 // edge forms. The AVX-512 walk takes small triangles without the region level and large ones
-// with it (walkSmallTriangleBlocks), so both are held to the same blocks.
+// with it (walkSmallTriangleBlocks), so both are held to the same blocks. Bands of 16 rows
+// of a tile, which small passes are walked in, are held to their own blocks too.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -106,6 +107,16 @@ TEST_SUITE("geometry") {
           INFO("triangle bounds " << tri.minX << ".." << tri.maxX << " x " << tri.minY << ".." << tri.maxY << ", tile " << tx << "," << ty);
           CHECK(walked<raster::FastLanes>(job, tri, tile) == expected);
           CHECK(walked<raster::ScalarLanes>(job, tri, tile) == expected);
+          // A pass of few tiles is walked in 16-row bands of a tile (renderer.cpp), each with
+          // the tile's whole bin: a band must get only its own blocks, also from a triangle
+          // that lies wholly beside it (another thread owns the next band).
+          for (int y = tile.y0; y <= tile.y1; y += 16) {
+            const raster::TileBounds band{tile.x0, y, tile.x1, std::min(y + 15, tile.y1)};
+            INFO("band rows " << band.y0 << ".." << band.y1);
+            const std::vector<VisitedBlock> inBand = bruteForce(tri, band, kWidth, kHeight);
+            CHECK(walked<raster::FastLanes>(job, tri, band) == inBand);
+            CHECK(walked<raster::ScalarLanes>(job, tri, band) == inBand);
+          }
         }
       }
     }

@@ -276,19 +276,21 @@ void Renderer::flush() {
     job.draws = draws_;
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
-    // A pass of fewer tiles than twice the threads (the small end of a bloom chain) would
-    // leave threads idle: its tiles are cut into bands of whole 16-row regions, each its own
-    // item with the tile's whole bin (the walk skips triangles beside the band, walk.h).
-    // Every pixel is owned by one band and none depends on another, so the bytes are the
-    // same; stage views and pixel history time or trace whole tiles, and keep them. The
-    // bloom chain's 80x60 and 40x30 passes at 640x480 took 0.09-0.11 and 0.03-0.04 ms as
-    // tiles, 0.07-0.08 and 0.026-0.028 ms in bands.
+    // A pass of few tiles (the small end of a bloom chain) would leave threads idle, or
+    // waiting on the one large tile among small ones: its tiles of few triangles are cut
+    // into bands of whole 16-row regions, each its own item with the tile's whole bin (the
+    // walk skips triangles beside the band, walk.h; a tile of many triangles stays whole, as
+    // each band would walk them all). Every pixel is owned by one band and none depends on
+    // another, so the bytes are the same; stage views and pixel history time or trace whole
+    // tiles, and keep them. BENCHMARKS.md has the passes' times before and after.
+    constexpr size_t kBandedTileMaxTriangles = 16;
     const int tiles = bins_.tileCount();
-    const bool banded = pool_.threads() > 1 && tiles < 2 * pool_.threads() && !viewRecorder_ && !history_;
-    const int bandRows = banded ? limits::kRegionSize : limits::kTileSize;
+    const bool fewTiles = pool_.threads() > 1 && tiles < 8 * pool_.threads() && !viewRecorder_ && !history_;
     workItems_.clear();
     for (int tile = 0; tile < tiles; ++tile) {
       const TileBounds whole = bins_.bounds(tile);
+      const bool banded = fewTiles && bins_.bin(tile).size() <= kBandedTileMaxTriangles;
+      const int bandRows = banded ? limits::kRegionSize : limits::kTileSize;
       for (int y = whole.y0; y <= whole.y1; y += bandRows)
         workItems_.push_back({tile, TileBounds{whole.x0, y, whole.x1, std::min(y + bandRows - 1, whole.y1)}});
     }

@@ -73,23 +73,27 @@ void shadeVertexGroup(const typename Program::Uniforms& uniforms, const VertexBa
   const glsl::vec4<F> window(simd::fma(position.x * oow, F(vp.scale[0]), F(vp.translate[0])),
                              simd::fma(position.y * oow, F(vp.scale[1]), F(vp.translate[1])),
                              simd::fma(position.z * oow, F(vp.scale[2]), F(vp.translate[2])), oow);
-  alignas(32) float pos[4][kLanes], win[4][kLanes], clipFlags[kLanes];
-  alignas(32) float vary[kVaryings > 0 ? kVaryings : 1][kLanes];
-  glsl::storePlanes(position, pos);
-  glsl::storePlanes(window, win);
-  clipMaskLanes(position).store(clipFlags);
-  F flat[kVaryings > 0 ? kVaryings : 1];
-  varyingsToArray<Program, F>(varyings, flat);
-  for (int v = 0; v < kVaryings; ++v) flat[v].store(vary[v]);
-
-  for (int lane = 0; lane < count; ++lane) {
-    const int r = batch.recordBase + first + lane;
-    float* rec = out.record(r);
-    for (int c = 0; c < 4; ++c) rec[vertex_record::kClip + c] = pos[c][lane];
-    for (int c = 0; c < 4; ++c) rec[vertex_record::kWindow + c] = win[c][lane];
-    for (int v = 0; v < kVaryings; ++v) rec[vertex_record::kVaryings + v] = vary[v][lane];
-    out.clipMask[size_t(r)] = uint8_t(clipFlags[lane]);
+  // The records, the lanes' values in record order: clip position, window position, the
+  // varyings. Eight of them at a time go out lane by lane (a transpose where the lane type
+  // has one); the varyings past the last whole eight, one float at a time.
+  static_assert(vertex_record::kClip == 0 && vertex_record::kWindow == 4 && vertex_record::kVaryings == 8,
+                "a record starts with the clip and window positions");
+  constexpr int kFields = vertex_record::kVaryings + kVaryings;
+  F fields[kFields] = {position.x, position.y, position.z, position.w, window.x, window.y, window.z, window.w};
+  varyingsToArray<Program, F>(varyings, fields + vertex_record::kVaryings);
+  const int firstRecord = batch.recordBase + first;
+  float* const records = out.record(firstRecord);
+  const size_t stride = size_t(out.stride);
+  int field = 0;
+  for (; field + 8 <= kFields; field += 8) simd::storeLanesTransposed(fields + field, records + field, stride, count);
+  for (; field < kFields; ++field) {
+    alignas(32) float lanes[kLanes];
+    fields[field].store(lanes);
+    for (int lane = 0; lane < count; ++lane) records[size_t(lane) * stride + size_t(field)] = lanes[lane];
   }
+  alignas(32) float clipFlags[kLanes];
+  clipMaskLanes(position).store(clipFlags);
+  for (int lane = 0; lane < count; ++lane) out.clipMask[size_t(firstRecord + lane)] = uint8_t(clipFlags[lane]);
 }
 
 }  // namespace vertex_stage

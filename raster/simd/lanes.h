@@ -112,4 +112,15 @@ inline Lanes<N> quadDdy(Lanes<N> a) {
 
 using Quad = Lanes<4>;
 
+// Eight registers stored lane by lane: for each lane i < count, rows[0..7] at lane i as the
+// eight floats at out + i * stride (one slice of a per-lane record: the vertex stage writes
+// its records so). The reference; lanes_avx2.h has Float8's as one 8x8 transpose.
+template <class F>
+void storeLanesTransposed(const F* rows, float* out, size_t stride, int count) {
+  float planes[8][F::kCount];
+  for (int r = 0; r < 8; ++r) rows[r].store(planes[r]);
+  for (int i = 0; i < count; ++i)
+    for (int r = 0; r < 8; ++r) out[size_t(i) * stride + size_t(r)] = planes[r][i];
+}
+
 }  // namespace raster::simd

@@ -89,6 +89,33 @@ inline __m256i rowsToQuadLanes(bool flipped) {
   return flipped ? _mm256_setr_epi32(4, 5, 0, 1, 6, 7, 2, 3) : _mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7);
 }
 
+// storeLanesTransposed (lanes.h) for eight whole lanes: one 8x8 transpose (unpacks, then
+// shuffles within 128-bit halves, then the halves exchanged) and a 32-byte store a lane,
+// in place of 64 single floats.
+inline void storeLanesTransposed(const Float8* rows, float* out, size_t stride, int count) {
+  if (count < 8) {
+    storeLanesTransposed<Float8>(rows, out, stride, count);
+    return;
+  }
+  const __m256 t0 = _mm256_unpacklo_ps(rows[0].v, rows[1].v), t1 = _mm256_unpackhi_ps(rows[0].v, rows[1].v);
+  const __m256 t2 = _mm256_unpacklo_ps(rows[2].v, rows[3].v), t3 = _mm256_unpackhi_ps(rows[2].v, rows[3].v);
+  const __m256 t4 = _mm256_unpacklo_ps(rows[4].v, rows[5].v), t5 = _mm256_unpackhi_ps(rows[4].v, rows[5].v);
+  const __m256 t6 = _mm256_unpacklo_ps(rows[6].v, rows[7].v), t7 = _mm256_unpackhi_ps(rows[6].v, rows[7].v);
+  // u0: lanes 0 and 4 of rows 0-3 (low and high half), u1: lanes 1 and 5, u2: 2 and 6, u3: 3 and 7.
+  const __m256 u0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0)), u1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 u2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0)), u3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 u4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0)), u5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 u6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0)), u7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+  _mm256_storeu_ps(out + 0 * stride, _mm256_permute2f128_ps(u0, u4, 0x20));
+  _mm256_storeu_ps(out + 1 * stride, _mm256_permute2f128_ps(u1, u5, 0x20));
+  _mm256_storeu_ps(out + 2 * stride, _mm256_permute2f128_ps(u2, u6, 0x20));
+  _mm256_storeu_ps(out + 3 * stride, _mm256_permute2f128_ps(u3, u7, 0x20));
+  _mm256_storeu_ps(out + 4 * stride, _mm256_permute2f128_ps(u0, u4, 0x31));
+  _mm256_storeu_ps(out + 5 * stride, _mm256_permute2f128_ps(u1, u5, 0x31));
+  _mm256_storeu_ps(out + 6 * stride, _mm256_permute2f128_ps(u2, u6, 0x31));
+  _mm256_storeu_ps(out + 7 * stride, _mm256_permute2f128_ps(u3, u7, 0x31));
+}
+
 // ---------------------------------------------------------------------------------------
 // Float8x2: two lane groups shaded as one, op for op (low() is one 4x2 group, high()
 // another). Same semantics as Lanes<16>, lane for lane. The halves share no data, so the

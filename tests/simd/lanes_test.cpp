@@ -175,6 +175,28 @@ TEST_SUITE("simd") {
     CHECK(nanPayload == 0);
   }
 
+  TEST_CASE("Float8's transposed store writes each lane's eight values where the reference does") {
+    // The vertex stage's records: every stride it meets (8 + varyings), every lane count,
+    // and nothing written past a lane's eight floats (the next record's start stays put).
+    for (int stride = 8; stride <= 24; ++stride) {
+      for (int count = 1; count <= 8; ++count) {
+        raster::simd::Float8 rows[8];
+        for (int r = 0; r < 8; ++r) {
+          float lanes[8];
+          for (int i = 0; i < 8; ++i) lanes[i] = float(r * 8 + i) + 0.5f;
+          rows[r] = raster::simd::Float8::load(lanes);
+        }
+        std::vector<float> got(size_t(stride) * 9, -1.0f), want(size_t(stride) * 9, -1.0f);
+        raster::simd::storeLanesTransposed(rows, got.data(), size_t(stride), count);
+        for (int i = 0; i < count; ++i)
+          for (int r = 0; r < 8; ++r) want[size_t(i) * size_t(stride) + size_t(r)] = float(r * 8 + i) + 0.5f;
+        CAPTURE(stride);
+        CAPTURE(count);
+        CHECK(got == want);
+      }
+    }
+  }
+
   TEST_CASE("quad derivatives follow llvmpipe's lane layout (fine: per row and per column)") {
     alignas(32) const float v[8] = {1.0f, 3.0f, 10.0f, 30.0f, 100.0f, 300.0f, 1000.0f, 3000.0f};
     alignas(32) float dx[8], dy[8];

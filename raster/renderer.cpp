@@ -41,7 +41,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::beginPass(const Framebuffer& framebuffer, const Viewport& viewport, const ClearValues& clearValues) {
   flush();
-  pool_.wake();   // the pass's tile loop is its first parallel work; its set-up comes first
+  pool_.wake();   // so the helper is running by the pass's first parallel loop (ThreadPool::wake)
   framebuffer_ = framebuffer;
   bins_.reset(framebuffer.width, framebuffer.height);
 

@@ -238,22 +238,21 @@ __m512i rowsOfFourLanes(const uint32_t* const (&lane)[4]) {
   return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
 }
 
-// passes[first + c] = ref <= column c of v (refPasses, 16 lanes), v[k] as rowsOfFourLanes
-// reads it; columns from `first` to Cols - 1 only.
+// Columns `first` to Cols - 1 of v, v[k] as rowsOfFourLanes reads it: codes[first + c]
+// holds column c of the sixteen lanes, lane k in element k.
 template <int Cols>
-void comparedColumns(const __m512i (&v)[4], __m512 ref, __m512 scale, int first, __mmask16 (&passes)[Cols]) {
+void columnsOfFourLanes(const __m512i (&v)[4], int first, __m512i (&codes)[Cols]) {
   const __m512i t0 = _mm512_unpacklo_epi32(v[0], v[1]), t1 = _mm512_unpackhi_epi32(v[0], v[1]);
   const __m512i t2 = _mm512_unpacklo_epi32(v[2], v[3]), t3 = _mm512_unpackhi_epi32(v[2], v[3]);
   const __m512i column[4] = {_mm512_unpacklo_epi64(t0, t2), _mm512_unpackhi_epi64(t0, t2),
                              _mm512_unpacklo_epi64(t1, t3), _mm512_unpackhi_epi64(t1, t3)};
-  for (int c = 0; c < 4 && first + c < Cols; ++c)
-    passes[first + c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(column[c]), scale), _CMP_LE_OQ);
+  for (int c = 0; c < 4 && first + c < Cols; ++c) codes[first + c] = column[c];
 }
 
-// passes[r][c] = ref <= texel (r, c) of each lane's Rows x Cols window from start[lane]
-// (refPasses, 16 lanes): each window row is read with 16-byte loads of four codes, columns
-// 0-3, then 4-7 or the last four, so a window narrower than four reads codes past its right
-// edge (the caller makes sure they lie in the map) and leaves them out.
+// codes[r][c] = texel (r, c) of each lane's Rows x Cols window from start[lane], 16 lanes:
+// each window row is read with 16-byte loads of four codes, columns 0-3, then 4-7 or the
+// last four, so a window narrower than four reads codes past its right edge (the caller
+// makes sure they lie in the map) and leaves them out.
 //
 // A window of up to four rows (the 3x3 grid's) is read four lanes at a time down all its
 // rows, with four row pointers live: read a row at a time, the sixteen lanes' pointers did
@@ -261,13 +260,12 @@ void comparedColumns(const __m512i (&v)[4], __m512 ref, __m512 scale, int first,
 // row (BENCHMARKS.md, "The 3x3 PCF window read lane by lane"). Taller windows (the 5x5
 // grid's six rows, 24 registers of rows) measured slower that way than a row at a time.
 template <int Rows, int Cols>
-void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __mmask16 (&passes)[Rows][Cols]) {
-  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
-  const uint32_t* codes = depth.depth.data();
+[[gnu::always_inline]] inline void windowCodes16(const Texture& depth, const int (&start)[16], __m512i (&codes)[Rows][Cols]) {
+  const uint32_t* texels = depth.depth.data();
   const size_t width = size_t(depth.width);
   // Lanes k, k + 4, k + 8 and k + 12 of window row r from column `first` on.
   auto lanePointers = [&](int k, int r, int first, const uint32_t* (&lane)[4]) {
-    for (int q = 0; q < 4; ++q) lane[q] = codes + size_t(start[k + 4 * q]) + size_t(r) * width + size_t(first);
+    for (int q = 0; q < 4; ++q) lane[q] = texels + size_t(start[k + 4 * q]) + size_t(r) * width + size_t(first);
   };
   auto firstColumn = [](int next) { return std::min(next, std::max(Cols - 4, 0)); };
   if constexpr (Rows <= 4) {
@@ -281,7 +279,7 @@ void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __
           for (const uint32_t*& p : lane) p += width;
         }
       }
-      for (int r = 0; r < Rows; ++r) comparedColumns<Cols>(v[r], ref, scale, firstColumn(next), passes[r]);
+      for (int r = 0; r < Rows; ++r) columnsOfFourLanes<Cols>(v[r], firstColumn(next), codes[r]);
     }
   } else {
     for (int r = 0; r < Rows; ++r)
@@ -292,9 +290,50 @@ void windowPasses16(const Texture& depth, const int (&start)[16], __m512 ref, __
           lanePointers(k, r, firstColumn(next), lane);
           v[k] = rowsOfFourLanes(lane);
         }
-        comparedColumns<Cols>(v, ref, scale, firstColumn(next), passes[r]);
+        columnsOfFourLanes<Cols>(v, firstColumn(next), codes[r]);
       }
   }
+}
+
+// passes[r][c] = ref <= texel (r, c) of each lane's window (refPasses, 16 lanes).
+template <int Rows, int Cols>
+[[gnu::always_inline]] inline void windowPasses16(const Texture& depth, const __m512i (&codes)[Rows][Cols], __m512 ref,
+                                                  __mmask16 (&passes)[Rows][Cols]) {
+  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
+  for (int r = 0; r < Rows; ++r)
+    for (int c = 0; c < Cols; ++c)
+      passes[r][c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(codes[r][c]), scale), _CMP_LE_OQ);
+}
+
+// Whether each lane's window passes the compare at every texel or fails it at every one:
+// then each of the lane's taps is 1 or +0 whatever its weights, in every form of the grid
+// (a row's blend is w + (1 - w) = 1 for any weight in [0, 1], or +0 + +0; a tap blends two
+// equal rows to that value). A code reads as a float through a rounded product, which keeps
+// their order, so comparing with the window's least and greatest codes is comparing with
+// every code. In the shadow scene about 99% of the pairs' windows are uniform: the compare
+// changes only along a shadow's edge (BENCHMARKS.md, "PCF windows that pass or fail whole").
+struct UniformWindows {
+  __mmask16 pass, fail;   // lanes whose window passes (fails) at every texel
+  bool all() const { return __mmask16(pass | fail) == 0xFFFF; }
+};
+template <int Rows, int Cols>
+[[gnu::always_inline]] inline UniformWindows uniformWindows16(const Texture& depth, const __m512i (&codes)[Rows][Cols],
+                                                              __m512 ref) {
+  __m512i least = codes[0][0], greatest = codes[0][0];
+  for (int r = 0; r < Rows; ++r)
+    for (int c = 0; c < Cols; ++c) {
+      least = _mm512_min_epu32(least, codes[r][c]);
+      greatest = _mm512_max_epu32(greatest, codes[r][c]);
+    }
+  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
+  auto asDepth = [&](__m512i code) { return _mm512_mul_ps(_mm512_cvtepi32_ps(code), scale); };
+  return {_mm512_cmp_ps_mask(ref, asDepth(least), _CMP_LE_OQ), _mm512_cmp_ps_mask(ref, asDepth(greatest), _CMP_GT_OQ)};
+}
+
+// The taps of lanes with uniform windows: 1 where the window passes, +0 where it fails.
+[[gnu::always_inline]] inline void uniformTaps16(__mmask16 pass, int count, simd::Float8x2* taps) {
+  const simd::Float8x2 value(_mm512_maskz_mov_ps(pass, _mm512_set1_ps(1.0f)));
+  for (int k = 0; k < count; ++k) taps[k] = value;
 }
 
 // Each lane's window origin, start[lane] = y * width + x, in memory to be read as scalars.
@@ -334,8 +373,15 @@ bool compareNearestGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2
 
   alignas(64) int start[16];
   storeWindowStarts(depth, x[0], y[0], start);
+  __m512i codes[count][count];
+  windowCodes16(depth, start, codes);
+  const __m512 clampedRef = clampRef16(ref.v);
+  if (const UniformWindows uniform = uniformWindows16(depth, codes, clampedRef); uniform.all()) {
+    uniformTaps16(uniform.pass, count * count, taps);
+    return true;
+  }
   __mmask16 passes[count][count];
-  windowPasses16(depth, start, clampRef16(ref.v), passes);
+  windowPasses16(depth, codes, clampedRef, passes);
   for (int j = 0; j < count; ++j)
     for (int i = 0; i < count; ++i) taps[j * count + i] = simd::Float8x2(_mm512_maskz_mov_ps(passes[j][i], _mm512_set1_ps(1.0f)));
   return true;
@@ -369,8 +415,15 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
 
   alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
   storeWindowStarts(depth, startX, startY, start);
+  __m512i codes[texels][texels];   // codes[r][c]: texel (r, c) of the lane's neighbourhood
+  windowCodes16(depth, start, codes);
+  const __m512 ref = clampRef16(ref16.v);
+  if (const UniformWindows uniform = uniformWindows16(depth, codes, ref); uniform.all()) {
+    uniformTaps16(uniform.pass, count * count, taps);
+    return true;
+  }
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
-  windowPasses16(depth, start, clampRef16(ref16.v), passes);
+  windowPasses16(depth, codes, ref, passes);
   if (inPlace) {
     // The blends of compareGridN. A row's blend for tap column i, (w and right) + ((1 - w)
     // and left), is the left term with w added where the right texel passes: the same sum

@@ -222,6 +222,9 @@ TEST_SUITE("shadow_compare") {
             s[l] = onGrid ? (float(rng() % unsigned(width)) + 0.5f * float(rng() % 2)) / float(width) + jitter(rng) : unit(rng);
             t[l] = onGrid ? (float(rng() % unsigned(height)) + 0.5f * float(rng() % 2)) / float(height) + jitter(rng) : unit(rng);
             ref[l] = (float(maxCode / 2) + float(rng() % (maxCode / 64))) / float(maxCode) + (round % 7 == 0 ? unit(rng) : 0.0f);
+            // Every lane's window passing whole (ref clamped to 0) or failing whole (to 1):
+            // the grids' shortcut for uniform windows, both ways in one group.
+            if (round % 7 == 3) ref[l] = l % 3 == 0 ? 1.25f : -0.25f;
           }
           // The seeds' step (one texel), a step that is not one texel, and no step at all.
           const float steps[3] = {1.0f / float(width), 1.0f / 1000.0f, 0.0f};

@@ -192,6 +192,10 @@ struct TileJob {
   // No colour draw of the pass blends: tiles find each pixel's visible fragment first and
   // shade only those (tile/visible_first.h).
   bool visibilityFirst = false;
+  // Tiles no triangle reaches are cleared with streaming stores (merge/clear_avx2.h): where
+  // the pass's targets outgrow the threads' own caches, so that what is stored would leave
+  // the cache before anything reads it again.
+  bool streamUntouchedClears = false;
 };
 
 // A tile's pixel rectangle, inclusive, clipped to the framebuffer.

@@ -13,6 +13,7 @@
 #include "raster/tile/rasterize_tile.h"
 #include "raster/tile/tile_clear.h"
 #include "raster/tile/trace_tile.h"
+#include "raster/util/cache_size.h"
 #include "raster/util/cycles.h"
 
 namespace raster {
@@ -276,6 +277,13 @@ void Renderer::flush() {
     job.draws = draws_;
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
+    // Streaming stores skip the read for ownership but leave nothing in cache, and wait to
+    // reach memory: targets that fit the threads' caches stay there until the next frame's
+    // clear (BENCHMARKS.md, "Streaming clears only for targets larger than the caches").
+    const auto bytes = [](const Texture& t) { return textureStorageBytes(t.width, t.height, t.format); };
+    uint64_t targetBytes = framebuffer_.depth ? bytes(*framebuffer_.depth) : 0;
+    for (const Texture* target : framebuffer_.colors) targetBytes += bytes(*target);
+    job.streamUntouchedClears = targetBytes > uint64_t(pool_.threads()) * privateCacheBytesPerCore();
     // A pass of few tiles (the small end of a bloom chain) would leave threads idle, or
     // waiting on the one large tile among small ones: its tiles of few triangles are cut
     // into bands of whole 16-row regions, each its own item with the tile's whole bin (the

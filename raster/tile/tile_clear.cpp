@@ -66,7 +66,7 @@ size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBo
                            canShadeTileWhole<F>(tile, job.draws[job.triangles[bin.front()].drawIndex]);
   const TileClearPlan plan = planTileClear(job, bin, tile, pending, shadesWhole);
   const Framebuffer& fb = *job.framebuffer;
-  merge::clearRect(fb, plan.rest, tile, true, bin.empty());
+  merge::clearRect(fb, plan.rest, tile, true, bin.empty() && job.streamUntouchedClears);
   if (!plan.firstStoresDepth) return 0;
   const SetupTriangle& first = job.triangles[bin.front()];
   storeDepthCodes<F>(first, *fb.depth, fb.width, tile);

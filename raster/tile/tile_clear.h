@@ -17,8 +17,9 @@
 // bound on the float rounding of its evaluation, so a triangle near the cleared depth
 // keeps the clear.
 //
-// A tile whose bin is empty is cleared with streaming stores (merge/clear_avx2.h): nothing
-// of the pass reads it again.
+// A tile whose bin is empty is cleared with streaming stores (merge/clear_avx2.h) when the
+// pass's targets are larger than the threads' own caches (TileJob::streamUntouchedClears):
+// nothing of the pass reads it again, and it would not stay in cache for what does.
 #pragma once
 
 #include <cstddef>

@@ -279,7 +279,7 @@ void Renderer::flush() {
     job.visibilityFirst = visibilityFirst();
     // Streaming stores skip the read for ownership but leave nothing in cache, and wait to
     // reach memory: targets that fit the threads' caches stay there until the next frame's
-    // clear (BENCHMARKS.md, "Streaming clears only for targets larger than the caches").
+    // clear (BENCHMARKS.md, "streaming clears only where the targets outgrow the caches").
     const auto bytes = [](const Texture& t) { return textureStorageBytes(t.width, t.height, t.format); };
     uint64_t targetBytes = framebuffer_.depth ? bytes(*framebuffer_.depth) : 0;
     for (const Texture* target : framebuffer_.colors) targetBytes += bytes(*target);

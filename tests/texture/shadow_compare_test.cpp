@@ -288,6 +288,74 @@ TEST_SUITE("shadow_compare") {
     CHECK(edgeGrids16 > 50);   // the 16-lane grid's edge form ran, not only the 8-lane fallback
 #endif
   }
+
+  // The grids read each lane's window once and, where every lane's window passes or fails
+  // the compare whole, give taps of 1 or +0 without blending them. Here the map steps from
+  // one depth to another along a column (and then a row), the reference lies between, and
+  // lanes sit so that their windows lie on one side with taps one texel apart, cross it, or
+  // reach it with taps two texels apart (no window holds those, so the lone lookups decide).
+  // Every tap equals its lone lookup either way; a uniform test that left out a window
+  // column, or a window that did not hold every tap, fails it.
+  TEST_CASE("PCF grids beside a depth step: uniform windows, and taps that reach past any window") {
+    using raster::simd::Float8;
+    using raster::simd::Float8x2;
+    constexpr int kSize = 64, kStep = 32;
+    constexpr uint32_t kNear = 0x400000, kFar = 0xC00000;
+    const float ref = 0.5f;   // between kNear and kFar as depths
+    long lanesCompared = 0, passed = 0, failed = 0;
+    for (const bool alongX : {true, false}) {
+      raster::Texture map(kSize, kSize, raster::TexelFormat::Depth24);
+      for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) map.depth[size_t(y) * kSize + size_t(x)] = (alongX ? x : y) < kStep ? kNear : kFar;
+      raster::Sampler2DShadow sampler;
+      sampler.texture = &map;
+      for (const float stepTexels : {1.0f, 2.0f}) {
+        const float step = stepTexels / float(kSize);
+        // Lanes from 8 texels before the step to 8 after it, 16 at a time: the first pairs'
+        // windows lie before the step, the last ones' after it. On a texel centre each tap's
+        // second texel has weight 0; a quarter past it, every texel of the window counts.
+        for (int lanePlace = 0; lanePlace < 2 * 17; ++lanePlace) {
+          const int first = kStep - 8 + lanePlace % 17;
+          const float within = lanePlace < 17 ? 0.5f : 0.75f;
+          alignas(64) float s[16], t[16], refs[16];
+          for (int l = 0; l < 16; ++l) {
+            const float along = (float(first) + within) / float(kSize), across = (float(8 + l) + 0.5f) / float(kSize);
+            s[l] = alongX ? along : across;
+            t[l] = alongX ? across : along;
+            refs[l] = ref;
+          }
+          const raster::glsl::vec2<Float8x2> uv(Float8x2{Float8::load(s), Float8::load(s + 8)},
+                                                Float8x2{Float8::load(t), Float8::load(t + 8)});
+          const Float8x2 refPair{Float8::load(refs), Float8::load(refs + 8)};
+          Float8x2 grid3[3][3], grid5[5][5];
+          raster::textureCompareGrid<1>(sampler, uv, 0.0f, step, refPair, grid3);
+          raster::textureCompareGrid<2>(sampler, uv, 0.0f, step, refPair, grid5);
+          auto check = [&](auto tap, int radius) {
+            const int n = 2 * radius + 1;
+            for (int j = 0; j < n; ++j)
+              for (int i = 0; i < n; ++i) {
+                alignas(64) float got[16];
+                tap(j, i).low().store(got);
+                tap(j, i).high().store(got + 8);
+                for (int l = 0; l < 16; ++l) {
+                  const float lone = raster::sampling::compareClamp(map, float(i - radius) * step + s[l],
+                                                                    float(j - radius) * step + t[l], refs[l]);
+                  CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
+                  passed += lone == 1.0f;
+                  failed += lone == 0.0f;
+                  ++lanesCompared;
+                }
+              }
+          };
+          check([&](int j, int i) { return grid3[j][i]; }, 1);
+          check([&](int j, int i) { return grid5[j][i]; }, 2);
+        }
+      }
+    }
+    CHECK(lanesCompared == 2 * 2 * 2 * 17 * 16 * (9 + 25));
+    CHECK(passed > lanesCompared / 4);   // both sides of the step are sampled whole
+    CHECK(failed > lanesCompared / 4);
+  }
 #endif
 
   // compare=nearest (raster/methods.h) against its definition and its stated bound: each

@@ -260,7 +260,8 @@ void columnsOfFourLanes(const __m512i (&v)[4], int first, __m512i (&codes)[Cols]
 // row (BENCHMARKS.md, "The 3x3 PCF window read lane by lane"). Taller windows (the 5x5
 // grid's six rows, 24 registers of rows) measured slower that way than a row at a time.
 template <int Rows, int Cols>
-[[gnu::always_inline]] inline void windowCodes16(const Texture& depth, const int (&start)[16], __m512i (&codes)[Rows][Cols]) {
+[[gnu::always_inline]] inline void windowCodes16(const Texture& depth, const int (&start)[16],
+                                                 __m512i (&codes)[Rows][Cols]) {
   const uint32_t* texels = depth.depth.data();
   const size_t width = size_t(depth.width);
   // Lanes k, k + 4, k + 8 and k + 12 of window row r from column `first` on.
@@ -295,30 +296,32 @@ template <int Rows, int Cols>
   }
 }
 
+// A depth code read as a float in [0, 1] (refPasses' unorm conversion), 16 lanes.
+[[gnu::always_inline]] inline __m512 codeDepth16(__m512i code, __m512 scale) {
+  return _mm512_mul_ps(_mm512_cvtepi32_ps(code), scale);
+}
+
 // passes[r][c] = ref <= texel (r, c) of each lane's window (refPasses, 16 lanes).
 template <int Rows, int Cols>
 [[gnu::always_inline]] inline void windowPasses16(const Texture& depth, const __m512i (&codes)[Rows][Cols], __m512 ref,
                                                   __mmask16 (&passes)[Rows][Cols]) {
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
   for (int r = 0; r < Rows; ++r)
-    for (int c = 0; c < Cols; ++c)
-      passes[r][c] = _mm512_cmp_ps_mask(ref, _mm512_mul_ps(_mm512_cvtepi32_ps(codes[r][c]), scale), _CMP_LE_OQ);
+    for (int c = 0; c < Cols; ++c) passes[r][c] = _mm512_cmp_ps_mask(ref, codeDepth16(codes[r][c], scale), _CMP_LE_OQ);
 }
 
-// Whether each lane's window passes the compare at every texel or fails it at every one:
-// then each of the lane's taps is 1 or +0 whatever its weights, in every form of the grid
-// (a row's blend is w + (1 - w) = 1 for any weight in [0, 1], or +0 + +0; a tap blends two
-// equal rows to that value). A code reads as a float through a rounded product, which keeps
+// Where each lane's window passes the compare at every texel or fails it at every one, each
+// of the lane's taps is 1 or +0 whatever its weights, in every form of the grid (a row's
+// blend is w + (1 - w) = 1 for any weight in [0, 1], or +0 + +0; a tap blends two equal
+// rows to that value). A code reads as a float through a rounded product, which keeps
 // their order, so comparing with the window's least and greatest codes is comparing with
 // every code. In the shadow scene about 99% of the pairs' windows are uniform: the compare
 // changes only along a shadow's edge (BENCHMARKS.md, "PCF windows that pass or fail whole").
-struct UniformWindows {
-  __mmask16 pass, fail;   // lanes whose window passes (fails) at every texel
-  bool all() const { return __mmask16(pass | fail) == 0xFFFF; }
-};
+// True, with the `tapCount` taps written (1 where the lane's window passes, +0 where it
+// fails), when every lane's window is uniform; false, with nothing written, otherwise.
 template <int Rows, int Cols>
-[[gnu::always_inline]] inline UniformWindows uniformWindows16(const Texture& depth, const __m512i (&codes)[Rows][Cols],
-                                                              __m512 ref) {
+[[gnu::always_inline]] inline bool uniformTaps16(const Texture& depth, const __m512i (&codes)[Rows][Cols], __m512 ref,
+                                                 int tapCount, simd::Float8x2* taps) {
   __m512i least = codes[0][0], greatest = codes[0][0];
   for (int r = 0; r < Rows; ++r)
     for (int c = 0; c < Cols; ++c) {
@@ -326,14 +329,12 @@ template <int Rows, int Cols>
       greatest = _mm512_max_epu32(greatest, codes[r][c]);
     }
   const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
-  auto asDepth = [&](__m512i code) { return _mm512_mul_ps(_mm512_cvtepi32_ps(code), scale); };
-  return {_mm512_cmp_ps_mask(ref, asDepth(least), _CMP_LE_OQ), _mm512_cmp_ps_mask(ref, asDepth(greatest), _CMP_GT_OQ)};
-}
-
-// The taps of lanes with uniform windows: 1 where the window passes, +0 where it fails.
-[[gnu::always_inline]] inline void uniformTaps16(__mmask16 pass, int count, simd::Float8x2* taps) {
+  const __mmask16 pass = _mm512_cmp_ps_mask(ref, codeDepth16(least, scale), _CMP_LE_OQ);
+  const __mmask16 fail = _mm512_cmp_ps_mask(ref, codeDepth16(greatest, scale), _CMP_GT_OQ);
+  if (__mmask16(pass | fail) != 0xFFFF) return false;
   const simd::Float8x2 value(_mm512_maskz_mov_ps(pass, _mm512_set1_ps(1.0f)));
-  for (int k = 0; k < count; ++k) taps[k] = value;
+  for (int k = 0; k < tapCount; ++k) taps[k] = value;
+  return true;
 }
 
 // Each lane's window origin, start[lane] = y * width + x, in memory to be read as scalars.
@@ -376,10 +377,7 @@ bool compareNearestGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2
   __m512i codes[count][count];
   windowCodes16(depth, start, codes);
   const __m512 clampedRef = clampRef16(ref.v);
-  if (const UniformWindows uniform = uniformWindows16(depth, codes, clampedRef); uniform.all()) {
-    uniformTaps16(uniform.pass, count * count, taps);
-    return true;
-  }
+  if (uniformTaps16(depth, codes, clampedRef, count * count, taps)) return true;
   __mmask16 passes[count][count];
   windowPasses16(depth, codes, clampedRef, passes);
   for (int j = 0; j < count; ++j)
@@ -418,10 +416,7 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
   __m512i codes[texels][texels];   // codes[r][c]: texel (r, c) of the lane's neighbourhood
   windowCodes16(depth, start, codes);
   const __m512 ref = clampRef16(ref16.v);
-  if (const UniformWindows uniform = uniformWindows16(depth, codes, ref); uniform.all()) {
-    uniformTaps16(uniform.pass, count * count, taps);
-    return true;
-  }
+  if (uniformTaps16(depth, codes, ref, count * count, taps)) return true;
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
   windowPasses16(depth, codes, ref, passes);
   if (inPlace) {

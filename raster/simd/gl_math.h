@@ -223,12 +223,23 @@ template <class F>
 //   (so NaN -> NaN; with DAZ a denormal compares equal to 0 -> -inf).
 // log2Core is the approximation alone: for a positive normal finite x, daz and the edge
 // cases change nothing.
+//
+// Its exponent and mantissa steps are log2Exponent and log2Mantissa; where AVX-512 has them
+// as one instruction each (gl_math_avx512.h), those give the same values for such an x.
+template <class F>
+F log2Exponent(F x) {
+  using U = UOf<F>;
+  return cvt(((asBits(x) & U(0x7f800000u)) >> 23) - U(127u));
+}
+template <class F>
+F log2Mantissa(F x) {
+  using U = UOf<F>;
+  return asFloat((asBits(x) & U(0x007fffffu)) | U(0x3f800000u));
+}
 template <class F>
 [[gnu::always_inline]] inline F log2Core(F x) {
-  using U = UOf<F>;
-  const U i = asBits(x);
-  const F logexp = cvt(((i & U(0x7f800000u)) >> 23) - U(127u));
-  const F mant = asFloat((i & U(0x007fffffu)) | U(0x3f800000u));
+  const F logexp = log2Exponent(x);
+  const F mant = log2Mantissa(x);
   const F y = (mant - F(1.0f)) / (mant + F(1.0f));
   const F z = y * y;
   const F z2 = z * z;

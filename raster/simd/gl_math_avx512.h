@@ -31,5 +31,20 @@ inline simd::Float8x2 cvt(U8x2 u) { return simd::Float8x2(_mm512_cvtepi32_ps(u.v
 inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
 template <> struct IntLanesOf<simd::Float8x2> { using type = U8x2; };
 
+// log2Core's exponent and mantissa (gl_math.h) in one instruction each, for 8 and 16 lanes:
+// vgetexpps gives floor(log2 |x|) and vgetmantps the significand in [1, 2), which for a
+// positive normal x are the bit operations' float(exponent - 127) and (mantissa | 1.0).
+// They differ elsewhere (getexp(0) is -inf, not -127), but there log2Impl overwrites the
+// result with its edge cases, and powPlain masks its zeros. Four and two operations fewer
+// per log2: pow is log2, then exp2 (BENCHMARKS.md, "log2 by getexp and getmant").
+inline simd::Float8x2 log2Exponent(simd::Float8x2 x) { return simd::Float8x2(_mm512_getexp_ps(x.v)); }
+inline simd::Float8x2 log2Mantissa(simd::Float8x2 x) {
+  return simd::Float8x2(_mm512_getmant_ps(x.v, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero));
+}
+inline simd::Float8 log2Exponent(simd::Float8 x) { return simd::Float8(_mm256_getexp_ps(x.v)); }
+inline simd::Float8 log2Mantissa(simd::Float8 x) {
+  return simd::Float8(_mm256_getmant_ps(x.v, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero));
+}
+
 }  // namespace raster::glsl::detail
 #endif

@@ -1,6 +1,7 @@
 // Depth-compare sampling (sampler2DShadow), LINEAR + CLAMP_TO_EDGE, as llvmpipe does it, and
 // the compare=nearest method (methods.h): the reference, one lookup at a time
-// (sample_compare_avx2.cpp: 8 lanes and PCF grids at once).
+// (sample_compare_avx2.cpp: 8 lanes and PCF grids at once; sample_compare_avx512.cpp: the
+// grids of a Float8x2 pair in one register).
 // Sources: lp_bld_sample_soa.c (lp_build_sample_wrap_linear, lp_build_sample_image_linear,
 // lp_build_sample_comparefunc, lp_build_masklerp2d); lp_bld_conv.c (unorm -> float).
 #include <algorithm>

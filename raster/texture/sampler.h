@@ -27,6 +27,12 @@ struct Sampler2DShadow {
 
 namespace sampling {
 
+// What a depth map's codes are multiplied by to read as floats in [0, 1] (format.h's
+// depth24ToFloat and depth16ToFloat), for the vector compares of both ISA files.
+inline float depthCodeScale(const Texture& depth) {
+  return depth.format == TexelFormat::Depth24 ? float(1.0 / 16777215.0) : float(1.0 / 65535.0);
+}
+
 // One colour lookup (sampler2D): RGBA8 through llvmpipe's 8-bit fixed-point path, float
 // formats in float32 (see sample_color.cpp). Writes r, g, b, a.
 void sampleColor(const Texture& texture, float s, float t, float out[4]);

@@ -1,8 +1,9 @@
 // The lookups for Float8 and Float8x2 lanes (AVX2 gathers and F16C; AVX-512 where built):
 // overloads of sampler.h's sampling::lookup*() names, each bit-identical to the reference
 // lane for lane. The 8-lane samplers live in sample_color_avx2.cpp and
-// sample_compare_avx2.cpp; Float8x2 lookups issue both groups' texel loads before either
-// blends, so their cache misses overlap.
+// sample_compare_avx2.cpp, the 16-lane PCF grids in sample_compare_avx512.cpp; Float8x2
+// lookups issue both groups' texel loads before either blends, so their cache misses
+// overlap.
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -33,10 +34,10 @@ template <int R>
 void compareGrid8x2(const Texture& depth, const simd::Float8 s[2], const simd::Float8 t[2], float origin, float step,
                     const simd::Float8 ref[2], simd::Float8* lo, simd::Float8* hi);
 #if RASTER_ZMM_PAIRS
-// Both grids in 512-bit registers where every lane's footprints lie in one window of
-// 2R + 2 texels a side (one texel apart, or piled together at a map edge):
-// taps[(j + R) * (2R + 1) + (i + R)], each bit-identical to compareGrid8x2's. False, with
-// nothing written, otherwise.
+// Both grids in 512-bit registers (sample_compare_avx512.cpp) where every lane's footprints
+// lie in one window of 2R + 2 texels a side (one texel apart, or piled together at a map
+// edge): taps[(j + R) * (2R + 1) + (i + R)], each bit-identical to compareGrid8x2's.
+// False, with nothing written, otherwise.
 template <int R>
 bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref,
                    simd::Float8x2* taps);

@@ -118,6 +118,14 @@ template <class F> F inversesqrt(F x) {
   return F(1.0f) / sqrt(x);
 }
 template <class F> vec3<F> normalize(vec3<F> v) { return v * inversesqrt(dot(v, v)); }
+// normalize of a uniform: every lane would compute the same value from the same operands,
+// so it is computed once, in float, by the same operations, and broadcast. The same bits as
+// the lanes' own normalize (div_methods_test), without a vector square root and division
+// per lane group.
+template <class F> vec3<F> normalizeUniform(glm::vec3 v) {
+  const vec3<float> n = normalize(vec3<float>(v));
+  return {F(n.x), F(n.y), F(n.z)};
+}
 
 template <class F> F mix(F a, F b, F t) { return a + t * (b - a); }
 template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.x, b.x, t.x), mix(a.y, b.y, t.y), mix(a.z, b.z, t.z)}; }

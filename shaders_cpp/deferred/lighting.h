@@ -101,7 +101,7 @@ struct LightingPass : PostProgram {
     raster::texturePrefetch(u.env_map, env_uv_r);
 
     // shadowed sun: light-space NDC -> shadow uv + depth ref (GL z in [-1,1] -> [0,1])
-    const vec3<F> sun_dir = normalize(vec3<F>(u.u_light_dir));
+    const vec3<F> sun_dir = normalizeUniform<F>(u.u_light_dir);   // normalize(u_light_dir), once a group
     const F ndotl_sun = max(dot(n, sun_dir), F(0.0f));
     const vec4<F> lc = u.u_light_vp * vec4<F>(p, F(1.0f));
     const F lw = max(lc.w, F(0.0001f));

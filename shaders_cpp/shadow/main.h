@@ -76,7 +76,7 @@ struct MainPass {
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
     const vec3<F> n = normalize(in.v_world_normal);
-    const vec3<F> l = normalize(vec3<F>(u.u_light_dir));
+    const vec3<F> l = normalizeUniform<F>(u.u_light_dir);   // normalize(u_light_dir), once a group
     const F ndotl = max(dot(n, l), F(0.0f));
     const vec3<F> v = normalize(u.u_cam_pos - in.v_world_pos);
     // Light-space NDC -> [0, 1] uv and depth reference.

@@ -91,4 +91,37 @@ TEST_SUITE("simd") {
     CHECK(bitsOf(n) == bitsOf(3.0f * inversesqrtApprox(169.0f)));
     CHECK(std::fabs(n / (3.0f / 13.0f) - 1.0f) < 5e-6f);
   }
+
+  TEST_CASE("normalizeUniform gives every lane the bits of the lanes' own normalize, in both div methods") {
+    using raster::glsl::vec3;
+#if RASTER_AVX2
+    using Lanes = raster::simd::Float8x2;   // the shader ports' widest lane type
+#else
+    using Lanes = raster::simd::Lanes<8>;
+#endif
+    constexpr int kLanes = Lanes::kCount;
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> component(-100.0f, 100.0f);
+    std::vector<glm::vec3> inputs = {{0.5f, 1.0f, 0.3f}, {0.0f, 0.0f, 0.0f}, {1e-30f, 0.0f, 0.0f}, {1e-40f, 2e-39f, 0.0f},
+                                     {3e38f, 3e38f, 1.0f}, {-0.0f, 1.0f, -2.0f}, {std::numeric_limits<float>::infinity(), 1.0f, 0.0f},
+                                     {std::numeric_limits<float>::quiet_NaN(), 1.0f, 1.0f}};
+    for (int i = 0; i < 20000; ++i) inputs.push_back({component(rng), component(rng), component(rng) * std::ldexp(1.0f, i % 60 - 30)});
+    for (const raster::DivMethod method : {raster::DivMethod::Exact, raster::DivMethod::Approx}) {
+      raster::MethodSet set;
+      set.div = method;
+      const raster::ScopedMethods scoped(set);
+      size_t differing = 0;
+      for (const glm::vec3& v : inputs) {
+        const vec3<Lanes> once = raster::glsl::normalizeUniform<Lanes>(v);
+        const vec3<Lanes> lanes = raster::glsl::normalize(vec3<Lanes>(v));
+        alignas(64) float a[3][kLanes], b[3][kLanes];
+        once.x.store(a[0]), once.y.store(a[1]), once.z.store(a[2]);
+        lanes.x.store(b[0]), lanes.y.store(b[1]), lanes.z.store(b[2]);
+        for (int c = 0; c < 3; ++c)
+          for (int l = 0; l < kLanes; ++l) differing += bitsOf(a[c][l]) != bitsOf(b[c][l]);
+      }
+      CAPTURE(int(method));
+      CHECK(differing == 0);
+    }
+  }
 }

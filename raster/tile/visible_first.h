@@ -36,19 +36,23 @@ class TileTriangles {
   static constexpr uint32_t kNone = ~0u;
 
   explicit TileTriangles(bool flipY) : local_(flipY, kTile), flipY_(flipY) {}
-  // Forgets every mark (a new tile).
-  void reset() { std::fill(std::begin(marked_), std::end(marked_), 0u); }
+  // Forgets every mark (a new tile): every entry shows no triangle. (Filling the 16 KiB
+  // once a tile lets a mark write its rows without asking whether they were marked before.)
+  void reset() {
+    std::fill(std::begin(marked_), std::end(marked_), 0u);
+    std::fill(std::begin(entries_), std::end(entries_), kNone);
+  }
 
   // Lanes `passed` of the group at tile offset (lx, ly) now show triangle `index`.
   void mark(int lx, int ly, unsigned passed, uint32_t index) {
     uint32_t* at = entries_ + ly * kTile + lx;
-    if (markGroup(lx, ly))
-      for (int i = 0; i < kLanes; ++i) at[local_.texel[i]] = kNone;
+    markGroup(lx, ly, passed != 0);
     for (; passed; passed &= passed - 1) at[local_.texel[__builtin_ctz(passed)]] = index;
   }
 
   // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
-  // triangle `index`, for lane types with kDepthTestsInBlocks (visible_first_avx2.h).
+  // triangle `index` (no bits: nothing changes), for lane types with kDepthTestsInBlocks
+  // (visible_first_avx2.h).
   void markBlock(int lx, int ly, uint32_t passed, uint32_t index);
 
   // forEachVisible, a 4x4 block at a time (upper group, then lower), where a block whose
@@ -83,15 +87,10 @@ class TileTriangles {
   }
 
  private:
-  // Marks the group at (lx, ly) as holding entries; returns whether it was unmarked before
-  // (its entries then hold nothing yet).
-  bool markGroup(int lx, int ly) {
-    uint32_t& rowBits = marked_[ly / 2];
-    const uint32_t bit = 1u << (lx / kGroupWidth);
-    const bool first = !(rowBits & bit);
-    rowBits |= bit;
-    return first;
-  }
+  // Marks the group at (lx, ly) as holding entries when `any`: an or, not a branch, since
+  // half the visibility pass's blocks fail their depth test whole, in no pattern a branch
+  // predictor can learn.
+  void markGroup(int lx, int ly, bool any) { marked_[ly / 2] |= uint32_t(any) << (lx / kGroupWidth); }
 
   const LaneLayout<F> local_;   // lane offsets within the tile
   const bool flipY_;
@@ -131,7 +130,7 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
       const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
       walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
         const uint32_t passed = depthTestBlock<F>(job, tri, blockX, blockY, coverage);
-        if (passed && writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
+        if (writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
       });
     }
     // A block that shows one triangle whole is shaded as one pair straight from the planes

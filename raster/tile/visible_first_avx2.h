@@ -13,11 +13,11 @@ namespace raster {
 template <>
 inline void TileTriangles<simd::Float8>::mark(int lx, int ly, unsigned passed, uint32_t index) {
   uint32_t* at = entries_ + ly * kTile + lx;
-  const bool first = markGroup(lx, ly);
-  // The group's two rows of four, read (or kNone when first marked), blended, written.
+  markGroup(lx, ly, passed != 0);
+  // The group's two rows of four, read, blended, written.
   __m128i* top = reinterpret_cast<__m128i*>(at);
   __m128i* bottom = reinterpret_cast<__m128i*>(at + kTile);
-  const __m256i old = first ? _mm256_set1_epi32(-1) : _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
+  const __m256i old = _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
   const __m256i lanes = _mm256_castps_si256(simd::Mask8::fromBits(passed).v);
   const __m256i rows = _mm256_permutevar8x32_epi32(lanes, simd::quadLanesToRows(flipY_));
   const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
@@ -28,18 +28,15 @@ inline void TileTriangles<simd::Float8>::mark(int lx, int ly, unsigned passed, u
 #if RASTER_ZMM_PAIRS
 template <>
 inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
-  // mark() for the block's upper group and its lower one, in memory rows.
-  for (int half = 0; half < 2; ++half) {
-    const uint32_t bits = passed >> (8 * half) & 0xFFu;
-    if (!bits) continue;
-    const bool first = markGroup(lx, ly + 2 * half);
-    for (int r = 0; r < 2; ++r) {
-      uint32_t* at = entries_ + (ly + 2 * half + r) * kTile + lx;
-      const __mmask8 row = __mmask8(bits >> (4 * r) & 0xFu);
-      // A row the tile owns whole: read, blended and written back (masked stores are slow).
-      const __m128i before = first ? _mm_set1_epi32(-1) : _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_mask_blend_epi32(row, before, _mm_set1_epi32(int(index))));
-    }
+  // mark() for the block's upper group and its lower one, in memory rows, without a branch:
+  // a block none of whose pixels passed writes its rows back as they were.
+  for (int half = 0; half < 2; ++half) markGroup(lx, ly + 2 * half, (passed >> (8 * half) & 0xFFu) != 0);
+  for (int r = 0; r < 4; ++r) {
+    uint32_t* at = entries_ + (ly + r) * kTile + lx;
+    const __mmask8 row = __mmask8(passed >> (4 * r) & 0xFu);
+    // A row the tile owns whole: read, blended and written back (masked stores are slow).
+    const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_mask_blend_epi32(row, before, _mm_set1_epi32(int(index))));
   }
 }
 #endif

@@ -172,6 +172,7 @@ struct DrawRecord {
   int varyingFloats = 0;          // shader->varyingFloats()
   int colorOutputs = 0;           // shader->colorOutputs()
   uint32_t primitivesPerInstance = 0;   // the indices' triangles: SetupTriangle::primitive / this = instance
+  bool lanesIndependent = false;        // shader->lanesIndependent()
 };
 
 // The colour outputs a draw writes to a framebuffer: those both its shader and the

@@ -149,8 +149,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   if (history_ && !history_->passes.empty()) history_->passes.back().programs.push_back(shader->name());
   const bool samplesTextures = shader->samplesTextures();
   const int colorOutputs = shader->colorOutputs();
+  const bool lanesIndependent = shader->lanesIndependent();
   draws_.push_back(DrawRecord{std::move(shader), state, samplesTextures, setup.varyingFloats, colorOutputs,
-                              uint32_t(indices.size() / 3)});
+                              uint32_t(indices.size() / 3), lanesIndependent});
 
   // 4. Binning.
   const uint64_t binStart = cycleCount();

@@ -98,4 +98,15 @@ constexpr bool samplesTextures() {
   return std::apply([](auto... entry) { return (... || IsSamplerEntry<decltype(entry)>::value); }, Program::kUniformTable);
 }
 
+// Whether a program's lanes are independent: its fragment shader reads nothing of another
+// lane (no dFdx / dFdy, no texture() whose level of detail they set), so a lane's outputs
+// are its own inputs' alone. A port says so with `static constexpr bool kLanesIndependent
+// = true;`; the visibility-first walk then shades the triangles one lane group shows in one
+// call (tile/visible_first.h). Without it, false: the safe answer.
+template <class Program>
+constexpr bool lanesIndependent() {
+  if constexpr (requires { Program::kLanesIndependent; }) return Program::kLanesIndependent;
+  else return false;
+}
+
 }  // namespace raster

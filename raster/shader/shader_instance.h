@@ -20,6 +20,8 @@ class ShaderInstance {
   // Whether its fragment shader reads textures: the pipeline then shades lane groups two
   // at a time (tile/group_shader_avx2.h), so one group's texel loads overlap the other's.
   virtual bool samplesTextures() const = 0;
+  // Whether its lanes are independent (raster::lanesIndependent, shader/program.h).
+  virtual bool lanesIndependent() const = 0;
   // Shades a batch of one instance's vertices into their records of `out`, with the
   // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;

@@ -25,6 +25,9 @@ using namespace raster::glsl;
 struct ScenePass {
   static constexpr const char* kName = "hdr/scene";
   static constexpr int kColorOutputs = 1;
+  // No dFdx / dFdy and no texture(): each lane's colour is its own inputs' alone
+  // (raster::lanesIndependent), so a lane group may gather the lanes of several triangles.
+  static constexpr bool kLanesIndependent = true;
 
   struct Uniforms {
     glm::mat4 u_view{1.0f};

@@ -6,8 +6,11 @@
 
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "raster/texture/format.h"
+#include "shaders_cpp/deferred/gbuffer.h"
+#include "shaders_cpp/hdr/scene.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 
@@ -123,6 +126,58 @@ void checkFragmentAgrees(const typename Program::Uniforms& u, std::mt19937& rng,
 #endif
 }
 
+#if RASTER_AVX2
+// A port that says its lanes are independent (raster::lanesIndependent) must shade each
+// lane as if alone: the visibility pass then gathers the lanes of several triangles into
+// one call (tile/visible_first.h). Sixteen lanes of random varyings, with zeros, denormals,
+// infinities and NaNs among them, are shaded as one Float8x2 call; then each lane again with
+// its inputs in every lane, and all sixteen once more in reverse order. Every output must
+// keep its bits.
+template <class Program>
+void checkLanesIndependent(const typename Program::Uniforms& u, std::mt19937& rng) {
+  static_assert(raster::lanesIndependent<Program>());
+  using Paired = raster::simd::Float8x2;
+  using raster::simd::Float8;
+  constexpr int n = raster::varyingFloatCount<Program>();
+  const float specials[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 1e30f, -1e30f, __builtin_inff(), -__builtin_inff(), __builtin_nanf("")};
+  std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+  alignas(64) float inputs[n + 4][16];   // the varyings, then gl_FragCoord
+  for (auto& input : inputs)
+    for (float& x : input) x = rng() % 8 == 0 ? specials[rng() % std::size(specials)] : value(rng);
+  // Shades lane `at(l)` of the inputs in lane l, returning every output channel's 16 lanes.
+  auto shade = [&](auto at) {
+    alignas(64) float lanes[n + 4][16];
+    for (int v = 0; v < n + 4; ++v)
+      for (int l = 0; l < 16; ++l) lanes[v][l] = inputs[v][at(l)];
+    Paired varyings[n];
+    for (int v = 0; v < n; ++v) varyings[v] = {Float8::load(lanes[v]), Float8::load(lanes[v] + 8)};
+    raster::FragmentInput<Paired> in;
+    auto load = [&](int v) { return Paired{Float8::load(lanes[n + v]), Float8::load(lanes[n + v] + 8)}; };
+    in.gl_FragCoord = {load(0), load(1), load(2), load(3)};
+    raster::FragmentOutput<Paired> out;
+    Program::fragment(u, in, raster::varyingsFromArray<Program, Paired>(varyings), out);
+    std::vector<float> result;
+    for (int k = 0; k < Program::kColorOutputs; ++k)
+      for (const Paired& c : {out.color[k].x, out.color[k].y, out.color[k].z, out.color[k].w}) {
+        alignas(64) float both[16];
+        c.low().store(both);
+        c.high().store(both + 8);
+        result.insert(result.end(), both, both + 16);
+      }
+    return result;
+  };
+  const std::vector<float> together = shade([](int l) { return l; });
+  const std::vector<float> reversed = shade([](int l) { return 15 - l; });
+  for (int l = 0; l < 16; ++l) {
+    const std::vector<float> alone = shade([&](int) { return l; });
+    for (size_t c = 0; c < together.size() / 16; ++c) {
+      CHECK(sameBits(&together[c * 16 + size_t(l)], &reversed[c * 16 + size_t(15 - l)], 1));
+      CHECK(sameBits(&together[c * 16 + size_t(l)], &alone[c * 16 + size_t(l)], 1));
+    }
+  }
+}
+#endif
+
 glm::mat4 randomMatrix(std::mt19937& rng) {
   std::uniform_real_distribution<float> value(-2.0f, 2.0f);
   glm::mat4 m;
@@ -165,4 +220,24 @@ TEST_SUITE("shaders") {
       checkFragmentAgrees<shaders::shadow::MainPass>(u, rng, -2.0f, 2.0f);
     }
   }
+
+  // Ports that read derivatives or textures keep the default: their lane groups are never
+  // gathered from several triangles.
+  static_assert(!raster::lanesIndependent<shaders::deferred::GBufferPass>());
+  static_assert(!raster::lanesIndependent<shaders::shadow::MainPass>());
+
+#if RASTER_AVX2
+  TEST_CASE("hdr/scene says its lanes are independent, and shades each lane as if alone") {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+    for (int round = 0; round < 100; ++round) {
+      shaders::hdr::ScenePass::Uniforms u;
+      u.u_view = randomMatrix(rng);
+      u.u_proj = randomMatrix(rng);
+      u.u_time = value(rng);
+      u.u_cam_pos = {value(rng), value(rng), value(rng)};
+      checkLanesIndependent<shaders::hdr::ScenePass>(u, rng);
+    }
+  }
+#endif
 }

@@ -111,7 +111,7 @@ struct MainPass {
     }
     // Blinn-Phong specular, killed in shadow along with the diffuse.
     const vec3<F> hvec = normalize(l + v);
-    const F spec = pow(max(dot(n, hvec), F(0.0f)), F(48.0f)) * lit * spec_strength;
+    const F spec = pow<48.0f>(max(dot(n, hvec), F(0.0f))) * lit * spec_strength;
     // diffuse = sun * ndotl * lit is used once, so GLSL IR grafts it into albedo * diffuse:
     // albedo * ((sun * ndotl) * lit), a tree of products alone, which Mesa's
     // do_rebalance_tree (opt_rebalance_tree.cpp) balances as (albedo * sun) * (ndotl * lit).

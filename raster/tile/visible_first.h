@@ -5,7 +5,9 @@
 // the pixel would end with. Pass 2 shades, group by group, only those fragments: for each
 // triangle a group's pixels name, the group exactly as the in-order walk prepares it (same
 // origin, planes and helper lanes, so the same bits), with only that triangle's pixels
-// written. Each pixel is written once, so no order is needed between the groups.
+// written; where the port's lanes are independent, the triangles of one group are
+// interpolated that way and then shaded in one call. Each pixel is written once, so no
+// order is needed between the groups.
 //
 // This file is the reference, lane by lane; visible_first_avx2.h marks and reads a Float8
 // group's two rows at once, and (AVX-512) a whole 4x4 block.

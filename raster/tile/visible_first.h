@@ -106,18 +106,19 @@ class TileTriangles {
 
 namespace raster {
 
-// Lanes `lanes` of the interpolated group `into` take `from`'s fragment inputs and
-// varyings: one more triangle the group shows (rasterizeVisibleFirst). The rest of `into`
-// (its pixel centres and depth, its triangle) stays its first triangle's; being
-// interpolated, the group no longer reads them.
+// Lanes `lanes` of the interpolated group `into` take another triangle's fragment inputs
+// and varyings (`in`, `varyings`): one more triangle the group shows (rasterizeVisibleFirst).
+// The rest of `into` (its pixel centres and depth, its triangle) stays its first triangle's;
+// being interpolated, the group no longer reads them.
 template <class F>
-[[gnu::always_inline]] inline void takeLanes(FragmentGroup<F>& into, const FragmentGroup<F>& from, unsigned lanes) {
+[[gnu::always_inline]] inline void takeLanes(FragmentGroup<F>& into, const FragmentInput<F>& in, const F* varyings,
+                                             unsigned lanes) {
   const auto take = F::MaskType::fromBits(lanes);
   glsl::vec4<F>& coord = into.in.gl_FragCoord;
-  const glsl::vec4<F>& fromCoord = from.in.gl_FragCoord;
+  const glsl::vec4<F>& fromCoord = in.gl_FragCoord;
   coord = glsl::vec4<F>(simd::select(take, fromCoord.x, coord.x), simd::select(take, fromCoord.y, coord.y),
                         simd::select(take, fromCoord.z, coord.z), simd::select(take, fromCoord.w, coord.w));
-  for (int v = 0; v < into.draw->varyingFloats; ++v) into.varyings[v] = simd::select(take, from.varyings[v], into.varyings[v]);
+  for (int v = 0; v < into.draw->varyingFloats; ++v) into.varyings[v] = simd::select(take, varyings[v], into.varyings[v]);
   into.laneMask |= lanes;
 }
 
@@ -140,7 +141,8 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
   // call gave it. (In the hdr swarm at 640x480 a group shows 2.3 triangles on average.)
   FragmentGroup<F>* open = nullptr;   // the group gathering lanes, not yet pushed
   int openX = 0, openY = 0;
-  FragmentGroup<F> another;           // a further triangle of the open group, interpolated
+  FragmentInput<F> anotherIn;         // a further triangle of the open group, interpolated
+  F anotherVaryings[limits::kMaxVaryingFloats];
   const auto shadeGroup = [&](int lx, int ly, uint32_t index, unsigned laneMask) __attribute__((always_inline)) {
     const SetupTriangle& tri = job.triangles[index];
     const GroupAt at{tile.x0 + lx, tile.y0 + ly, laneMask};
@@ -148,8 +150,8 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     counters.lanesCovered += unsigned(__builtin_popcount(laneMask));
     if (open && openX == lx && openY == ly && open->draw == &job.draws[tri.drawIndex] &&
         open->draw->lanesIndependent && open->tri->frontFacing == tri.frontFacing) {
-      fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), another);
-      takeLanes(*open, another, laneMask);
+      interpolateFragment(job, tri, px, py, fragmentDepth(tri, px, py), anotherIn, anotherVaryings);
+      takeLanes(*open, anotherIn, anotherVaryings, laneMask);
       return;
     }
     if (open) shader.push();

@@ -137,7 +137,6 @@ template <class Program>
 void checkLanesIndependent(const typename Program::Uniforms& u, std::mt19937& rng) {
   static_assert(raster::lanesIndependent<Program>());
   using Paired = raster::simd::Float8x2;
-  using raster::simd::Float8;
   constexpr int n = raster::varyingFloatCount<Program>();
   const float specials[] = {0.0f, -0.0f, 1e-40f, -1e-40f, 1e30f, -1e30f, __builtin_inff(), -__builtin_inff(), __builtin_nanf("")};
   std::uniform_real_distribution<float> value(-3.0f, 3.0f);
@@ -150,19 +149,17 @@ void checkLanesIndependent(const typename Program::Uniforms& u, std::mt19937& rn
     for (int v = 0; v < n + 4; ++v)
       for (int l = 0; l < 16; ++l) lanes[v][l] = inputs[v][at(l)];
     Paired varyings[n];
-    for (int v = 0; v < n; ++v) varyings[v] = {Float8::load(lanes[v]), Float8::load(lanes[v] + 8)};
+    for (int v = 0; v < n; ++v) varyings[v] = Paired::load(lanes[v]);
     raster::FragmentInput<Paired> in;
-    auto load = [&](int v) { return Paired{Float8::load(lanes[n + v]), Float8::load(lanes[n + v] + 8)}; };
-    in.gl_FragCoord = {load(0), load(1), load(2), load(3)};
+    in.gl_FragCoord = {Paired::load(lanes[n]), Paired::load(lanes[n + 1]), Paired::load(lanes[n + 2]), Paired::load(lanes[n + 3])};
     raster::FragmentOutput<Paired> out;
     Program::fragment(u, in, raster::varyingsFromArray<Program, Paired>(varyings), out);
     std::vector<float> result;
     for (int k = 0; k < Program::kColorOutputs; ++k)
       for (const Paired& c : {out.color[k].x, out.color[k].y, out.color[k].z, out.color[k].w}) {
-        alignas(64) float both[16];
-        c.low().store(both);
-        c.high().store(both + 8);
-        result.insert(result.end(), both, both + 16);
+        alignas(64) float all[16];
+        c.store(all);
+        result.insert(result.end(), all, all + 16);
       }
     return result;
   };

@@ -159,10 +159,6 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     openX = lx, openY = ly;
     fillGroup(job, tri, layout, at, fragmentDepth(tri, px, py), *open);
   };
-  const auto pushOpen = [&] {
-    if (open) shader.push();
-    open = nullptr;
-  };
   if constexpr (kDepthTestsInBlocks<F>) {
     // The visibility pass needs no quads: its depth tests run a whole block at a time.
     for (uint32_t index : bin) {
@@ -187,7 +183,7 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     });
     shown.forEachVisible(shadeGroup);
   }
-  pushOpen();
+  if (open) shader.push();   // the last group gathered
 }
 
 }  // namespace raster

@@ -106,6 +106,18 @@ template <int Rows, int Cols>
 // changes only along a shadow's edge (BENCHMARKS.md, "PCF windows that pass or fail whole").
 // True, with the `tapCount` taps written (1 where the lane's window passes, +0 where it
 // fails), when every lane's window is uniform; false, with nothing written, otherwise.
+[[gnu::always_inline]] inline bool uniformTaps16(const Texture& depth, __m512i least, __m512i greatest, __m512 ref,
+                                                 int tapCount, simd::Float8x2* taps) {
+  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
+  const __mmask16 pass = _mm512_cmp_ps_mask(ref, codeDepth16(least, scale), _CMP_LE_OQ);
+  const __mmask16 fail = _mm512_cmp_ps_mask(ref, codeDepth16(greatest, scale), _CMP_GT_OQ);
+  if (__mmask16(pass | fail) != 0xFFFF) return false;
+  const simd::Float8x2 value(_mm512_maskz_mov_ps(pass, _mm512_set1_ps(1.0f)));
+  for (int k = 0; k < tapCount; ++k) taps[k] = value;
+  return true;
+}
+
+// uniformTaps16 from a window's codes as windowCodes16 reads them.
 template <int Rows, int Cols>
 [[gnu::always_inline]] inline bool uniformTaps16(const Texture& depth, const __m512i (&codes)[Rows][Cols], __m512 ref,
                                                  int tapCount, simd::Float8x2* taps) {
@@ -115,13 +127,46 @@ template <int Rows, int Cols>
       least = _mm512_min_epu32(least, codes[r][c]);
       greatest = _mm512_max_epu32(greatest, codes[r][c]);
     }
-  const __m512 scale = _mm512_set1_ps(depthCodeScale(depth));
-  const __mmask16 pass = _mm512_cmp_ps_mask(ref, codeDepth16(least, scale), _CMP_LE_OQ);
-  const __mmask16 fail = _mm512_cmp_ps_mask(ref, codeDepth16(greatest, scale), _CMP_GT_OQ);
-  if (__mmask16(pass | fail) != 0xFFFF) return false;
-  const simd::Float8x2 value(_mm512_maskz_mov_ps(pass, _mm512_set1_ps(1.0f)));
-  for (int k = 0; k < tapCount; ++k) taps[k] = value;
-  return true;
+  return uniformTaps16(depth, least, greatest, ref, tapCount, taps);
+}
+
+// The least and greatest code of each lane's 4x4 window from start[lane], 16 lanes, lane k
+// in element k: the same bounds uniformTaps16 takes from windowCodes16's 4x4 codes, found
+// before any transpose. Each 16-byte window row is loaded into one half of a 256-bit
+// register (lanes k and k + 4, or k + 8 and k + 12), and the rows are reduced there, so
+// only the reduced rows are joined into 512-bit registers and transposed. Joining every row
+// first, as windowCodes16 must, took three times the shuffles; those all run on one port
+// (BENCHMARKS.md, "The 3x3 PCF's uniform test before the transpose").
+[[gnu::always_inline]] inline void windowBounds4x4(const Texture& depth, const int (&start)[16], __m512i& least,
+                                                   __m512i& greatest) {
+  const uint32_t* texels = depth.depth.data();
+  const size_t width = size_t(depth.width);
+  __m512i rowLeast[4], rowGreatest[4];   // as rowsOfFourLanes: lanes k, k + 4, k + 8, k + 12
+  for (int k = 0; k < 4; ++k) {
+    const uint32_t* lane[4];
+    for (int q = 0; q < 4; ++q) lane[q] = texels + size_t(start[k + 4 * q]);
+    auto rowPair = [&](int first, size_t r) {
+      return _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[first] + r * width)),
+                               _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[first + 1] + r * width)));
+    };
+    __m256i lowLeast = rowPair(0, 0), highLeast = rowPair(2, 0);
+    __m256i lowGreatest = lowLeast, highGreatest = highLeast;
+    for (size_t r = 1; r < 4; ++r) {
+      const __m256i low = rowPair(0, r), high = rowPair(2, r);
+      lowLeast = _mm256_min_epu32(lowLeast, low);
+      lowGreatest = _mm256_max_epu32(lowGreatest, low);
+      highLeast = _mm256_min_epu32(highLeast, high);
+      highGreatest = _mm256_max_epu32(highGreatest, high);
+    }
+    rowLeast[k] = _mm512_inserti64x4(_mm512_castsi256_si512(lowLeast), highLeast, 1);
+    rowGreatest[k] = _mm512_inserti64x4(_mm512_castsi256_si512(lowGreatest), highGreatest, 1);
+  }
+  __m512i columnLeast[4], columnGreatest[4];
+  columnsOfFourLanes<4>(rowLeast, 0, columnLeast);
+  columnsOfFourLanes<4>(rowGreatest, 0, columnGreatest);
+  least = _mm512_min_epu32(_mm512_min_epu32(columnLeast[0], columnLeast[1]), _mm512_min_epu32(columnLeast[2], columnLeast[3]));
+  greatest = _mm512_max_epu32(_mm512_max_epu32(columnGreatest[0], columnGreatest[1]),
+                              _mm512_max_epu32(columnGreatest[2], columnGreatest[3]));
 }
 
 // Each lane's window origin, start[lane] = y * width + x, in memory to be read as scalars.
@@ -200,10 +245,15 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
 
   alignas(64) int start[16];   // each lane's top-left texel of the neighbourhood
   storeWindowStarts(depth, startX, startY, start);
+  const __m512 ref = clampRef16(ref16.v);
+  if constexpr (texels == 4) {   // the 3x3 grid: its bounds first, the codes only where they are needed
+    __m512i least, greatest;
+    windowBounds4x4(depth, start, least, greatest);
+    if (uniformTaps16(depth, least, greatest, ref, count * count, taps)) return true;
+  }
   __m512i codes[texels][texels];   // codes[r][c]: texel (r, c) of the lane's neighbourhood
   windowCodes16(depth, start, codes);
-  const __m512 ref = clampRef16(ref16.v);
-  if (uniformTaps16(depth, codes, ref, count * count, taps)) return true;
+  if (texels != 4 && uniformTaps16(depth, codes, ref, count * count, taps)) return true;
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
   windowPasses16(depth, codes, ref, passes);
   if (inPlace) {

@@ -309,50 +309,83 @@ TEST_SUITE("shadow_compare") {
         for (int x = 0; x < kSize; ++x) map.depth[size_t(y) * kSize + size_t(x)] = (alongX ? x : y) < kStep ? kNear : kFar;
       raster::Sampler2DShadow sampler;
       sampler.texture = &map;
+      // Both grids of one pair of lane groups, lane l at (s[l], t[l]), every tap against its
+      // lone lookup.
+      auto checkGrids = [&](const float (&s)[16], const float (&t)[16], float step) {
+        alignas(64) float refs[16];
+        std::fill(std::begin(refs), std::end(refs), ref);
+        const raster::glsl::vec2<Float8x2> uv(Float8x2{Float8::load(s), Float8::load(s + 8)},
+                                              Float8x2{Float8::load(t), Float8::load(t + 8)});
+        const Float8x2 refPair{Float8::load(refs), Float8::load(refs + 8)};
+        Float8x2 grid3[3][3], grid5[5][5];
+        raster::textureCompareGrid<1>(sampler, uv, 0.0f, step, refPair, grid3);
+        raster::textureCompareGrid<2>(sampler, uv, 0.0f, step, refPair, grid5);
+        auto check = [&](auto tap, int radius) {
+          const int n = 2 * radius + 1;
+          for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+              alignas(64) float got[16];
+              tap(j, i).low().store(got);
+              tap(j, i).high().store(got + 8);
+              for (int l = 0; l < 16; ++l) {
+                const float lone = raster::sampling::compareClamp(map, float(i - radius) * step + s[l],
+                                                                  float(j - radius) * step + t[l], refs[l]);
+                CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
+                passed += lone == 1.0f;
+                failed += lone == 0.0f;
+                ++lanesCompared;
+              }
+            }
+        };
+        check([&](int j, int i) { return grid3[j][i]; }, 1);
+        check([&](int j, int i) { return grid5[j][i]; }, 2);
+      };
+      // Lane l at texel `along[l]` (plus `within`) along the step's axis, row or column 8 + l
+      // across it.
+      auto place = [&](const int (&along)[16], float within, float (&s)[16], float (&t)[16]) {
+        for (int l = 0; l < 16; ++l) {
+          const float a = (float(along[l]) + within) / float(kSize), across = (float(8 + l) + 0.5f) / float(kSize);
+          s[l] = alongX ? a : across;
+          t[l] = alongX ? across : a;
+        }
+      };
       for (const float stepTexels : {1.0f, 2.0f}) {
         const float step = stepTexels / float(kSize);
         // Lanes from 8 texels before the step to 8 after it, 16 at a time: the first pairs'
         // windows lie before the step, the last ones' after it. On a texel centre each tap's
         // second texel has weight 0; a quarter past it, every texel of the window counts.
         for (int lanePlace = 0; lanePlace < 2 * 17; ++lanePlace) {
-          const int first = kStep - 8 + lanePlace % 17;
-          const float within = lanePlace < 17 ? 0.5f : 0.75f;
-          alignas(64) float s[16], t[16], refs[16];
-          for (int l = 0; l < 16; ++l) {
-            const float along = (float(first) + within) / float(kSize), across = (float(8 + l) + 0.5f) / float(kSize);
-            s[l] = alongX ? along : across;
-            t[l] = alongX ? across : along;
-            refs[l] = ref;
-          }
-          const raster::glsl::vec2<Float8x2> uv(Float8x2{Float8::load(s), Float8::load(s + 8)},
-                                                Float8x2{Float8::load(t), Float8::load(t + 8)});
-          const Float8x2 refPair{Float8::load(refs), Float8::load(refs + 8)};
-          Float8x2 grid3[3][3], grid5[5][5];
-          raster::textureCompareGrid<1>(sampler, uv, 0.0f, step, refPair, grid3);
-          raster::textureCompareGrid<2>(sampler, uv, 0.0f, step, refPair, grid5);
-          auto check = [&](auto tap, int radius) {
-            const int n = 2 * radius + 1;
-            for (int j = 0; j < n; ++j)
-              for (int i = 0; i < n; ++i) {
-                alignas(64) float got[16];
-                tap(j, i).low().store(got);
-                tap(j, i).high().store(got + 8);
-                for (int l = 0; l < 16; ++l) {
-                  const float lone = raster::sampling::compareClamp(map, float(i - radius) * step + s[l],
-                                                                    float(j - radius) * step + t[l], refs[l]);
-                  CHECK(std::memcmp(&got[l], &lone, sizeof lone) == 0);
-                  passed += lone == 1.0f;
-                  failed += lone == 0.0f;
-                  ++lanesCompared;
-                }
-              }
-          };
-          check([&](int j, int i) { return grid3[j][i]; }, 1);
-          check([&](int j, int i) { return grid5[j][i]; }, 2);
+          int along[16];
+          std::fill(std::begin(along), std::end(along), kStep - 8 + lanePlace % 17);
+          alignas(64) float s[16], t[16];
+          place(along, lanePlace < 17 ? 0.5f : 0.75f, s, t);
+          checkGrids(s, t, step);
         }
       }
+      // One lane's window across the step, every other lane's on one side of it: the pair is
+      // uniform but for that lane, so a uniform test that mixed up lanes, or read some lane's
+      // window short, fails here.
+      for (const int side : {kStep - 8, kStep + 4})
+        for (int lone = 0; lone < 16; ++lone) {
+          int along[16];
+          std::fill(std::begin(along), std::end(along), side);
+          along[lone] = kStep - 1;
+          alignas(64) float s[16], t[16];
+          place(along, 0.5f, s, t);
+          checkGrids(s, t, 1.0f / float(kSize));
+        }
+      // Every lane's window on one side of the step, the sides in a pattern that no shift of
+      // the lanes keeps: the pair is uniform, and a test that gave a lane another lane's
+      // result fails here.
+      for (const unsigned farLanes : {0x0001u, 0x8000u, 0x00FFu, 0x0F0Fu, 0x3333u, 0x5555u, 0xA5C3u, 0x1248u}) {
+        int along[16];
+        for (int l = 0; l < 16; ++l) along[l] = (farLanes >> l) & 1u ? kStep + 4 : kStep - 8;
+        alignas(64) float s[16], t[16];
+        place(along, 0.5f, s, t);
+        checkGrids(s, t, 1.0f / float(kSize));
+      }
     }
-    CHECK(lanesCompared == 2 * 2 * 2 * 17 * 16 * (9 + 25));
+    CHECK(lanesCompared == 2 * (2 * 2 * 17 + 2 * 16 + 8) * 16 * (9 + 25));
     CHECK(passed > lanesCompared / 4);   // both sides of the step are sampled whole
     CHECK(failed > lanesCompared / 4);
   }

@@ -155,15 +155,19 @@ template <int R>
 }
 
 // tapsAreConsecutive (linear_taps_avx2.h) on 16 lanes: true when, in every lane and along
-// both axes, tap k of a grid spans texels first + k and first + k + 1.
+// both axes, tap k of a grid spans texels first + k and first + k + 1. A tap's second texel
+// is min(i0 + 1, size - 1) (wrapLinearClampToEdge16), so where each tap's first texel is
+// first + k, every tap's second one is the next texel when the last tap's is: one compare
+// per tap and axis, and no compare waits on another's mask.
 [[gnu::always_inline]] inline bool tapsAreConsecutive16(const LinearTaps16* x, const LinearTaps16* y, int count) {
-  __mmask16 apart = 0xFFFF;
-  for (int k = 0; k < count; ++k)
-    for (const LinearTaps16* axis : {x, y}) {
-      apart &= _mm512_cmpeq_epi32_mask(axis[k].i0, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k)));
-      apart &= _mm512_cmpeq_epi32_mask(axis[k].i1, _mm512_add_epi32(axis[0].i0, _mm512_set1_epi32(k + 1)));
-    }
-  return apart == 0xFFFF;
+  __m512i differs = _mm512_setzero_si512();
+  for (const LinearTaps16* axis : {x, y}) {
+    const __m512i first = axis[0].i0;
+    for (int k = 1; k < count; ++k)
+      differs = _mm512_or_si512(differs, _mm512_xor_si512(axis[k].i0, _mm512_add_epi32(first, _mm512_set1_epi32(k))));
+    differs = _mm512_or_si512(differs, _mm512_xor_si512(axis[count - 1].i1, _mm512_add_epi32(first, _mm512_set1_epi32(count))));
+  }
+  return _mm512_test_epi32_mask(differs, differs) == 0;
 }
 
 // The prefetches ahead of a 4x4 block's lookups (simd/prefetch.h says why): its lanes'

@@ -154,20 +154,22 @@ template <int R>
   gridTaps16(s, t, depth.width, depth.height, offset, offset, x, y);
 }
 
-// tapsAreConsecutive (linear_taps_avx2.h) on 16 lanes: true when, in every lane and along
-// both axes, tap k of a grid spans texels first + k and first + k + 1. A tap's second texel
-// is min(i0 + 1, size - 1) (wrapLinearClampToEdge16), so where each tap's first texel is
+// tapsAreConsecutive (linear_taps_avx2.h) on 16 lanes, along one axis: true when, in every
+// lane, tap k spans texels first + k and first + k + 1. A tap's second texel is
+// min(i0 + 1, size - 1) (wrapLinearClampToEdge16), so where each tap's first texel is
 // first + k, every tap's second one is the next texel when the last tap's is: one compare
-// per tap and axis, and no compare waits on another's mask.
-[[gnu::always_inline]] inline bool tapsAreConsecutive16(const LinearTaps16* x, const LinearTaps16* y, int count) {
-  __m512i differs = _mm512_setzero_si512();
-  for (const LinearTaps16* axis : {x, y}) {
-    const __m512i first = axis[0].i0;
-    for (int k = 1; k < count; ++k)
-      differs = _mm512_or_si512(differs, _mm512_xor_si512(axis[k].i0, _mm512_add_epi32(first, _mm512_set1_epi32(k))));
-    differs = _mm512_or_si512(differs, _mm512_xor_si512(axis[count - 1].i1, _mm512_add_epi32(first, _mm512_set1_epi32(count))));
-  }
+// per tap, or-ed as vectors (masked compares had each waited on the last one's mask).
+[[gnu::always_inline]] inline bool axisTapsAreConsecutive16(const LinearTaps16* axis, int count) {
+  const __m512i first = axis[0].i0;
+  __m512i differs = _mm512_xor_si512(axis[count - 1].i1, _mm512_add_epi32(first, _mm512_set1_epi32(count)));
+  for (int k = 1; k < count; ++k)
+    differs = _mm512_or_si512(differs, _mm512_xor_si512(axis[k].i0, _mm512_add_epi32(first, _mm512_set1_epi32(k))));
   return _mm512_test_epi32_mask(differs, differs) == 0;
+}
+
+// The same along both axes.
+[[gnu::always_inline]] inline bool tapsAreConsecutive16(const LinearTaps16* x, const LinearTaps16* y, int count) {
+  return axisTapsAreConsecutive16(x, count) && axisTapsAreConsecutive16(y, count);
 }
 
 // The prefetches ahead of a 4x4 block's lookups (simd/prefetch.h says why): its lanes'
@@ -304,7 +306,12 @@ template <int kTaps>
 // window starts at tap 0's first texel moved in from the far edge (startX, startY), and each
 // tap blends the window texels its lane picks, with the same operations as where the taps
 // lie in place (blendGridPicked does this per 8 lanes). All four window rows' blends are
-// kept, since a tap row may take any two of them.
+// kept, since a tap row may take any two of them. An axis whose taps are consecutive in
+// every lane (InPlaceX, InPlaceY: a block at the left or right edge is in place down the
+// rows, one at the top or bottom along them) has its window start at tap 0's first texel
+// (its last tap's second texel is at most size - 1, so no move in) and tap k spans window
+// texels k and k + 1: those are taken as they are, which is what picking them gives.
+template <bool InPlaceX, bool InPlaceY>
 [[gnu::always_inline]] inline void blendHalfGridPicked16(const Texture& t, const int* start, const LinearTaps16 (&x)[3],
                                                          const LinearTaps16 (&y)[3], __m512i startX, __m512i startY,
                                                          __m512 (&blended)[9][4]) {
@@ -315,8 +322,10 @@ template <int kTaps>
     __m512i leftColumn[3], rightColumn[3];
     __m512 weightX[3];
     for (int i = 0; i < 3; ++i) {
-      leftColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i0, startX));
-      rightColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i1, startX));
+      if constexpr (!InPlaceX) {
+        leftColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i0, startX));
+        rightColumn[i] = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(x[i].i1, startX));
+      }
       weightX[i] = _mm512_permutexvar_ps(lanes, x[i].weight);
     }
     __m512 rowBlend[3][4];   // [tap column][window row]
@@ -324,16 +333,21 @@ template <int kTaps>
       __m512 texel[4];
       windowRowTexels16(texels, start, size_t(r) * size_t(t.width), k, texel);
       for (int i = 0; i < 3; ++i) {
-        const __m512 left = pickInWindow16(texel, leftColumn[i]), right = pickInWindow16(texel, rightColumn[i]);
+        const __m512 left = InPlaceX ? texel[i] : pickInWindow16(texel, leftColumn[i]);
+        const __m512 right = InPlaceX ? texel[i + 1] : pickInWindow16(texel, rightColumn[i]);
         rowBlend[i][r] = _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left);
       }
     }
     for (int j = 0; j < 3; ++j) {
-      const __m512i topRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i0, startY));
-      const __m512i bottomRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i1, startY));
+      __m512i topRow = _mm512_setzero_si512(), bottomRow = _mm512_setzero_si512();
+      if constexpr (!InPlaceY) {
+        topRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i0, startY));
+        bottomRow = _mm512_permutexvar_epi32(lanes, _mm512_sub_epi32(y[j].i1, startY));
+      }
       const __m512 weightY = _mm512_permutexvar_ps(lanes, y[j].weight);
       for (int i = 0; i < 3; ++i) {
-        const __m512 top = pickInWindow16(rowBlend[i], topRow), bottom = pickInWindow16(rowBlend[i], bottomRow);
+        const __m512 top = InPlaceY ? rowBlend[i][j] : pickInWindow16(rowBlend[i], topRow);
+        const __m512 bottom = InPlaceY ? rowBlend[i][j + 1] : pickInWindow16(rowBlend[i], bottomRow);
         blended[j * 3 + i][k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(bottom, top), top);
       }
     }
@@ -354,7 +368,9 @@ template <int kTaps>
                                                    simd::Float8x2 (&taps)[9][4]) {
   LinearTaps16 x[3], y[3];
   bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
-  const bool inPlace = tapsAreConsecutive16(x, y, 3);   // then the window starts at tap 0's first texel
+  // Where an axis's taps are consecutive, the window starts at tap 0's first texel along it.
+  const bool inPlaceX = axisTapsAreConsecutive16(x, 3), inPlaceY = axisTapsAreConsecutive16(y, 3);
+  const bool inPlace = inPlaceX && inPlaceY;
   __m512i startX = x[0].i0, startY = y[0].i0;
   if (!inPlace) {
     if (t.width < 4 || t.height < 4) return false;
@@ -367,8 +383,12 @@ template <int kTaps>
   storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(startY, _mm512_set1_epi32(t.width)), startX), start);
   prefetchFootprintRows(t, start, 4);
   __m512 blended[9][4];   // [tap][k]: lanes k | k + 4 | k + 8 | k + 12, rgba each
-  if (!inPlace) {
-    blendHalfGridPicked16(t, start, x, y, startX, startY, blended);
+  if (inPlaceX && !inPlaceY) {   // a block at the top or bottom edge
+    blendHalfGridPicked16<true, false>(t, start, x, y, startX, startY, blended);
+  } else if (inPlaceY && !inPlaceX) {   // at the left or right edge
+    blendHalfGridPicked16<false, true>(t, start, x, y, startX, startY, blended);
+  } else if (!inPlace) {   // at a corner
+    blendHalfGridPicked16<false, false>(t, start, x, y, startX, startY, blended);
   } else {
     for (int k = 0; k < 4; ++k) {
       const __m512i lanes = blockLanes(k);

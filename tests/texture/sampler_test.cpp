@@ -331,14 +331,23 @@ TEST_SUITE("texture") {
   }
 #endif
 #if RASTER_AVX2
+  // What gridTapsAgainstScalar saw: taps and channel mismatches, grids that took the 16-lane
+  // shared path, and those of them whose taps some edge piled onto the same texels, by the
+  // axes that were not in place (only down the rows, only along them, or both).
+  struct GridCounts {
+    long taps = 0, mismatches = 0, shared16 = 0;
+    long pickedRows = 0, pickedColumns = 0, pickedBoth = 0;
+  };
+
   // Every tap of textureGrid3x3 for `Lanes` (Float8, or Float8x2 with its 16-lane path)
-  // against its lone scalar lookup; returns {taps, channel mismatches, grids that took the
-  // 16-lane shared path, those of them whose taps some edge piled onto the same texels}.
+  // against its lone scalar lookup.
   template <class Lanes>
-  std::tuple<long, long, long, long> gridTapsAgainstScalar() {
+  GridCounts gridTapsAgainstScalar() {
     constexpr int kLanes = int(sizeof(Lanes) / sizeof(float));
     std::mt19937 rng(78);
-    long mismatches = 0, taps = 0, shared16 = 0, picked16 = 0;
+    GridCounts counts;
+    long& mismatches = counts.mismatches;
+    long& taps = counts.taps;
     for (raster::TexelFormat format : {raster::TexelFormat::RGBA16F, raster::TexelFormat::RGBA8}) {
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{4, 4}, std::pair{2, 1}}) {
         raster::Texture tex = randomTexture(rng, w, h, format);
@@ -354,11 +363,32 @@ TEST_SUITE("texture") {
             // Pixel centres of a target twice the size (as the bloom upsample reads) or half
             // (the downsample), or anywhere; in most rounds every lane, so that the vector
             // forms' shared paths (which need all lanes one texel apart) are taken.
+            // Every sixth round the lanes are one 4x4 block of that target, laid out as the
+            // pipeline lays out a block's lanes (lane_layout.h): a block on one edge of the
+            // texture has its taps in place along the other axis, as the bloom passes' border
+            // blocks do.
             const int scale = round % 4 == 3 ? 1 : 2;
+            const int cols = round % 2 ? scale * w : std::max(w / scale, 1);
+            const int rows = round % 2 ? scale * h : std::max(h / scale, 1);
+            const bool asBlock = round % 6 == 0;
+            // The block's column and row of blocks: the first, the last or any, so that
+            // blocks on one edge and in a corner are both common.
+            auto blockAt = [&](int size) {
+              const int blocks = (size + 3) / 4;
+              const unsigned pick = rng() % 3;
+              return 4 * (pick == 0 ? 0 : pick == 1 ? blocks - 1 : int(rng() % unsigned(blocks)));
+            };
+            const int blockX = blockAt(cols), blockY = blockAt(rows);
             for (int i = 0; i < kLanes; ++i) {
+              if (asBlock) {
+                const int group = (i % 16) / 8, lane = i % 8;
+                const int x = std::min(blockX + (lane / 4) * 2 + (lane & 1), cols - 1);
+                const int y = std::min(blockY + group * 2 + ((lane >> 1) & 1), rows - 1);
+                s16[i] = (float(x) + 0.5f) / float(cols);
+                t16[i] = (float(y) + 0.5f) / float(rows);
+                continue;
+              }
               const bool centre = round % 5 != 4 || i % 3 != 0;
-              const int cols = round % 2 ? scale * w : std::max(w / scale, 1);
-              const int rows = round % 2 ? scale * h : std::max(h / scale, 1);
               s16[i] = centre ? (float(rng() % unsigned(cols)) + 0.5f) / float(cols) : uniform(rng, -0.2f, 1.2f);
               t16[i] = centre ? (float(rng() % unsigned(rows)) + 0.5f) / float(rows) : uniform(rng, -0.2f, 1.2f);
             }
@@ -377,8 +407,12 @@ TEST_SUITE("texture") {
                                   raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
               raster::sampling::LinearTaps16 x[3], y[3];
               raster::sampling::bloomGridTaps16(tex, s, t, step.x, step.y, x, y);
-              shared16 += shared;
-              picked16 += shared && !raster::sampling::tapsAreConsecutive16(x, y, 3);
+              const bool inPlaceX = raster::sampling::axisTapsAreConsecutive16(x, 3);
+              const bool inPlaceY = raster::sampling::axisTapsAreConsecutive16(y, 3);
+              counts.shared16 += shared;
+              counts.pickedRows += shared && inPlaceX && !inPlaceY;      // a top or bottom edge
+              counts.pickedColumns += shared && !inPlaceX && inPlaceY;   // a left or right edge
+              counts.pickedBoth += shared && !inPlaceX && !inPlaceY;
             }
 #endif
             for (int j = 0; j < 3; ++j)
@@ -398,24 +432,29 @@ TEST_SUITE("texture") {
         }
       }
     }
-    return {taps, mismatches, shared16, picked16};
+    return counts;
   }
 
   TEST_CASE("3x3 lookup grids: every tap equals its lone scalar lookup, shared texels or not") {
-    const auto [taps, mismatches, shared16, picked16] = gridTapsAgainstScalar<raster::simd::Float8>();
-    MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches");
-    CHECK(taps == 2 * 4 * 2 * 300 * 9 * 8);
-    CHECK(mismatches == 0);
+    const GridCounts counts = gridTapsAgainstScalar<raster::simd::Float8>();
+    MESSAGE(counts.taps << " grid taps, " << counts.mismatches << " channel mismatches");
+    CHECK(counts.taps == 2 * 4 * 2 * 300 * 9 * 8);
+    CHECK(counts.mismatches == 0);
   }
 #if RASTER_ZMM_PAIRS
   TEST_CASE("3x3 lookup grids on 16 lanes (Float8x2): every tap equals its lone scalar lookup") {
-    const auto [taps, mismatches, shared16, picked16] = gridTapsAgainstScalar<raster::simd::Float8x2>();
-    MESSAGE(taps << " grid taps, " << mismatches << " channel mismatches, " << shared16
-                 << " grids on the 16-lane path, " << picked16 << " of them picking texels at an edge");
-    CHECK(taps == 2 * 4 * 2 * 300 * 9 * 16);
-    CHECK(shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
-    CHECK(picked16 > 20);   // and its edge form too
-    CHECK(mismatches == 0);
+    const GridCounts counts = gridTapsAgainstScalar<raster::simd::Float8x2>();
+    MESSAGE(counts.taps << " grid taps, " << counts.mismatches << " channel mismatches, " << counts.shared16
+                        << " grids on the 16-lane path, picking texels at an edge: " << counts.pickedRows
+                        << " down the rows only, " << counts.pickedColumns << " along them only, " << counts.pickedBoth
+                        << " both");
+    CHECK(counts.taps == 2 * 4 * 2 * 300 * 9 * 16);
+    CHECK(counts.shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
+    // and each of its edge forms
+    CHECK(counts.pickedRows > 10);
+    CHECK(counts.pickedColumns > 10);
+    CHECK(counts.pickedBoth > 10);
+    CHECK(counts.mismatches == 0);
   }
 #endif
 #endif

@@ -253,7 +253,10 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
   }
   __m512i codes[texels][texels];   // codes[r][c]: texel (r, c) of the lane's neighbourhood
   windowCodes16(depth, start, codes);
-  if (texels != 4 && uniformTaps16(depth, codes, ref, count * count, taps)) return true;
+  // The 5x5 grid takes its bounds from the codes: read first, a 6x6 window's bounds cost more
+  // than they saved (BENCHMARKS.md, "Tried and not kept").
+  if constexpr (texels != 4)
+    if (uniformTaps16(depth, codes, ref, count * count, taps)) return true;
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood
   windowPasses16(depth, codes, ref, passes);
   if (inPlace) {

@@ -387,7 +387,7 @@ template <bool InPlaceX, bool InPlaceY>
     blendHalfGridPicked16<true, false>(t, start, x, y, startX, startY, blended);
   } else if (inPlaceY && !inPlaceX) {   // at the left or right edge
     blendHalfGridPicked16<false, true>(t, start, x, y, startX, startY, blended);
-  } else if (!inPlace) {   // at a corner
+  } else if (!inPlace) {   // at a corner: picked along both
     blendHalfGridPicked16<false, false>(t, start, x, y, startX, startY, blended);
   } else {
     for (int k = 0; k < 4; ++k) {

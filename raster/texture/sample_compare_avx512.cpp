@@ -17,12 +17,16 @@
 namespace raster::sampling {
 namespace {
 
+// Four codes from each of two row pointers, a's in the low 128 bits.
+[[gnu::always_inline]] inline __m256i rowsOfTwoLanes(const uint32_t* a, const uint32_t* b) {
+  return _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(a)),
+                           _mm_loadu_si128(reinterpret_cast<const __m128i*>(b)));
+}
+
 // Four codes of each lane from its row pointer: lanes k, k + 4, k + 8 and k + 12 in one
 // register, the 128-bit block of each.
 __m512i rowsOfFourLanes(const uint32_t* const (&lane)[4]) {
-  auto row = [&](int q) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[q])); };
-  const __m256i low = _mm256_setr_m128i(row(0), row(1)), high = _mm256_setr_m128i(row(2), row(3));
-  return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+  return _mm512_inserti64x4(_mm512_castsi256_si512(rowsOfTwoLanes(lane[0], lane[1])), rowsOfTwoLanes(lane[2], lane[3]), 1);
 }
 
 // Columns `first` to Cols - 1 of v, v[k] as rowsOfFourLanes reads it: codes[first + c]
@@ -145,10 +149,7 @@ template <int Rows, int Cols>
   for (int k = 0; k < 4; ++k) {
     const uint32_t* lane[4];
     for (int q = 0; q < 4; ++q) lane[q] = texels + size_t(start[k + 4 * q]);
-    auto rowPair = [&](int first, size_t r) {
-      return _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[first] + r * width)),
-                               _mm_loadu_si128(reinterpret_cast<const __m128i*>(lane[first + 1] + r * width)));
-    };
+    auto rowPair = [&](int first, size_t r) { return rowsOfTwoLanes(lane[first] + r * width, lane[first + 1] + r * width); };
     __m256i lowLeast = rowPair(0, 0), highLeast = rowPair(2, 0);
     __m256i lowGreatest = lowLeast, highGreatest = highLeast;
     for (size_t r = 1; r < 4; ++r) {

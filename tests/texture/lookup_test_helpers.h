@@ -1,12 +1,32 @@
-// What the sampler tests against llvmpipe share: where a lookup lands, and a pass that
+// What the sampler tests share: random textures, where a lookup lands, and a pass that
 // draws one lookup per grid cell into a float target.
 #pragma once
 
+#include <doctest/doctest.h>
+
 #include <random>
 
+#include "raster/texture/format.h"
+#include "raster/texture/texture.h"
 #include "tests/gl_compare_helpers.h"
 
 namespace gltest {
+
+// A w x h texture of random texels: any RGBA8 bytes, or halves of values in [-8, 8]. A grey
+// one has r = g = b and alpha 255 at every texel, and so also the samplers' one-byte copy.
+inline raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::TexelFormat format, bool grey = false) {
+  raster::Texture tex(w, h, format);
+  for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
+  for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+  if (grey) {
+    for (size_t i = 0; i < tex.rgba8.size(); i += 4) {
+      tex.rgba8[i + 1] = tex.rgba8[i + 2] = tex.rgba8[i];
+      tex.rgba8[i + 3] = 255;
+    }
+    REQUIRE(raster::makeGreyCopy(tex));
+  }
+  return tex;
+}
 
 // A lookup coordinate: random, far outside, or on a texel centre / edge of the texture.
 inline float lookupCoordinate(std::mt19937& rng, int size) {

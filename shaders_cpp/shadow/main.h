@@ -87,9 +87,13 @@ struct MainPass {
     const F ref_depth = ndc.z * F(0.5f) + F(0.5f);
     // N.L-scaled bias on top of the pipeline's polygon offset.
     const F bias = max(F(0.0025f) * (F(1.0f) - ndotl), F(0.0008f));
-    F lit = pcf_shadow(u, shadow_half_ndc, ref_depth - bias);
-    // Faces turned away from the light are in shadow regardless of the depth test.
-    lit = select(ndotl < F(0.05f), F(0.0f), lit);
+    // Faces turned away from the light are in shadow regardless of the depth test. Their
+    // lookup's result is thrown away, so a group whose every lane is turned away does not
+    // make it: texture() has no side effect, and the bytes are the same either way.
+    const auto turned_away = ndotl < F(0.05f);
+    F lit = F(0.0f);
+    if (!all(turned_away)) lit = pcf_shadow(u, shadow_half_ndc, ref_depth - bias);
+    lit = select(turned_away, F(0.0f), lit);
     // Hemisphere ambient: warm-ish sky overhead blended to a dim ground bounce, by n.y.
     const F amb_t = n.y * F(0.5f) + F(0.5f);
     const vec3<F> ambient = mix(vec3<F>(glm::vec3(0.10f, 0.09f, 0.08f)), vec3<F>(glm::vec3(0.30f, 0.34f, 0.42f)),

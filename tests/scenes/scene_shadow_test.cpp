@@ -47,6 +47,9 @@ TEST_SUITE("scene_shadow") {
       CHECK(s.shareBitIdentical == 1.0);
     }
   }
+  // At t = 3.7 the camera sees cube faces turned away from the light, whose lane groups
+  // skip their PCF lookup (shaders_cpp/shadow/main.h): skipping where any lane, not every
+  // lane, is turned away fails here (max 195).
   TEST_CASE("t = 3.7 at 640x480 matches llvmpipe") { checkAgainstLlvmpipe(3.7f, 640, 480); }
   TEST_CASE("t = 2.2 at an odd size, 333x217, matches llvmpipe") { checkAgainstLlvmpipe(2.2f, 333, 217); }
 

@@ -122,6 +122,16 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
   }
 }
 
+// A depth-only draw over a 16x16 region its triangle straddles (some pixel centres inside,
+// some not), inside the framebuffer: each covered pixel tested and written as
+// depthTestBlock would, in memory rows instead of blocks. Returns false where the lane type
+// has no such form, or the edge values do not fit its 32-bit lanes; the walk then visits the
+// region's blocks.
+template <class F>
+bool depthOnlyStraddledRegion(const SetupTriangle&, const RasterState&, Texture&, int, int, int) {
+  return false;
+}
+
 // Whether a lane type tests depth a whole 4x4 block at a time, in memory rows, where no
 // quads are needed (depth-only draws, the visibility pass): only where that is faster than
 // two group tests (depth_test_avx512.h).

@@ -7,6 +7,7 @@
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
 #include "raster/simd/intrinsics.h"
+#include "raster/tile/coverage.h"
 #include "raster/tile/depth_test.h"
 
 namespace raster {
@@ -106,6 +107,54 @@ template <>
     const __m512i old = _mm512_loadu_si512(stored);
     _mm512_storeu_si512(stored, _mm512_mask_blend_epi32(depthPasses16(0xFFFF, code, old, lessEqual), old, code));
   }
+}
+
+// depthOnlyStraddledRegion (depth_test.h) a 16-pixel row at a time. Each edge's values at a
+// row's 16 pixel centres sit in two registers of 64-bit lanes, stepped by a vector add from
+// row to row: exact, as a long edge's values across a region outgrow 32 bits, so the
+// coverage bits are blockCoverage's. An edge the whole region lies inside is left out. A
+// row's codes, test and write are depthOnlyRegion's, kept to the covered pixels; rows with
+// none are not touched. A triangle touches each pixel once, so the order does not matter
+// and the same bits land as the block walk's.
+template <>
+[[gnu::noinline]] inline bool depthOnlyStraddledRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state,
+                                                                    Texture& depth, int width, int x, int y) {
+  using simd::Float8x2;
+  static_assert(limits::kRegionSize == 16, "a region row is two registers of 64-bit lanes");
+  constexpr int kLast = limits::kRegionSize - 1;
+  const __m512i lanesLow = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7), lanesHigh = _mm512_setr_epi64(8, 9, 10, 11, 12, 13, 14, 15);
+  __m512i low[3], high[3], stepY[3];
+  int straddling = 0;
+  for (const EdgeFunction& e : tri.edge) {
+    // The steps must fit the signed 32-bit multiply below (they do for small steps).
+    if (!hasSmallSteps(e)) return false;
+    const int64_t c00 = e.at(x, y);
+    int64_t most, least;   // over the region's pixels
+    edgeExtremes(e, kLast, kLast, most, least);
+    if (c00 + least > 0) continue;   // every pixel centre inside this edge
+    // c00 - dcdx * lane, with 32 x 32 -> 64-bit products.
+    const __m512i dcdx = _mm512_set1_epi64(e.dcdx), start = _mm512_set1_epi64(c00);
+    low[straddling] = _mm512_sub_epi64(start, _mm512_mul_epi32(dcdx, lanesLow));
+    high[straddling] = _mm512_sub_epi64(start, _mm512_mul_epi32(dcdx, lanesHigh));
+    stepY[straddling] = _mm512_set1_epi64(e.dcdy);
+    ++straddling;
+  }
+  const Float8x2 px = Float8x2(float(x)) + Float8x2(_mm512_setr_ps(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
+  const __m512i zero = _mm512_setzero_si512();
+  for (int row = 0; row < limits::kRegionSize; ++row) {
+    __mmask16 covered = 0xFFFF;
+    for (int k = 0; k < straddling; ++k) {
+      covered &= _mm512_kunpackb(_mm512_cmpgt_epi64_mask(high[k], zero), _mm512_cmpgt_epi64_mask(low[k], zero));
+      low[k] = _mm512_add_epi64(low[k], stepY[k]), high[k] = _mm512_add_epi64(high[k], stepY[k]);
+    }
+    if (!covered) continue;
+    const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, Float8x2(float(y + row)))), depth.format);
+    uint32_t* stored = depth.depth.data() + size_t(y + row) * size_t(width) + size_t(x);
+    const __m512i old = _mm512_loadu_si512(stored);
+    _mm512_storeu_si512(stored, _mm512_mask_blend_epi32(depthPasses16(covered, code, old, lessEqual), old, code));
+  }
+  return true;
 }
 
 // storeDepthCodes (depth_test.h) sixteen pixels of a row at a time, each code computed as

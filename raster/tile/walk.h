@@ -54,13 +54,21 @@ template <class F, class VisitBlock>
     Overlap overlap[limits::kTileSize / kRegion + 1];
     for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion)
       overlap[(regionX - firstRegionX) / kRegion] = regionOverlap(edges, regionX, regionY);
-    // Depth-only draws fill whole inside regions row by row; the blocks then skip them.
-    if (depthOnly && regionY >= y0 && regionY + kRegion - 1 <= y1) {
+    // Depth-only draws fill whole inside regions row by row, and where the lane type can,
+    // regions the triangle straddles too; the blocks then skip them. A straddled region is
+    // taken whole only inside the framebuffer, which its block walk would clip to; its rows
+    // and columns outside the triangle's bounds hold no pixel centre inside it.
+    if (depthOnly) {
+      const bool rowsInside = regionY >= y0 && regionY + kRegion - 1 <= y1;
       for (int regionX = firstRegionX; regionX <= x1; regionX += kRegion) {
         Overlap& region = overlap[(regionX - firstRegionX) / kRegion];
-        if (region != Overlap::Inside || regionX < x0 || regionX + kRegion - 1 > x1) continue;
-        depthOnlyRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY);
-        region = Overlap::Outside;
+        if (region == Overlap::Inside && rowsInside && regionX >= x0 && regionX + kRegion - 1 <= x1) {
+          depthOnlyRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY);
+          region = Overlap::Outside;
+        } else if (region == Overlap::Partial && regionX + kRegion <= fb.width && regionY + kRegion <= fb.height &&
+                   depthOnlyStraddledRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY)) {
+          region = Overlap::Outside;
+        }
       }
     }
     const int bandY1 = std::min(y1, regionY + kRegion - 1);

@@ -407,7 +407,7 @@ TEST_SUITE("raster_vs_gl") {
     }
   }
 
-  TEST_CASE("(f) depth-only targets: identical depth codes, inside regions included") {
+  TEST_CASE("(f) depth-only targets: identical depth codes, inside and straddled regions included") {
     BackendPair backends;
     std::mt19937 rng(6006);
     const TargetDesc targets[] = {
@@ -418,19 +418,24 @@ TEST_SUITE("raster_vs_gl") {
       for (scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
         for (bool offset : {false, true}) {
           // Mostly large triangles, so many 16x16 regions lie wholly inside one.
-          std::vector<Vertex> vertices;
+          std::vector<Vertex> vertices, onHalfPixels;
           for (int i = 0; i < 40; ++i) {
             const glm::vec2 c(uniform(rng, 0.0f, float(target.width)), uniform(rng, 0.0f, float(target.height)));
             const float size = uniform(rng, 20.0f, 150.0f);
             for (int v = 0; v < 3; ++v) {
               const glm::vec2 p = clampToTarget(c + glm::vec2(uniform(rng, -size, size), uniform(rng, -size, size)),
                                                 target.width, target.height);
-              vertices.push_back({clipFromWindow(p, uniform(rng, -0.95f, 0.95f), uniform(rng, 0.5f, 3.0f), target.width,
-                                                 target.height),
-                                  randomOpaqueColor(rng)});
+              const float ndcZ = uniform(rng, -0.95f, 0.95f), w = uniform(rng, 0.5f, 3.0f);
+              const glm::vec4 color = randomOpaqueColor(rng);
+              vertices.push_back({clipFromWindow(p, ndcZ, w, target.width, target.height), color});
+              // The same corner on the half-pixel grid: edges then run through pixel
+              // centres, whose coverage only the fill rule decides.
+              const glm::vec2 snapped = glm::round(p * 2.0f) * 0.5f;
+              onHalfPixels.push_back({clipFromWindow(snapped, ndcZ, w, target.width, target.height), color});
             }
           }
           compareDepthOnly(backends, target, makeMesh(vertices), func, offset);
+          compareDepthOnly(backends, target, makeMesh(onHalfPixels), func, offset);
           compareDepthOnly(backends, target, fullscreenTriangle(rng, true), func, offset);
         }
       }

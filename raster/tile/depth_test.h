@@ -122,13 +122,19 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
   }
 }
 
-// A depth-only draw over a 16x16 region its triangle straddles (some pixel centres inside,
-// some not), inside the framebuffer: each covered pixel tested and written as
-// depthTestBlock would, in memory rows instead of blocks. Returns false where the lane type
-// has no such form, or the edge values do not fit its 32-bit lanes; the walk then visits the
-// region's blocks.
+// A depth-only draw over a 16x16 region inside the framebuffer that its triangle straddles
+// (some pixel centres inside, some not) or covers: each covered pixel tested and written as
+// depthTestBlock would, in memory rows instead of blocks. `pendingClear`, when given, is
+// the code of a depth clear the region has not taken yet: the test reads it in place of the
+// stored codes, and every row of the region is written, covered or not. Returns false
+// where the lane type has no such form (kDepthRowsInRegions) or an edge's steps are not
+// small; the walk then visits the region's blocks.
 template <class F>
-bool depthOnlyStraddledRegion(const SetupTriangle&, const RasterState&, Texture&, int, int, int) {
+constexpr bool kDepthRowsInRegions = false;
+template <class F>
+bool depthOnlyStraddledRegion(const SetupTriangle&, const RasterState&, Texture&, int, int, int,
+                              const uint32_t* pendingClear = nullptr) {
+  (void)pendingClear;
   return false;
 }
 

@@ -114,11 +114,14 @@ template <>
 // row to row: exact, as a long edge's values across a region outgrow 32 bits, so the
 // coverage bits are blockCoverage's. An edge the whole region lies inside is left out. A
 // row's codes, test and write are depthOnlyRegion's, kept to the covered pixels; rows with
-// none are not touched. A triangle touches each pixel once, so the order does not matter
-// and the same bits land as the block walk's.
+// none are not touched unless the region takes its pending clear here. A triangle touches
+// each pixel once, so the order does not matter and the same bits land as the block walk's.
+template <>
+inline constexpr bool kDepthRowsInRegions<simd::Float8> = true;
 template <>
 [[gnu::noinline]] inline bool depthOnlyStraddledRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state,
-                                                                    Texture& depth, int width, int x, int y) {
+                                                                    Texture& depth, int width, int x, int y,
+                                                                    const uint32_t* pendingClear) {
   using simd::Float8x2;
   static_assert(limits::kRegionSize == 16, "a region row is two registers of 64-bit lanes");
   constexpr int kLast = limits::kRegionSize - 1;
@@ -142,16 +145,20 @@ template <>
   const Float8x2 px = Float8x2(float(x)) + Float8x2(_mm512_setr_ps(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
   const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
   const __m512i zero = _mm512_setzero_si512();
+  const __m512i clearCodes = _mm512_set1_epi32(int32_t(pendingClear ? *pendingClear : 0));
   for (int row = 0; row < limits::kRegionSize; ++row) {
     __mmask16 covered = 0xFFFF;
     for (int k = 0; k < straddling; ++k) {
       covered &= _mm512_kunpackb(_mm512_cmpgt_epi64_mask(high[k], zero), _mm512_cmpgt_epi64_mask(low[k], zero));
       low[k] = _mm512_add_epi64(low[k], stepY[k]), high[k] = _mm512_add_epi64(high[k], stepY[k]);
     }
-    if (!covered) continue;
-    const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, Float8x2(float(y + row)))), depth.format);
     uint32_t* stored = depth.depth.data() + size_t(y + row) * size_t(width) + size_t(x);
-    const __m512i old = _mm512_loadu_si512(stored);
+    if (!covered) {
+      if (pendingClear) _mm512_storeu_si512(stored, clearCodes);
+      continue;
+    }
+    const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, Float8x2(float(y + row)))), depth.format);
+    const __m512i old = pendingClear ? clearCodes : _mm512_loadu_si512(stored);
     _mm512_storeu_si512(stored, _mm512_mask_blend_epi32(depthPasses16(covered, code, old, lessEqual), old, code));
   }
   return true;

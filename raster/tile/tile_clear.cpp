@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/limits.h"
 #include "raster/merge/clear.h"
 #include "raster/texture/format.h"
 #include "raster/tile/coverage.h"
 #include "raster/tile/covered_tile.h"
 #include "raster/tile/depth_test.h"
 #include "raster/tile/rasterize_tile.h"
+#include "raster/util/cycles.h"
 
 namespace raster {
 
@@ -59,6 +61,68 @@ TileClearPlan planTileClear(const TileJob& job, std::span<const uint32_t> bin, c
   return plan;
 }
 
+namespace {
+
+// The depth clear taken a region at a time, on first touch (tile_clear.h): the whole bin
+// walked here, each triangle's regions in the order walk.h visits them. Returns false,
+// having written nothing, where the tile or a triangle of its bin does not qualify.
+template <class F>
+bool walkTakingDepthClearByRegion(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile,
+                                  float clearValue, PipelineCounters& counters) {
+  constexpr int kRegion = limits::kRegionSize, kRegionsAcross = limits::kTileSize / kRegion;
+  static_assert(kRegionsAcross * kRegionsAcross <= 32, "a tile's regions are bits of one word");
+  if constexpr (!kDepthRowsInRegions<F>) return false;
+  const Framebuffer& fb = *job.framebuffer;
+  if (bin.empty() || !fb.depth || tile.x0 % kRegion || (tile.x1 + 1) % kRegion || tile.y0 % kRegion || (tile.y1 + 1) % kRegion)
+    return false;
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const DrawRecord& draw = job.draws[tri.drawIndex];
+    if (!draw.state.depthTest || !draw.state.depthWrite || colorOutputsWritten(draw, fb) != 0) return false;
+    for (const EdgeFunction& e : tri.edge)
+      if (!hasSmallSteps(e)) return false;
+    // A triangle too small to hold a region keeps its block walk (walk.h): sixteen rows
+    // would cost it more than the clear saves.
+    const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
+    const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+    if (x0 > x1 || y0 > y1) continue;
+    const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
+                             ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
+    if (!holdsRegion) return false;
+  }
+  const uint64_t start = job.timeStages ? cycleCount() : 0;
+  const uint32_t clearCode = format::depthClearCode(clearValue, fb.depth->depthBits());
+  uint32_t taken = 0;   // bit (row * kRegionsAcross + column) of the tile's regions that took the clear
+  for (uint32_t index : bin) {
+    const SetupTriangle& tri = job.triangles[index];
+    const RasterState& state = job.draws[tri.drawIndex].state;
+    const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
+    const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+    if (x0 > x1 || y0 > y1) continue;
+    const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
+    for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
+      for (int regionX = x0 & ~(kRegion - 1); regionX <= x1; regionX += kRegion) {
+        if (regionOverlap(edges, regionX, regionY) == Overlap::Outside) continue;
+        const uint32_t bit = 1u << ((regionY - tile.y0) / kRegion * kRegionsAcross + (regionX - tile.x0) / kRegion);
+        depthOnlyStraddledRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY, taken & bit ? nullptr : &clearCode);
+        taken |= bit;
+      }
+    }
+  }
+  // The regions no triangle reached take the clear now.
+  ClearValues depthClear;
+  depthClear.depth = true;
+  depthClear.depthValue = clearValue;
+  for (int regionY = tile.y0; regionY <= tile.y1; regionY += kRegion)
+    for (int regionX = tile.x0; regionX <= tile.x1; regionX += kRegion)
+      if (!(taken >> ((regionY - tile.y0) / kRegion * kRegionsAcross + (regionX - tile.x0) / kRegion) & 1u))
+        merge::clearRect(fb, depthClear, TileBounds{regionX, regionY, regionX + kRegion - 1, regionY + kRegion - 1}, false);
+  if (job.timeStages) counters.rasterCycles += cycleCount() - start;
+  return true;
+}
+
+}  // namespace
+
 template <class F>
 size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending,
                  PipelineCounters& counters) {
@@ -66,6 +130,13 @@ size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBo
                            canShadeTileWhole<F>(tile, job.draws[job.triangles[bin.front()].drawIndex]);
   const TileClearPlan plan = planTileClear(job, bin, tile, pending, shadesWhole);
   const Framebuffer& fb = *job.framebuffer;
+  // A depth-only bin of large triangles takes its depth clear region by region instead.
+  if (plan.rest.depth && walkTakingDepthClearByRegion<F>(job, bin, tile, plan.rest.depthValue, counters)) {
+    ClearValues colorOnly = plan.rest;   // what else the pass clears (its draws write no colour)
+    colorOnly.depth = false;
+    merge::clearRect(fb, colorOnly, tile, true);
+    return bin.size();
+  }
   merge::clearRect(fb, plan.rest, tile, true, bin.empty() && job.streamUntouchedClears);
   if (!plan.firstStoresDepth) return 0;
   const SetupTriangle& first = job.triangles[bin.front()];

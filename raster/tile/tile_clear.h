@@ -17,6 +17,15 @@
 // bound on the float rounding of its evaluation, so a triangle near the cleared depth
 // keeps the clear.
 //
+// Where the depth clear stays, a tile whose bin holds only depth-only triangles large
+// enough to hold a 16x16 region (a shadow map's floor, clipped and fanned into pieces
+// none of which covers the tile alone) takes it a region at a time instead, where the lane
+// type tests depth along region rows (kDepthRowsInRegions, depth_test.h): the first
+// triangle to reach a region tests against the clear's code in place of the stored codes
+// and writes all of the region's rows; the regions none reaches are cleared last. Each
+// pixel then sees the same codes in the same order as after a whole clear, and the tile
+// is stored once instead of twice.
+//
 // A tile whose bin is empty is cleared with streaming stores (merge/clear_avx2.h) when the
 // pass's targets are larger than the threads' own caches (TileJob::streamUntouchedClears):
 // nothing of the pass reads it again, and it would not stay in cache for what does.
@@ -46,7 +55,8 @@ bool depthTestPassesEverywhere(const SetupTriangle& tri, const RasterState& stat
                                uint32_t stored, const TileBounds& rect);
 
 // Clears the tile as planned; returns how many of the bin's first triangles that did the
-// work of (0 or 1), which the walk then skips. F is the lane type the tile is walked with;
+// work of (0 or 1, or the whole bin where the depth clear went region by region), which
+// the walk then skips. F is the lane type the tile is walked with;
 // `counters` count the fragments a triangle shaded whole.
 template <class F>
 size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBounds& tile, const ClearValues& pending,

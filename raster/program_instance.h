@@ -4,6 +4,9 @@
 // points for each lane type with the port's own code.
 #pragma once
 
+#include <algorithm>
+#include <type_traits>
+
 #include "raster/geometry/vertex_stage.h"
 #include "raster/shader/program.h"
 #include "raster/shader/shader_instance.h"
@@ -43,7 +46,17 @@ class ProgramInstance final : public ShaderInstance {
  private:
   template <class F>
   void shadeVerticesWith(const VertexBatch& batch, ShadedVertices& out) const {
-    for (int first = batch.firstVertex; first < batch.endVertex; first += F::kCount) {
+    int first = batch.firstVertex;
+#if RASTER_ZMM_PAIRS
+    // Sixteen vertices to a group where more than eight are left, in one 512-bit register
+    // each: a group's per-vertex work is then half the instructions a vertex. (Per lane the
+    // operations are Float8's, so every record is the same.)
+    if constexpr (std::is_same_v<F, FastLanes>)
+      for (; batch.endVertex - first > F::kCount; first += PairedLanes::kCount)
+        vertex_stage::shadeVertexGroup<Program, PairedLanes>(uniforms_, batch, first,
+                                                             std::min(batch.endVertex - first, PairedLanes::kCount), out);
+#endif
+    for (; first < batch.endVertex; first += F::kCount) {
       const int count = batch.endVertex - first < F::kCount ? batch.endVertex - first : F::kCount;
       vertex_stage::shadeVertexGroup<Program, F>(uniforms_, batch, first, count, out);
     }

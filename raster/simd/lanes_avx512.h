@@ -32,6 +32,9 @@ struct Float8x2 {
   Float8x2(Float8 low, Float8 high) : v(_mm512_insertf32x8(_mm512_castps256_ps512(low.v), high.v, 1)) {}
   explicit Float8x2(__m512 x) : v(x) {}
   static Float8x2 load(const float* p) { return Float8x2(_mm512_loadu_ps(p)); }
+  static Float8x2 gather(const float* base, const int* index) {   // lane i reads base[index[i]]
+    return Float8x2(_mm512_i32gather_ps(_mm512_loadu_si512(index), base, 4));
+  }
   void store(float* p) const { _mm512_storeu_ps(p, v); }
   float operator[](int i) const { alignas(64) float t[16]; _mm512_store_ps(t, v); return t[i]; }
   Float8 low() const { return Float8(_mm512_extractf32x8_ps(v, 0)); }
@@ -62,6 +65,13 @@ inline Float8x2 max(Float8x2 a, Float8x2 b) { return Float8x2(_mm512_max_ps(a.v,
 inline Float8x2 floor(Float8x2 a) { return Float8x2(_mm512_roundscale_ps(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)); }
 inline Float8x2 sqrt(Float8x2 a) { return Float8x2(_mm512_sqrt_ps(a.v)); }
 inline Float8x2 abs(Float8x2 a) { return Float8x2(_mm512_andnot_ps(_mm512_set1_ps(-0.0f), a.v)); }
+// storeLanesTransposed (lanes.h) for sixteen lanes: each half by Float8's 8x8 transpose.
+inline void storeLanesTransposed(const Float8x2* rows, float* out, size_t stride, int count) {
+  Float8 low[8], high[8];
+  for (int r = 0; r < 8; ++r) low[r] = rows[r].low(), high[r] = rows[r].high();
+  storeLanesTransposed(low, out, stride, count < 8 ? count : 8);
+  if (count > 8) storeLanesTransposed(high, out + 8 * stride, stride, count - 8);
+}
 inline bool any(Mask8x2 m) { return m.k != 0; }
 inline bool all(Mask8x2 m) { return m.k == 0xFFFFu; }
 // Float8's in-lane shuffles, on all four 128-bit lanes (one quad each).

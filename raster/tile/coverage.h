@@ -61,6 +61,19 @@ struct EdgeWalkOf {
   using type = WalkEdge;
 };
 
+// The part of a triangle's pixel bounds inside `tile` (a tile or a band of one): empty when
+// x0 > x1 or y0 > y1, as when binning put the triangle in a tile whose band it misses.
+inline TileBounds boundsInTile(const SetupTriangle& tri, const TileBounds& tile) {
+  return {std::max(tile.x0, tri.minX), std::max(tile.y0, tri.minY), std::min(tile.x1, tri.maxX), std::min(tile.y1, tri.maxY)};
+}
+
+// Whether a rectangle (inclusive) holds a whole 16x16 region of the region grid.
+inline bool holdsWholeRegion(const TileBounds& r) {
+  constexpr int kRegion = limits::kRegionSize;
+  return ((r.x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= r.x1 &&
+         ((r.y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= r.y1;
+}
+
 // How a square of pixels lies against a triangle: wholly outside one edge, wholly inside
 // all three, or across an edge.
 enum class Overlap { Outside, Inside, Partial };

@@ -29,8 +29,8 @@ void inspectTile(const TileJob& job, const TileBounds& tile, std::span<const uin
     const SetupTriangle& tri = job.triangles[index];
     const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], fb) > 0;
     const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
-    const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
-    const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+    const TileBounds bounds = boundsInTile(tri, tile);
+    const int x0 = bounds.x0, x1 = bounds.x1, y0 = bounds.y0, y1 = bounds.y1;
     // Every 4x4 block of the triangle's bounds in the tile, tested alone: the walk's 16x16
     // regions only skip blocks that are wholly outside or find ones wholly inside, which
     // blockCoverage finds too.

@@ -83,27 +83,26 @@ bool walkTakingDepthClearByRegion(const TileJob& job, std::span<const uint32_t> 
       if (!hasSmallSteps(e)) return false;
     // A triangle too small to hold a region keeps its block walk (walk.h): sixteen rows
     // would cost it more than the clear saves.
-    const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
-    const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
-    if (x0 > x1 || y0 > y1) continue;
-    const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
-                             ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
-    if (!holdsRegion) return false;
+    const TileBounds bounds = boundsInTile(tri, tile);
+    if (bounds.x0 <= bounds.x1 && bounds.y0 <= bounds.y1 && !holdsWholeRegion(bounds)) return false;
   }
+  // Bit (row * kRegionsAcross + column) of the region at (regionX, regionY) in the tile.
+  const auto regionBit = [&](int regionX, int regionY) {
+    return 1u << ((regionY - tile.y0) / kRegion * kRegionsAcross + (regionX - tile.x0) / kRegion);
+  };
   const uint64_t start = job.timeStages ? cycleCount() : 0;
   const uint32_t clearCode = format::depthClearCode(clearValue, fb.depth->depthBits());
-  uint32_t taken = 0;   // bit (row * kRegionsAcross + column) of the tile's regions that took the clear
+  uint32_t taken = 0;   // the regions (regionBit) that took the clear
   for (uint32_t index : bin) {
     const SetupTriangle& tri = job.triangles[index];
     const RasterState& state = job.draws[tri.drawIndex].state;
-    const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
-    const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
-    if (x0 > x1 || y0 > y1) continue;
+    const TileBounds bounds = boundsInTile(tri, tile);
+    if (bounds.x0 > bounds.x1 || bounds.y0 > bounds.y1) continue;
     const WalkEdge edges[3] = {WalkEdge(tri.edge[0]), WalkEdge(tri.edge[1]), WalkEdge(tri.edge[2])};
-    for (int regionY = y0 & ~(kRegion - 1); regionY <= y1; regionY += kRegion) {
-      for (int regionX = x0 & ~(kRegion - 1); regionX <= x1; regionX += kRegion) {
+    for (int regionY = bounds.y0 & ~(kRegion - 1); regionY <= bounds.y1; regionY += kRegion) {
+      for (int regionX = bounds.x0 & ~(kRegion - 1); regionX <= bounds.x1; regionX += kRegion) {
         if (regionOverlap(edges, regionX, regionY) == Overlap::Outside) continue;
-        const uint32_t bit = 1u << ((regionY - tile.y0) / kRegion * kRegionsAcross + (regionX - tile.x0) / kRegion);
+        const uint32_t bit = regionBit(regionX, regionY);
         depthOnlyStraddledRegion<F>(tri, state, *fb.depth, fb.width, regionX, regionY, taken & bit ? nullptr : &clearCode);
         taken |= bit;
       }
@@ -115,7 +114,7 @@ bool walkTakingDepthClearByRegion(const TileJob& job, std::span<const uint32_t> 
   depthClear.depthValue = clearValue;
   for (int regionY = tile.y0; regionY <= tile.y1; regionY += kRegion)
     for (int regionX = tile.x0; regionX <= tile.x1; regionX += kRegion)
-      if (!(taken >> ((regionY - tile.y0) / kRegion * kRegionsAcross + (regionX - tile.x0) / kRegion) & 1u))
+      if (!(taken & regionBit(regionX, regionY)))
         merge::clearRect(fb, depthClear, TileBounds{regionX, regionY, regionX + kRegion - 1, regionY + kRegion - 1}, false);
   if (job.timeStages) counters.rasterCycles += cycleCount() - start;
   return true;

@@ -28,8 +28,8 @@ template <class F, class VisitBlock>
   using Edge = typename EdgeWalkOf<F>::type;
   const Framebuffer& fb = *job.framebuffer;
   const RasterState& state = job.draws[tri.drawIndex].state;
-  const int x0 = std::max(tile.x0, tri.minX), x1 = std::min(tile.x1, tri.maxX);
-  const int y0 = std::max(tile.y0, tri.minY), y1 = std::min(tile.y1, tri.maxY);
+  const TileBounds bounds = boundsInTile(tri, tile);
+  const int x0 = bounds.x0, x1 = bounds.x1, y0 = bounds.y0, y1 = bounds.y1;
   // Binning puts a triangle only into tiles its bounds touch, but a band of a tile (a pass
   // of few tiles is walked in bands, renderer.cpp) may lie wholly beside it: the block
   // rows below would then start past y1 and walk the next band's blocks.
@@ -40,9 +40,7 @@ template <class F, class VisitBlock>
   // A small triangle may walk its blocks without the regions (walkSmallTriangleBlocks,
   // coverage.h), unless it is depth-only and a whole region lies in its bounds, which the
   // regions fill whole.
-  const bool holdsRegion = ((x0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= x1 &&
-                           ((y0 + kRegion - 1) & ~(kRegion - 1)) + kRegion - 1 <= y1;
-  if (!(depthOnly && holdsRegion) && walkSmallTriangleBlocks<F>(tri.edge, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
+  if (!(depthOnly && holdsWholeRegion(bounds)) && walkSmallTriangleBlocks<F>(tri.edge, x0, y0, x1, y1, fb.width, fb.height, visitBlock))
     return;
   const Edge edges[3] = {Edge(tri.edge[0]), Edge(tri.edge[1]), Edge(tri.edge[2])};
   const bool smallSteps = edges[0].smallSteps && edges[1].smallSteps && edges[2].smallSteps;

@@ -114,6 +114,33 @@ uint32_t bitsOf(float f) {
 
 float uniform(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 
+glm::vec4 randomOpaqueColor(std::mt19937& rng) {
+  return {uniform(rng, 0.0f, 1.0f), uniform(rng, 0.0f, 1.0f), uniform(rng, 0.0f, 1.0f), 1.0f};
+}
+
+glm::vec2 clampToTarget(glm::vec2 p, int width, int height) {
+  return {std::clamp(p.x, 0.0f, float(width)), std::clamp(p.y, 0.0f, float(height))};
+}
+
+MeshData fullscreenTriangle(std::mt19937& rng, bool perspective) {
+  const glm::vec2 ndc[3] = {{-1.0f, -1.0f}, {3.0f, -1.0f}, {-1.0f, 3.0f}};
+  std::vector<Vertex> vertices;
+  for (const glm::vec2& p : ndc) {
+    const float w = perspective ? uniform(rng, 0.5f, 3.0f) : 1.0f;
+    const float z = uniform(rng, -0.9f, 0.9f);
+    vertices.push_back({glm::vec4(p.x * w, p.y * w, z * w, w), randomOpaqueColor(rng)});
+  }
+  return makeMesh(vertices);
+}
+
+std::string targetName(const TargetDesc& t) {
+  std::ostringstream s;
+  s << t.width << "x" << t.height;
+  if (t.defaultFramebuffer) s << " default framebuffer";
+  else s << (t.depth == TexelFormat::Depth16 ? " Depth16" : " Depth24");
+  return s.str();
+}
+
 namespace {
 
 std::string where(int x, int row) {

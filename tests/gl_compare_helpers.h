@@ -56,6 +56,13 @@ struct GridCell {
 // cell's column and its row counted from the top (read-back order).
 MeshData gridMesh(int width, int height, int cell, const std::function<GridCell(int column, int rowFromTop)>& at);
 
+// A window position clamped into the width x height viewport.
+glm::vec2 clampToTarget(glm::vec2 p, int width, int height);
+
+// The fullscreen triangle (-1,-1), (3,-1), (-1,3) in NDC, each vertex scaled by a random w
+// (perspective) or 1, at random depths, with random opaque colours.
+MeshData fullscreenTriangle(std::mt19937& rng, bool perspective);
+
 // ---- rendering ----------------------------------------------------------------------------
 struct TargetDesc {
   int width = 64;
@@ -64,6 +71,9 @@ struct TargetDesc {
   std::optional<TexelFormat> depth = TexelFormat::Depth24;  // nullopt: no depth buffer
   bool defaultFramebuffer = false;  // handle 0 (RGBA8 + Depth24, window-system orientation)
 };
+
+// "160x144 Depth24", "64x64 default framebuffer": for messages.
+std::string targetName(const TargetDesc& t);
 
 struct DrawCall {
   std::string program = "test/passthrough";
@@ -131,5 +141,8 @@ uint32_t bitsOf(float f);
 
 // Uniform float in [lo, hi) from a fixed-seed generator.
 float uniform(std::mt19937& rng, float lo, float hi);
+
+// A random colour with alpha 1.
+glm::vec4 randomOpaqueColor(std::mt19937& rng);
 
 }  // namespace gltest

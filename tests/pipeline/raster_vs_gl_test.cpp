@@ -12,8 +12,9 @@
 // Cases: (a) random triangles (slivers, sub-pixel, vertices on pixel centres and edges,
 // perspective w), (b) a jittered mesh with shared edges (every pixel exactly once),
 // (c) triangles the clipper must cut (near plane, w < 0, x/y planes), (d) a fullscreen
-// triangle, (e) odd target sizes, (f) depth-only targets (shadow maps): depth codes alone,
-// which must be identical. Fixed seeds; every case MESSAGEs its statistics.
+// triangle, (e) odd target sizes. Fixed seeds; every case MESSAGEs its statistics. Cases
+// (f)-(h), on the paths a target's kind selects (depth-only targets, clears a first
+// triangle makes unnecessary, a NaN window z), are in raster_vs_gl_targets_test.cpp.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -37,14 +38,6 @@ struct WindowTriangle {
   float ndcZ[3];
   glm::vec4 color[3];
 };
-
-glm::vec4 randomOpaqueColor(std::mt19937& rng) {
-  return {uniform(rng, 0.0f, 1.0f), uniform(rng, 0.0f, 1.0f), uniform(rng, 0.0f, 1.0f), 1.0f};
-}
-
-glm::vec2 clampToTarget(glm::vec2 p, int width, int height) {
-  return {std::clamp(p.x, 0.0f, float(width)), std::clamp(p.y, 0.0f, float(height))};
-}
 
 // Random triangles inside a width x height viewport (no clipping needed), in four kinds
 // taken in turn: general (log-uniform sizes), slivers (two nearly coincident vertices, or
@@ -130,14 +123,6 @@ DrawCall countPass(MeshData mesh) {
   d.state.depthTest = false;
   d.state.blendAdditive = true;
   return d;
-}
-
-std::string targetName(const TargetDesc& t) {
-  std::ostringstream s;
-  s << t.width << "x" << t.height;
-  if (t.defaultFramebuffer) s << " default framebuffer";
-  else s << (t.depth == TexelFormat::Depth16 ? " Depth16" : " Depth24");
-  return s.str();
 }
 
 struct CaseResult {
@@ -278,18 +263,6 @@ std::vector<Vertex> clippedTriangles(std::mt19937& rng, int count) {
   return vertices;
 }
 
-// The fullscreen triangle (-1,-1), (3,-1), (-1,3) in NDC, each vertex scaled by its w.
-MeshData fullscreenTriangle(std::mt19937& rng, bool perspective) {
-  const glm::vec2 ndc[3] = {{-1.0f, -1.0f}, {3.0f, -1.0f}, {-1.0f, 3.0f}};
-  std::vector<Vertex> vertices;
-  for (const glm::vec2& p : ndc) {
-    const float w = perspective ? uniform(rng, 0.5f, 3.0f) : 1.0f;
-    const float z = uniform(rng, -0.9f, 0.9f);
-    vertices.push_back({glm::vec4(p.x * w, p.y * w, z * w, w), randomOpaqueColor(rng)});
-  }
-  return makeMesh(vertices);
-}
-
 void checkEveryPixelOnce(const CaseResult& r, const TargetDesc& target) {
   const std::string where = targetName(target);
   CAPTURE(where);
@@ -297,29 +270,6 @@ void checkEveryPixelOnce(const CaseResult& r, const TargetDesc& target) {
   for (int c : r.counts) notOnce += c != 1;
   CHECK(notOnce == 0);
   CHECK(int(r.counts.size()) == target.width * target.height);
-}
-
-// Depth-only targets, as shadow maps are drawn: no colour attachment, so the rasterizer
-// runs no shader and fills the regions wholly inside a triangle row by row. Large random
-// triangles, then the fullscreen triangle, under LESS or LEQUAL, with or without polygon
-// offset; the depth codes must be identical.
-void compareDepthOnly(BackendPair& backends, const TargetDesc& target, const MeshData& mesh, scenes::DepthFunc func,
-                      bool offset) {
-  DrawCall draw;
-  draw.mesh = mesh;
-  draw.state.depthFunc = func;
-  draw.state.polygonOffset = offset;
-  draw.state.offsetFactor = offset ? 1.5f : 0.0f;
-  draw.state.offsetUnits = offset ? 4.0f : 0.0f;
-  const BothRendered both = renderBoth(backends, target, {draw}, clearAll());
-  const DepthComparison z = compareDepth(*both.raster.depth, *both.gl.depth);
-  const std::string where = targetName(target) + (func == scenes::DepthFunc::Lequal ? " LEQUAL" : " LESS") +
-                            (offset ? " with polygon offset" : "");
-  CAPTURE(where);
-  const std::string firstDepthDiff = z.firstDiff;
-  CAPTURE(firstDepthDiff);
-  MESSAGE("(f) depth only [" << where << "]: depth diffs " << z.diffs << " (max " << z.maxDiff << " LSB)");
-  CHECK(z.diffs == 0);
 }
 
 }  // namespace
@@ -404,128 +354,6 @@ TEST_SUITE("raster_vs_gl") {
                                             jitteredGridMesh(rng, size[0], size[1], 4.0f));
         checkEveryPixelOnce(mesh, target);
       }
-    }
-  }
-
-  TEST_CASE("(f) depth-only targets: identical depth codes, inside and straddled regions included") {
-    BackendPair backends;
-    std::mt19937 rng(6006);
-    const TargetDesc targets[] = {
-        {160, 144, std::nullopt, TexelFormat::Depth24},
-        {99, 67, std::nullopt, TexelFormat::Depth16},
-    };
-    for (const TargetDesc& target : targets) {
-      for (scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
-        for (bool offset : {false, true}) {
-          // Mostly large triangles, so many 16x16 regions lie wholly inside one.
-          std::vector<Vertex> vertices, onHalfPixels;
-          for (int i = 0; i < 40; ++i) {
-            const glm::vec2 c(uniform(rng, 0.0f, float(target.width)), uniform(rng, 0.0f, float(target.height)));
-            const float size = uniform(rng, 20.0f, 150.0f);
-            for (int v = 0; v < 3; ++v) {
-              const glm::vec2 p = clampToTarget(c + glm::vec2(uniform(rng, -size, size), uniform(rng, -size, size)),
-                                                target.width, target.height);
-              const float ndcZ = uniform(rng, -0.95f, 0.95f), w = uniform(rng, 0.5f, 3.0f);
-              const glm::vec4 color = randomOpaqueColor(rng);
-              vertices.push_back({clipFromWindow(p, ndcZ, w, target.width, target.height), color});
-              // The same corner on the half-pixel grid: edges then run through pixel
-              // centres, whose coverage only the fill rule decides.
-              const glm::vec2 snapped = glm::round(p * 2.0f) * 0.5f;
-              onHalfPixels.push_back({clipFromWindow(snapped, ndcZ, w, target.width, target.height), color});
-            }
-          }
-          compareDepthOnly(backends, target, makeMesh(vertices), func, offset);
-          compareDepthOnly(backends, target, makeMesh(onHalfPixels), func, offset);
-          compareDepthOnly(backends, target, fullscreenTriangle(rng, true), func, offset);
-        }
-      }
-    }
-  }
-
-  // A tile whose first triangle covers it whole, with no depth test or blending, skips its
-  // colour clear (Renderer::flush): every texel is written anyway. Here the first triangle
-  // leaves one corner pixel of a tile uncovered, or covers tiles whole but under a depth
-  // test that rejects it (cleared depth 0.5) or with blending, and a second draw follows.
-  // Every byte must match GL, so texels only the clear writes keep its colour (new targets
-  // start zeroed: a wrongly skipped clear shows).
-  TEST_CASE("(g) colour clears under a first triangle that covers a tile, or nearly") {
-    BackendPair backends;
-    ClearOp clear;
-    clear.color = true;
-    clear.colorValue = glm::vec4(0.2f, 0.4f, 0.6f, 0.8f);
-    clear.depth = true;
-    clear.depthValue = 0.5f;   // the first triangle (window z 0.625) fails LESS wherever there is depth
-    const TargetDesc targets[] = {
-        {150, 100, TexelFormat::RGBA8, std::nullopt},
-        {150, 100, TexelFormat::RGBA8, TexelFormat::Depth24},
-        {130, 70, std::nullopt, std::nullopt, true},
-    };
-    // Window-space corners of a triangle whose long edge is x + y = c: pixels whose centres
-    // sum to more than c stay uncovered (c = 126.9 leaves pixel (63, 63) of tile 0 only).
-    auto cornerCut = [](float c) {
-      return std::vector<glm::vec2>{{-300.0f, -300.0f}, {c + 300.0f, -300.0f}, {-300.0f, c + 300.0f}};
-    };
-    const std::vector<glm::vec2> cuts[] = {cornerCut(126.9f), cornerCut(127.1f), cornerCut(60.0f), cornerCut(400.0f)};
-    for (const TargetDesc& target : targets) {
-      for (const auto& corners : cuts) {
-        for (bool blend : {false, true}) {
-          std::vector<Vertex> vertices;
-          for (const glm::vec2& p : corners)
-            vertices.push_back({clipFromWindow(p, 0.25f, 1.0f, target.width, target.height), glm::vec4(0.9f, 0.1f, 0.3f, 1.0f)});
-          DrawCall first;
-          first.mesh = makeMesh(vertices);
-          first.state.depthTest = !blend;
-          first.state.blendAdditive = blend;
-          DrawCall second = depthPass(makeMesh({{clipFromWindow({10.0f, 10.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)},
-                                                {clipFromWindow({90.0f, 20.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)},
-                                                {clipFromWindow({30.0f, 95.0f}, -0.5f, 1.0f, target.width, target.height), glm::vec4(0.1f, 0.8f, 0.2f, 1.0f)}}));
-          const BothRendered both = renderBoth(backends, target, {first, second}, clear);
-          INFO(targetName(target), ", edge x + y = ", corners[1].x - 300.0f, blend ? ", blending" : "");
-          REQUIRE(both.raster.color);
-          REQUIRE(both.gl.color);
-          CHECK(both.raster.color->rgba8 == both.gl.color->rgba8);
-        }
-      }
-    }
-  }
-
-  TEST_CASE("(h) a NaN window z is 1 for the depth test, as llvmpipe's min(z, 1) makes it") {
-    // Found by `raster soup` (seed 71 at 64x64): a collinear triangle with its third vertex
-    // outside the viewport and beyond the far plane. Clipping bends it by an ulp, so its
-    // snapped area is not 0 but its float area is: the planes are NaN. llvmpipe takes
-    // min(z, 1) in interpolation (lp_bld_interp.c), so the NaN is 1.0: LESS fails against a
-    // clear of 1.0, LEQUAL passes and writes 1.0. A NaN made 0 would pass both and write 0.
-    auto fromBits = [](uint32_t bits) {
-      float f;
-      std::memcpy(&f, &bits, sizeof f);
-      return f;
-    };
-    const uint32_t clip[3][4] = {{0xbe880000, 0xbef00000, 0x3eee7823, 0x3f800000},
-                                 {0x3f5c0000, 0x3ea00000, 0xbea01d63, 0x3f800000},
-                                 {0xbfb20000, 0xbfa00000, 0x3f9f436a, 0x3f800000}};
-    std::vector<Vertex> vertices;
-    for (const auto& v : clip)
-      vertices.push_back({{fromBits(v[0]), fromBits(v[1]), fromBits(v[2]), fromBits(v[3])}, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f)});
-    BackendPair backends;
-    const TargetDesc target{64, 64, TexelFormat::RGBA8, TexelFormat::Depth24};
-    ClearOp clear = clearAll();
-    clear.colorValue = glm::vec4(1.0f);   // the fragment's NaN colour writes 0, so it shows
-    for (const scenes::DepthFunc func : {scenes::DepthFunc::Less, scenes::DepthFunc::Lequal}) {
-      DrawCall draw;
-      draw.mesh = makeMesh(vertices);
-      draw.state.depthFunc = func;
-      const BothRendered both = renderBoth(backends, target, {draw}, clear);
-      const char* funcName = func == scenes::DepthFunc::Less ? "LESS" : "LEQUAL";
-      INFO(funcName);
-      const uint8_t white[4] = {255, 255, 255, 255};
-      const Rgba8Comparison color = compareRgba8(*both.raster.color, *both.gl.color, white);
-      const DepthComparison depth = compareDepth(*both.raster.depth, *both.gl.depth);
-      CAPTURE(color.firstCoverageDiff);
-      CAPTURE(depth.firstDiff);
-      CHECK(color.coverageDiffs == 0);
-      CHECK(depth.diffs == 0);
-      CHECK(color.coveredB == (func == scenes::DepthFunc::Less ? 0 : 1));   // the pixel the sliver covers
-      CHECK(std::count(both.raster.depth->depth.begin(), both.raster.depth->depth.end(), 0xFFFFFFu) == 64 * 64);
     }
   }
 }

@@ -10,7 +10,9 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
+#include <algorithm>
 #include <bit>
+#include <cstdlib>
 
 #include "raster/limits.h"
 #include "raster/simd/intrinsics.h"
@@ -203,6 +205,54 @@ template <int R>
   out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
 }
 
+// Bilinear RGBA16F for two groups whose sixteen footprints all lie in one 4x4 texel window,
+// as where a 4x4 pixel block samples a texture of half its resolution (the hdr composite's
+// bloom lookup: texels x/2 - 1 .. x/2 + 2): four 32-byte loads, one a window row, turned
+// into one plane a channel, and each lane's four texels picked from a plane with one permute
+// each, in place of blendHalfPairs16's 32 loads and their shuffles (the 1920x1080 composite
+// 6% shorter on the AMD EPYC Zen 4 host; picking from the rows with two-source permutes, 4%).
+// The blend is blendHalfPairs16's, lane by lane: rows, then columns. False (nothing written)
+// when the footprints do not fit, or the texture is under four texels along an axis; lanes
+// 0 and 15, opposite corners of the block, are compared first, so that lookups that spread
+// wider pay a few instructions only.
+[[gnu::always_inline]] inline bool blendHalfWindow16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
+                                                     simd::Float8x2 out[4]) {
+  auto cornersSpread = [](__m512i i) {
+    return std::abs(_mm_cvtsi128_si32(_mm512_castsi512_si128(i)) - _mm_extract_epi32(_mm512_extracti32x4_epi32(i, 3), 3));
+  };
+  if (t.width < 4 || t.height < 4 || cornersSpread(x.i0) > 2 || cornersSpread(y.i0) > 2) return false;
+  // The window's corner: the lowest first texel, moved in to keep the window in the texture.
+  // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails).
+  const int originX = std::min(_mm512_reduce_min_epi32(x.i0), t.width - 4);
+  const int originY = std::min(_mm512_reduce_min_epi32(y.i0), t.height - 4);
+  const __m512i dx0 = _mm512_sub_epi32(x.i0, _mm512_set1_epi32(originX)), dx1 = _mm512_sub_epi32(x.i1, _mm512_set1_epi32(originX));
+  const __m512i dy0 = _mm512_sub_epi32(y.i0, _mm512_set1_epi32(originY)), dy1 = _mm512_sub_epi32(y.i1, _mm512_set1_epi32(originY));
+  const __m512i three = _mm512_set1_epi32(3);
+  if (_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) | _mm512_cmpgt_epu32_mask(dy0, three) |
+      _mm512_cmpgt_epu32_mask(dy1, three))
+    return false;
+  // The window's rows, texels 0..3 rgba each, turned into one plane a channel: element
+  // 4 * column + row (lanesToPlanes' 4x4 transpose in each 128-bit block, block = column).
+  const uint16_t* corner = t.half.data() + (size_t(originY) * size_t(t.width) + size_t(originX)) * 4;
+  __m512 rows[4];
+  for (int r = 0; r < 4; ++r)
+    rows[r] = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(corner + size_t(r) * size_t(t.width) * 4)));
+  simd::Float8x2 planes[4];
+  lanesToPlanes(rows, planes);
+  auto element = [](__m512i column, __m512i row) { return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row); };
+  const __m512i elements[2][2] = {{element(dx0, dy0), element(dx1, dy0)}, {element(dx0, dy1), element(dx1, dy1)}};
+  for (int c = 0; c < 4; ++c) {
+    __m512 row[2];
+    for (int r = 0; r < 2; ++r) {
+      const __m512 left = _mm512_permutexvar_ps(elements[r][0], planes[c].v);
+      const __m512 right = _mm512_permutexvar_ps(elements[r][1], planes[c].v);
+      row[r] = _mm512_fmadd_ps(x.weight, _mm512_sub_ps(right, left), left);
+    }
+    out[c] = simd::Float8x2(_mm512_fmadd_ps(y.weight, _mm512_sub_ps(row[1], row[0]), row[0]));
+  }
+  return true;
+}
+
 // Bilinear RGBA16F for two groups at once, blended before the transpose, as the 8-lane
 // sampleHalfClampBlendFirst (sample_color_avx2.cpp) does per group: each lane loads its row's
 // texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
@@ -212,6 +262,7 @@ template <int R>
 // at the right edge; there this returns false and writes nothing (sampleColor8x2 takes those).
 [[gnu::always_inline]] inline bool blendHalfPairs16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                     simd::Float8x2 out[4]) {
+  if (blendHalfWindow16(t, x, y, out)) return true;
   if (_mm512_cmpeq_epi32_mask(x.i0, _mm512_set1_epi32(t.width - 1))) return false;
   const uint16_t* texels = t.half.data();
   const __m512i width = _mm512_set1_epi32(t.width);

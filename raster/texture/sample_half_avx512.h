@@ -70,21 +70,32 @@ namespace raster::sampling {
   return _mm512_min_epi32(_mm512_max_epi32(index, _mm512_setzero_si512()), last);
 }
 
-// sampleHalfNearest for two groups at once: one gather of eight 64-bit texels per group
-// (masked by `live`: dead lanes read as zero), converted and transposed straight into
+// sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load
+// (two lanes to a 16-byte register; dead lanes, not in `live`, read as zero: their indices
+// are clamped into the texture like the others), converted and transposed straight into
 // Float8x2 planes, with about a third of the shuffles that transposing each group and
-// joining the halves takes. The texture must be RGBA16F.
+// joining the halves takes. The loads replaced two 8-element gathers: on the AMD EPYC Zen 4
+// host the deferred frame, whose SSAO pass makes 16 such lookups a pixel, read 2% faster
+// (16 alternated pairs, 12 won). The texture must be RGBA16F.
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          __mmask16 live, simd::Float8x2 out[4]) {
   const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
-  const __m256i halves[2] = {_mm512_castsi512_si256(index), _mm512_extracti64x4_epi64(index, 1)};   // lanes 0-7, 8-15
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
+  alignas(64) int at[16];
+  storeLaneIndices16(index, at);
+  auto two = [&](int lane) {   // the texels of lanes lane and lane + 1
+    const __m128d low = _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(texels + at[lane])));
+    return _mm_castpd_si128(_mm_loadh_pd(low, reinterpret_cast<const double*>(texels + at[lane + 1])));
+  };
   for (int h = 0; h < 2; ++h) {
+    const int b = 8 * h;
+    const __m256i low = _mm256_inserti128_si256(_mm256_castsi128_si256(two(b)), two(b + 2), 1);
+    const __m256i high = _mm256_inserti128_si256(_mm256_castsi128_si256(two(b + 4)), two(b + 6), 1);
     const __m512i texel =
-        _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), __mmask8(live >> (8 * h)), halves[h], texels, 8);
+        _mm512_maskz_mov_epi64(__mmask8(live >> (8 * h)), _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1));
     v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
     v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
   }

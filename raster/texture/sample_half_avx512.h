@@ -17,6 +17,7 @@
 #include "raster/limits.h"
 #include "raster/simd/intrinsics.h"
 #include "raster/simd/prefetch.h"
+#include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
@@ -38,19 +39,6 @@ namespace raster::sampling {
   if (_mm512_cmpneq_epi32_mask(low, first) | _mm512_cmpneq_epi32_mask(high, first)) return nullptr;
   const uint32_t tile = uint32_t(_mm_cvtsi128_si32(_mm512_castsi512_si128(low)));
   return tiles.cleared[size_t(tile >> 16) * size_t(tiles.tilesX) + (tile & 0xFFFFu)] ? tiles.value : nullptr;
-}
-
-// Sixteen lane indices (texel or window starts) stored for the caller to read back one
-// scalar load at a time, as four 16-byte stores. Left to itself the compiler pulls each out
-// of a vector register, three instructions per texel load (composite -2%); and a 4-byte load
-// from the middle of one 64-byte store waited for it on the Intel Xeon host, where from a
-// 16-byte store it is forwarded (BENCHMARKS.md, "Window starts stored in quarters").
-[[gnu::always_inline]] inline void storeLaneIndices16(__m512i index, int (&out)[16]) {
-  _mm_store_si128(reinterpret_cast<__m128i*>(out), _mm512_castsi512_si128(index));
-  _mm_store_si128(reinterpret_cast<__m128i*>(out + 4), _mm512_extracti32x4_epi32(index, 1));
-  _mm_store_si128(reinterpret_cast<__m128i*>(out + 8), _mm512_extracti32x4_epi32(index, 2));
-  _mm_store_si128(reinterpret_cast<__m128i*>(out + 12), _mm512_extracti32x4_epi32(index, 3));
-  asm volatile("" : "+m"(out));   // read back from memory, not from the register
 }
 
 // The texel index along one axis for NEAREST, as the 8-lane wrapNearest of the float path
@@ -86,16 +74,8 @@ namespace raster::sampling {
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
   alignas(64) int at[16];
   storeLaneIndices16(index, at);
-  auto two = [&](int lane) {   // the texels of lanes lane and lane + 1
-    const __m128d low = _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(texels + at[lane])));
-    return _mm_castpd_si128(_mm_loadh_pd(low, reinterpret_cast<const double*>(texels + at[lane + 1])));
-  };
   for (int h = 0; h < 2; ++h) {
-    const int b = 8 * h;
-    const __m256i low = _mm256_inserti128_si256(_mm256_castsi128_si256(two(b)), two(b + 2), 1);
-    const __m256i high = _mm256_inserti128_si256(_mm256_castsi128_si256(two(b + 4)), two(b + 6), 1);
-    const __m512i texel =
-        _mm512_maskz_mov_epi64(__mmask8(live >> (8 * h)), _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1));
+    const __m512i texel = _mm512_maskz_mov_epi64(__mmask8(live >> (8 * h)), loadEightLanes64(texels, at, 8 * h, 8));
     v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
     v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
   }

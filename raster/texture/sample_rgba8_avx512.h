@@ -11,6 +11,7 @@
 #define RASTER_RGBA8_ZMM 1
 #include "raster/methods.h"
 #include "raster/simd/intrinsics.h"
+#include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
@@ -90,8 +91,9 @@ inline bool isRgba8Bilinear(const Texture& t) {
     }
     const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
     const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
-    const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(index), texels, 4);
-    const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(index, 1), texels, 4);
+    alignas(64) int at[16];   // scalar loads, not two 64-bit gathers (lane_loads_avx512.h)
+    storeLaneIndices16(index, at);
+    const __m512i lo = loadEightLanes64(texels, at, 0, 4), hi = loadEightLanes64(texels, at, 8, 4);
     left = _mm512_permutex2var_epi32(lo, even, hi);
     right = _mm512_permutex2var_epi32(lo, odd, hi);
   };

@@ -216,8 +216,9 @@ template <int R>
   // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails).
   const int originX = std::min(_mm512_reduce_min_epi32(x.i0), t.width - 4);
   const int originY = std::min(_mm512_reduce_min_epi32(y.i0), t.height - 4);
-  const __m512i dx0 = _mm512_sub_epi32(x.i0, _mm512_set1_epi32(originX)), dx1 = _mm512_sub_epi32(x.i1, _mm512_set1_epi32(originX));
-  const __m512i dy0 = _mm512_sub_epi32(y.i0, _mm512_set1_epi32(originY)), dy1 = _mm512_sub_epi32(y.i1, _mm512_set1_epi32(originY));
+  const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
+  const __m512i dx0 = _mm512_sub_epi32(x.i0, cornerX), dx1 = _mm512_sub_epi32(x.i1, cornerX);
+  const __m512i dy0 = _mm512_sub_epi32(y.i0, cornerY), dy1 = _mm512_sub_epi32(y.i1, cornerY);
   const __m512i three = _mm512_set1_epi32(3);
   if (_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) | _mm512_cmpgt_epu32_mask(dy0, three) |
       _mm512_cmpgt_epu32_mask(dy1, three))
@@ -227,7 +228,8 @@ template <int R>
   const uint16_t* corner = t.half.data() + (size_t(originY) * size_t(t.width) + size_t(originX)) * 4;
   __m512 rows[4];
   for (int r = 0; r < 4; ++r)
-    rows[r] = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(corner + size_t(r) * size_t(t.width) * 4)));
+    rows[r] = _mm512_cvtph_ps(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(corner + size_t(r) * size_t(t.width) * 4)));
   simd::Float8x2 planes[4];
   lanesToPlanes(rows, planes);
   auto element = [](__m512i column, __m512i row) { return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row); };

@@ -50,19 +50,11 @@ struct CompositePass : PostProgram {
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
     const vec3<F> hdr = raster::texture(u.src0, in.v_uv).xyz();
-#if RASTER_ABL == 1
-    const vec3<F> bloom = hdr * F(0.5f);
-#else
     const vec3<F> bloom = raster::texture(u.src_bloom, in.v_uv).xyz();
-#endif
     const vec3<F> merged = hdr + bloom * F(u.u_bloom_intensity);
     const vec3<F> mapped = aces_fit(merged);
     // WebGL2's default framebuffer does no sRGB encode, so gamma-encode here.
-#if RASTER_ABL == 2
-    const vec3<F> encoded = mapped;
-#else
     const vec3<F> encoded = pow<g>(mapped);
-#endif
     out.color[0] = vec4<F>(encoded, F(1.0f));
   }
 };

@@ -27,7 +27,7 @@ namespace raster::sampling {
 // order: what _mm512_i32gather_epi64 of those indices returns.
 [[gnu::always_inline]] inline __m512i loadEightLanes64(const void* base, const int (&index)[16], int first, int scale) {
   const char* bytes = static_cast<const char*>(base);
-  auto two = [&](int lane) {   // lanes lane and lane + 1
+  auto two = [&](int lane) __attribute__((always_inline)) {   // lanes lane and lane + 1
     const __m128d low =
         _mm_castsi128_pd(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bytes + ptrdiff_t(index[lane]) * scale)));
     return _mm_castpd_si128(_mm_loadh_pd(low, reinterpret_cast<const double*>(bytes + ptrdiff_t(index[lane + 1]) * scale)));

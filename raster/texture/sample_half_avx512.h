@@ -208,7 +208,7 @@ template <int R>
 // wider pay a few instructions only.
 [[gnu::always_inline]] inline bool blendHalfWindow16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                      simd::Float8x2 out[4]) {
-  auto cornersSpread = [](__m512i i) {
+  auto cornersSpread = [](__m512i i) __attribute__((always_inline)) {
     return std::abs(_mm_cvtsi128_si32(_mm512_castsi512_si128(i)) - _mm_extract_epi32(_mm512_extracti32x4_epi32(i, 3), 3));
   };
   if (t.width < 4 || t.height < 4 || cornersSpread(x.i0) > 2 || cornersSpread(y.i0) > 2) return false;
@@ -232,7 +232,9 @@ template <int R>
         _mm256_loadu_si256(reinterpret_cast<const __m256i*>(corner + size_t(r) * size_t(t.width) * 4)));
   simd::Float8x2 planes[4];
   lanesToPlanes(rows, planes);
-  auto element = [](__m512i column, __m512i row) { return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row); };
+  auto element = [](__m512i column, __m512i row) __attribute__((always_inline)) {
+    return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row);
+  };
   const __m512i elements[2][2] = {{element(dx0, dy0), element(dx1, dy0)}, {element(dx0, dy1), element(dx1, dy1)}};
   for (int c = 0; c < 4; ++c) {
     __m512 row[2];

@@ -19,9 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 

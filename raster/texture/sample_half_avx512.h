@@ -253,8 +253,10 @@ template <int R>
 // texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
 // blend together in one register, each lane's weights broadcast over its channels (rows,
 // then columns: the same operations per lane and channel), and only the four results are
-// transposed into Float8x2 planes. `x` must come from CLAMP_TO_EDGE, where x1 = x0 + 1 except
-// at the right edge; there this returns false and writes nothing (sampleColor8x2 takes those).
+// transposed into Float8x2 planes; footprints that fit one 4x4 texel window take
+// blendHalfWindow16 instead. `x` must come from CLAMP_TO_EDGE, where x1 = x0 + 1 except at
+// the right edge; there, unless the window took the lookup, this returns false and writes
+// nothing (sampleColor8x2 takes those).
 [[gnu::always_inline]] inline bool blendHalfPairs16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                     simd::Float8x2 out[4]) {
   if (blendHalfWindow16(t, x, y, out)) return true;
@@ -295,7 +297,8 @@ inline bool isHalfBilinearClamp(const Texture& t) {
 }
 
 // The lookup for such a texture, inline; false (nothing written) when some lane is at the
-// right edge. Footprints in a tile that holds only a clear read no texels.
+// right edge and the footprints do not fit one 4x4 window. Footprints in a tile that holds
+// only a clear read no texels.
 [[gnu::always_inline]] inline bool sampleHalfBilinearPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                           simd::Float8x2 out[4]) {
   const LinearTaps16 x = wrapLinearClampToEdge16(s.v, t.width), y = wrapLinearClampToEdge16(tc.v, t.height);

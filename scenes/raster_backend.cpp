@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/texture/footprint_strips.h"
 #include "raster/texture/format.h"
 #include "raster/renderer.h"
 #include "scenes/backends.h"
@@ -98,6 +99,11 @@ class RasterBackend final : public Backend {
     if (pixels && raster::makeGreyCopy(*t))
       reserve(t->grey8.size(), memory::joined({"the grey copy of a ", std::to_string(desc.width), "x",
                                                std::to_string(desc.height), " texture"}));
+    // Another RGBA8 texture sampled bilinearly gets the 16-lane sampler's strip copy
+    // (footprint_strips.h), where this build has that sampler.
+    if (pixels && raster::kSamplersReadStrips && raster::makeStripCopy(*t))
+      reserve(t->strips8.size(), memory::joined({"the strip copy of a ", std::to_string(desc.width), "x",
+                                                 std::to_string(desc.height), " texture"}));
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
   }
@@ -106,10 +112,11 @@ class RasterBackend final : public Backend {
     raster::Framebuffer fb;
     auto attach = [&](Handle h) {
       raster::Texture* t = texture(h);
-      // Drawing writes rgba8 only: a grey copy would go stale, so a render target has none.
-      if (t->hasGreyCopy()) {
-        const uint64_t bytes = t->grey8.size();
+      // Drawing writes rgba8 only: a sampler's copy would go stale, so a render target has none.
+      const uint64_t bytes = t->grey8.size() + t->strips8.size();
+      if (bytes > 0) {
         raster::dropGreyCopy(*t);
+        raster::dropStripCopy(*t);
         memory::release(bytes);
         reserved_ -= std::min<uint64_t>(reserved_, bytes);
       }

@@ -3,7 +3,8 @@
 // Inline, so that a port's lookup costs no call and no trip of its four channels through
 // memory, and the shader's compiler drops the channels it never reads. The taps, weights
 // and lerps are the 8-lane sampler's (sample_color_avx2.cpp, sampleRgba8, grey copies too)
-// on 16 lanes at once, so every value is the same.
+// on 16 lanes at once, so every value is the same. An uploaded texture's footprints are
+// read from its strip copy (footprint_strips.h) where all 16 have neighbouring rows.
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -11,6 +12,7 @@
 #define RASTER_RGBA8_ZMM 1
 #include "raster/methods.h"
 #include "raster/simd/intrinsics.h"
+#include "raster/texture/footprint_strips.h"
 #include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/texture.h"
 
@@ -59,6 +61,27 @@ struct FixedTaps16 {
                           _mm512_set1_epi32(0xFF));
 }
 
+// y / kStripStep per lane, the strip of a footprint whose first row is y: a multiply and
+// a shift, exact for 0 <= y < 98304 (textures are at most 16384 texels a side).
+[[gnu::always_inline]] inline __m512i stripIndex16(__m512i y) {
+  static_assert(kStripStep == 3, "the multiplier is for a step of 3");
+  return _mm512_srli_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(43691)), 17);
+}
+
+struct StripColumns16 {
+  __m512i left, right;   // per lane, the 4-byte units of the footprint's columns x0 and x1 at row y0
+};
+
+// Where a footprint with columns x0, x1 and first row y0 starts in the strip copy, as
+// stripUnit of footprint_strips.h: (strip * width + x) * 4 + (y0 - 3 * strip).
+[[gnu::always_inline]] inline StripColumns16 stripColumns16(int width, const FixedTaps16& x, __m512i y0) {
+  const __m512i strip = stripIndex16(y0);
+  const __m512i row = _mm512_sub_epi32(y0, _mm512_mullo_epi32(strip, _mm512_set1_epi32(kStripStep)));
+  const __m512i column0 = _mm512_add_epi32(_mm512_mullo_epi32(strip, _mm512_set1_epi32(width)), x.x0);
+  const __m512i left = _mm512_add_epi32(_mm512_slli_epi32(column0, 2), row);
+  return {left, _mm512_add_epi32(left, _mm512_slli_epi32(_mm512_sub_epi32(x.x1, x.x0), 2))};
+}
+
 // Whether sampleRgba8Pair is this texture's lookup under the active method set.
 inline bool isRgba8Bilinear(const Texture& t) {
   return t.format == TexelFormat::RGBA8 && t.sampler.filter == Filter::Linear &&
@@ -80,25 +103,37 @@ inline bool isRgba8Bilinear(const Texture& t) {
   auto fetch = [&](__m512i index) {
     return grey ? _mm512_and_si512(_mm512_i32gather_epi32(index, texels, 1), low8) : _mm512_i32gather_epi32(index, texels, 4);
   };
+  // Two RGBA texels a lane that lie side by side in memory, as one 64-bit element at
+  // base + 4 * index (lanes 0-7, then 8-15), split into the first texels and the second ones
+  // in lane order.
+  auto fetchTwo = [&](const void* base, __m512i index, __m512i& first, __m512i& second) {
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
+    alignas(64) int at[16];   // scalar loads, not two 64-bit gathers (lane_loads_avx512.h)
+    storeLaneIndices16(index, at);
+    const __m512i lo = loadEightLanes64(base, at, 0, 4), hi = loadEightLanes64(base, at, 8, 4);
+    first = _mm512_permutex2var_epi32(lo, even, hi);
+    second = _mm512_permutex2var_epi32(lo, odd, hi);
+  };
   // Where every lane's two texels of a row are neighbours, both with one element: four grey
-  // bytes from the left texel on, or two RGBA texels as one 64-bit element (lanes 0-7, then
-  // 8-15, split into the left texels and the right ones in lane order).
+  // bytes from the left texel on, or the two RGBA texels.
   auto fetchPair = [&](__m512i index, __m512i& left, __m512i& right) {
     if (grey) {
       const __m512i bytes = _mm512_i32gather_epi32(index, texels, 1);
       left = _mm512_and_si512(bytes, low8), right = _mm512_and_si512(_mm512_srli_epi32(bytes, 8), low8);
       return;
     }
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
-    alignas(64) int at[16];   // scalar loads, not two 64-bit gathers (lane_loads_avx512.h)
-    storeLaneIndices16(index, at);
-    const __m512i lo = loadEightLanes64(texels, at, 0, 4), hi = loadEightLanes64(texels, at, 8, 4);
-    left = _mm512_permutex2var_epi32(lo, even, hi);
-    right = _mm512_permutex2var_epi32(lo, odd, hi);
+    fetchTwo(texels, index, left, right);
   };
+  const __m512i one = _mm512_set1_epi32(1);
   __m512i p00, p01, p10, p11;
-  if (_mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, _mm512_set1_epi32(1))) == 0xFFFF) {
+  if (t.hasStripCopy() && _mm512_cmpeq_epi32_mask(y.x1, _mm512_add_epi32(y.x0, one)) == 0xFFFF) {
+    // Every footprint's rows are neighbours: its two columns from the strip copy, each one
+    // element holding the column's texel in row y0, then in row y1 (footprint_strips.h).
+    const StripColumns16 at = stripColumns16(t.width, x, y.x0);
+    fetchTwo(t.strips8.data(), at.left, p00, p10);
+    fetchTwo(t.strips8.data(), at.right, p01, p11);
+  } else if (_mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, one)) == 0xFFFF) {
     fetchPair(_mm512_add_epi32(row0, x.x0), p00, p01);
     fetchPair(_mm512_add_epi32(row1, x.x0), p10, p11);
   } else {
@@ -118,6 +153,24 @@ inline bool isRgba8Bilinear(const Texture& t) {
     out[3] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(low8), kUnorm8));
   } else {
     for (int c = 0; c < 4; ++c) out[c] = filtered(c);
+  }
+}
+
+// The cache lines sampleRgba8Pair will read from a texture's strip copy (texturePrefetch):
+// each lane's two footprint columns, one line or two.
+[[gnu::always_inline]] inline void prefetchRgba8Strips(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc) {
+  const FixedTaps16 x = wrapLinearFixed16(s.v, t.width, t.sampler.wrapS);
+  const FixedTaps16 y = wrapLinearFixed16(tc.v, t.height, t.sampler.wrapT);
+  // A footprint whose rows are not neighbours is read from rgba8; its strip here is a
+  // nearby one, in the copy, and the prefetch is only a wasted one.
+  const StripColumns16 at = stripColumns16(t.width, x, _mm512_min_epi32(y.x0, _mm512_set1_epi32(t.height - 2)));
+  alignas(64) int units[2][16];
+  _mm512_store_si512(units[0], at.left);
+  _mm512_store_si512(units[1], at.right);
+  const char* base = reinterpret_cast<const char*>(t.strips8.data());
+  for (int i = 0; i < 16; ++i) {
+    _mm_prefetch(base + size_t(unsigned(units[0][i])) * 4, _MM_HINT_T0);
+    _mm_prefetch(base + size_t(unsigned(units[1][i])) * 4, _MM_HINT_T0);
   }
 }
 

@@ -87,6 +87,9 @@ inline glsl::vec4<simd::Float8x2> joinHalves(const simd::Float8 (&rgba)[2][4]) {
 
 inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8> uv) { prefetchColor8(texture, uv.x, uv.y); }
 inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv) {
+#if RASTER_RGBA8_ZMM
+  if (texture.hasStripCopy() && isRgba8Bilinear(texture)) return prefetchRgba8Strips(texture, uv.x, uv.y);
+#endif
   prefetchColor8(texture, uv.x.low(), uv.y.low());
   prefetchColor8(texture, uv.x.high(), uv.y.high());
 }

@@ -64,6 +64,9 @@ struct Texture {
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
   // A second layout of a grey RGBA8 texture, for the samplers: see makeGreyCopy().
   std::vector<uint8_t, HugePageAllocator<uint8_t>> grey8;
+  // A third, of an RGBA8 texture sampled bilinearly, in overlapping row strips for the
+  // 16-lane sampler: see footprint_strips.h.
+  std::vector<uint8_t, HugePageAllocator<uint8_t>> strips8;
   ClearedTiles clearedTiles;   // the tiles that hold only the last clear (cleared_tiles.h)
   std::string label;   // what the scene calls it ("shadow_map"), as glObjectLabel: pixel history names it
 
@@ -80,6 +83,7 @@ struct Texture {
     }
   }
   bool hasGreyCopy() const { return !grey8.empty(); }
+  bool hasStripCopy() const { return !strips8.empty(); }
   bool isDepth() const { return format == TexelFormat::Depth16 || format == TexelFormat::Depth24; }
   int depthBits() const { return format == TexelFormat::Depth24 ? 24 : (format == TexelFormat::Depth16 ? 16 : 0); }
 };

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "raster/methods.h"
+#include "raster/texture/footprint_strips.h"
 #include "raster/texture/format.h"
 #include "raster/texture/sampler.h"
 #include "tests/gl_compare_helpers.h"
@@ -226,14 +227,17 @@ TEST_SUITE("texture") {
     std::mt19937 rng(79);
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0, awayFromEdge = 0;
-    // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), and grey.
+    // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), grey,
+    // and with the strip copy that uploaded RGBA8 textures get (footprint_strips.h).
     struct Variant {
       raster::TexelFormat format;
       bool grey;
       raster::FilterMethod method;
+      bool strips = false;
     };
     for (const Variant variant : {Variant{raster::TexelFormat::RGBA16F, false, raster::FilterMethod::Unorm8},
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8, true},
                                   Variant{raster::TexelFormat::RGBA8, true, raster::FilterMethod::Unorm8},
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float}}) {
       const raster::TexelFormat format = variant.format;
@@ -249,6 +253,7 @@ TEST_SUITE("texture") {
                                             std::pair{raster::Wrap::Repeat, raster::Wrap::Repeat},
                                             std::pair{raster::Wrap::ClampToEdge, raster::Wrap::Repeat}}) {
             tex.sampler = {filter, wrap, wrapT, false};
+            if (variant.strips) raster::makeStripCopy(tex);   // made for a bilinear filter only
             for (int round = 0; round < 300; ++round) {
               // Pixel centres of a post pass's quads (the fast path's case), or anywhere.
               alignas(64) float s16[16], t16[16];
@@ -275,6 +280,7 @@ TEST_SUITE("texture") {
               // And through the shaders' own entry points (sampler_avx2.h), which take some
               // lookups inline (sample_half_avx512.h) rather than through sampleColor8x2.
               const raster::glsl::vec2<raster::simd::Float8x2> uv{s, t};
+              raster::sampling::prefetchColor(tex, uv);   // any coordinate, and nothing changes
               const auto viaPort = raster::sampling::lookupColor(tex, uv);
               const auto viaPortLive = raster::sampling::lookupColorWhere(raster::simd::Mask8x2::fromBits(liveBits), tex, uv);
               const raster::simd::Float8x2 port[4] = {viaPort.x, viaPort.y, viaPort.z, viaPort.w};

@@ -100,10 +100,13 @@ class RasterBackend final : public Backend {
       reserve(t->grey8.size(), memory::joined({"the grey copy of a ", std::to_string(desc.width), "x",
                                                std::to_string(desc.height), " texture"}));
     // Another RGBA8 texture sampled bilinearly gets the 16-lane sampler's strip copy
-    // (footprint_strips.h), where this build has that sampler.
-    if (pixels && raster::kSamplersReadStrips && raster::makeStripCopy(*t))
-      reserve(t->strips8.size(), memory::joined({"the strip copy of a ", std::to_string(desc.width), "x",
-                                                 std::to_string(desc.height), " texture"}));
+    // (footprint_strips.h), where this build has that sampler: 4/3 of the texture, so
+    // reserved before it is made.
+    if (pixels && raster::kSamplersReadStrips && raster::wantsStripCopy(*t)) {
+      reserve(raster::stripCopyBytes(*t), memory::joined({"the strip copy of a ", std::to_string(desc.width), "x",
+                                                          std::to_string(desc.height), " texture"}));
+      raster::makeStripCopy(*t);
+    }
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
   }

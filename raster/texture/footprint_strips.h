@@ -48,16 +48,23 @@ inline size_t stripUnit(int width, int x, int y) {
   return (strip * size_t(width) + size_t(x)) * kStripRows + row;
 }
 
-// Makes t's strip copy if its sampler filters bilinearly and it has no grey copy (the
-// grey copy is smaller still, texture.h); returns whether it did. Rows past the last of
-// the texture, in the last strip, are zero and never read.
+// Whether t takes a strip copy: RGBA8 texels sampled bilinearly, with no grey copy (that
+// one is smaller still, texture.h), and at least two rows.
+inline bool wantsStripCopy(const Texture& t) {
+  return t.format == TexelFormat::RGBA8 && !t.rgba8.empty() && t.sampler.filter == Filter::Linear && !t.hasGreyCopy() &&
+         stripCount(t.height) > 0;
+}
+
+// The bytes of t's strip copy, for reserving them before it is made.
+inline size_t stripCopyBytes(const Texture& t) { return stripCount(t.height) * size_t(t.width) * kStripRows * 4; }
+
+// Makes t's strip copy if it wants one; returns whether it did. Rows past the last of the
+// texture, in the last strip, are zero and never read.
 inline bool makeStripCopy(Texture& t) {
   t.strips8 = {};
-  if (t.format != TexelFormat::RGBA8 || t.rgba8.empty() || t.sampler.filter != Filter::Linear || t.hasGreyCopy() ||
-      stripCount(t.height) == 0)
-    return false;
+  if (!wantsStripCopy(t)) return false;
   const size_t width = size_t(t.width), strips = stripCount(t.height);
-  t.strips8.assign(strips * width * kStripRows * 4, 0);
+  t.strips8.assign(stripCopyBytes(t), 0);
   for (size_t s = 0; s < strips; ++s)
     for (size_t j = 0; j < size_t(kStripRows) && s * kStripStep + j < size_t(t.height); ++j) {
       const uint8_t* row = &t.rgba8[(s * kStripStep + j) * width * 4];

@@ -99,14 +99,16 @@ inline bool isRgba8Bilinear(const Texture& t) {
   const void* texels = grey ? static_cast<const void*>(t.grey8.data()) : static_cast<const void*>(t.rgba8.data());
   const __m512i width = _mm512_set1_epi32(t.width), low8 = _mm512_set1_epi32(0xFF);
   const __m512i row0 = _mm512_mullo_epi32(y.x0, width), row1 = _mm512_mullo_epi32(y.x1, width);
+  // The fetches below are always inlined: the profile-guided build had outlined the strip
+  // path's (a call per fetch, its lanes passed through memory).
   // One texel a lane: RGBA in four bytes, or the grey byte in the low eight bits.
-  auto fetch = [&](__m512i index) {
+  auto fetch = [&](__m512i index) __attribute__((always_inline)) {
     return grey ? _mm512_and_si512(_mm512_i32gather_epi32(index, texels, 1), low8) : _mm512_i32gather_epi32(index, texels, 4);
   };
   // Two RGBA texels a lane that lie side by side in memory, as one 64-bit element at
   // base + 4 * index (lanes 0-7, then 8-15), split into the first texels and the second ones
   // in lane order.
-  auto fetchTwo = [&](const void* base, __m512i index, __m512i& first, __m512i& second) {
+  auto fetchTwo = [&](const void* base, __m512i index, __m512i& first, __m512i& second) __attribute__((always_inline)) {
     const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
     const __m512i odd = _mm512_add_epi32(even, _mm512_set1_epi32(1));
     alignas(64) int at[16];   // scalar loads, not two 64-bit gathers (lane_loads_avx512.h)
@@ -117,7 +119,7 @@ inline bool isRgba8Bilinear(const Texture& t) {
   };
   // Where every lane's two texels of a row are neighbours, both with one element: four grey
   // bytes from the left texel on, or the two RGBA texels.
-  auto fetchPair = [&](__m512i index, __m512i& left, __m512i& right) {
+  auto fetchPair = [&](__m512i index, __m512i& left, __m512i& right) __attribute__((always_inline)) {
     if (grey) {
       const __m512i bytes = _mm512_i32gather_epi32(index, texels, 1);
       left = _mm512_and_si512(bytes, low8), right = _mm512_and_si512(_mm512_srli_epi32(bytes, 8), low8);

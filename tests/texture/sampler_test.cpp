@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <random>
@@ -319,6 +320,40 @@ TEST_SUITE("texture") {
     CHECK(mismatches == 0);
   }
 #endif
+
+  // The property the 16-lane lookup's strip path stands on (footprint_strips.h): for every
+  // footprint's first row y <= height - 2 and every column x, the copy holds texel (x, y) at
+  // stripUnit and (x, y + 1) in the unit after it; and only a bilinear, non-grey RGBA8
+  // texture of two rows or more takes a copy, of the size reserved for it.
+  TEST_CASE("strip copies hold each footprint column's two texels side by side") {
+    std::mt19937 rng(83);
+    long checked = 0, wrong = 0;
+    for (const auto& [w, h] : {std::pair{1, 2}, std::pair{2, 2}, std::pair{4, 4}, std::pair{5, 3}, std::pair{13, 7},
+                               std::pair{17, 10}, std::pair{3, 1001}}) {
+      raster::Texture tex = randomTexture(rng, w, h, raster::TexelFormat::RGBA8);
+      tex.sampler = {raster::Filter::Linear, raster::Wrap::Repeat, raster::Wrap::Repeat, false};
+      REQUIRE(raster::makeStripCopy(tex));
+      CHECK(tex.strips8.size() == raster::stripCopyBytes(tex));
+      for (int y = 0; y + 1 < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const size_t unit = raster::stripUnit(w, x, y);
+          wrong += std::memcmp(&tex.strips8[unit * 4], &tex.rgba8[(size_t(y) * size_t(w) + size_t(x)) * 4], 4) != 0;
+          wrong += std::memcmp(&tex.strips8[(unit + 1) * 4], &tex.rgba8[(size_t(y + 1) * size_t(w) + size_t(x)) * 4], 4) != 0;
+          checked += 2;
+        }
+    }
+    MESSAGE(checked << " texels checked, " << wrong << " wrong");
+    CHECK(checked > 0);
+    CHECK(wrong == 0);
+    raster::Texture oneRow = randomTexture(rng, 16384, 1, raster::TexelFormat::RGBA8);
+    CHECK_FALSE(raster::makeStripCopy(oneRow));   // no footprint of two rows
+    raster::Texture nearest = randomTexture(rng, 13, 7, raster::TexelFormat::RGBA8);
+    nearest.sampler = {raster::Filter::Nearest, raster::Wrap::Repeat, raster::Wrap::Repeat, false};
+    CHECK_FALSE(raster::makeStripCopy(nearest));
+    raster::Texture grey = randomTexture(rng, 13, 7, raster::TexelFormat::RGBA8, true);
+    grey.sampler = {raster::Filter::Linear, raster::Wrap::Repeat, raster::Wrap::Repeat, false};
+    CHECK_FALSE(raster::makeStripCopy(grey));   // its grey copy is smaller still
+  }
 
   TEST_CASE("filter=float: RGBA8 bilinear within float rounding of the exact bilinear, and within 2/255 of llvmpipe's 8-bit lerps") {
     std::mt19937 rng(1234);

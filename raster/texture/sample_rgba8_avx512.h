@@ -97,8 +97,7 @@ inline bool isRgba8Bilinear(const Texture& t) {
   const FixedTaps16 y = wrapLinearFixed16(tc.v, t.height, t.sampler.wrapT);
   const bool grey = t.hasGreyCopy();
   const void* texels = grey ? static_cast<const void*>(t.grey8.data()) : static_cast<const void*>(t.rgba8.data());
-  const __m512i width = _mm512_set1_epi32(t.width), low8 = _mm512_set1_epi32(0xFF);
-  const __m512i row0 = _mm512_mullo_epi32(y.x0, width), row1 = _mm512_mullo_epi32(y.x1, width);
+  const __m512i low8 = _mm512_set1_epi32(0xFF);
   // The fetches below are always inlined: the profile-guided build had outlined the strip
   // path's (a call per fetch, its lanes passed through memory).
   // One texel a lane: RGBA in four bytes, or the grey byte in the low eight bits.
@@ -135,12 +134,18 @@ inline bool isRgba8Bilinear(const Texture& t) {
     const StripColumns16 at = stripColumns16(t.width, x, y.x0);
     fetchTwo(t.strips8.data(), at.left, p00, p10);
     fetchTwo(t.strips8.data(), at.right, p01, p11);
-  } else if (_mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, one)) == 0xFFFF) {
-    fetchPair(_mm512_add_epi32(row0, x.x0), p00, p01);
-    fetchPair(_mm512_add_epi32(row1, x.x0), p10, p11);
   } else {
-    p00 = fetch(_mm512_add_epi32(row0, x.x0)), p01 = fetch(_mm512_add_epi32(row0, x.x1));
-    p10 = fetch(_mm512_add_epi32(row1, x.x0)), p11 = fetch(_mm512_add_epi32(row1, x.x1));
+    // Rows y0 and y1 of rgba8 or of the grey copy. (Their starts are computed here, not
+    // before the strip path: there the compiler left them in, two multiplies a lookup.)
+    const __m512i width = _mm512_set1_epi32(t.width);
+    const __m512i row0 = _mm512_mullo_epi32(y.x0, width), row1 = _mm512_mullo_epi32(y.x1, width);
+    if (_mm512_cmpeq_epi32_mask(x.x1, _mm512_add_epi32(x.x0, one)) == 0xFFFF) {
+      fetchPair(_mm512_add_epi32(row0, x.x0), p00, p01);
+      fetchPair(_mm512_add_epi32(row1, x.x0), p10, p11);
+    } else {
+      p00 = fetch(_mm512_add_epi32(row0, x.x0)), p01 = fetch(_mm512_add_epi32(row0, x.x1));
+      p10 = fetch(_mm512_add_epi32(row1, x.x0)), p11 = fetch(_mm512_add_epi32(row1, x.x1));
+    }
   }
   const __m512i weightX = _mm512_slli_epi32(x.weight, 7), weightY = _mm512_slli_epi32(y.weight, 7);
   const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));

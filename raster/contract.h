@@ -173,6 +173,7 @@ struct DrawRecord {
   int colorOutputs = 0;           // shader->colorOutputs()
   uint32_t primitivesPerInstance = 0;   // the indices' triangles: SetupTriangle::primitive / this = instance
   bool lanesIndependent = false;        // shader->lanesIndependent()
+  bool samplesAroundPixel = false;      // shader->samplesAroundPixel()
 };
 
 // The colour outputs a draw writes to a framebuffer: those both its shader and the

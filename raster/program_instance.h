@@ -23,6 +23,7 @@ class ProgramInstance final : public ShaderInstance {
   int colorOutputs() const override { return Program::kColorOutputs; }
   bool samplesTextures() const override { return raster::samplesTextures<Program>(); }
   bool lanesIndependent() const override { return raster::lanesIndependent<Program>(); }
+  bool samplesAroundPixel() const override { return raster::samplesAroundPixel<Program>(); }
 
   void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {
     if (scalarLanes) shadeVerticesWith<ScalarLanes>(batch, out);

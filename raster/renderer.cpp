@@ -15,6 +15,7 @@
 #include "raster/tile/trace_tile.h"
 #include "raster/util/cache_size.h"
 #include "raster/util/cycles.h"
+#include "raster/util/hilbert.h"
 
 namespace raster {
 
@@ -150,8 +151,9 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
   const bool samplesTextures = shader->samplesTextures();
   const int colorOutputs = shader->colorOutputs();
   const bool lanesIndependent = shader->lanesIndependent();
+  const bool samplesAroundPixel = shader->samplesAroundPixel();
   draws_.push_back(DrawRecord{std::move(shader), state, samplesTextures, setup.varyingFloats, colorOutputs,
-                              uint32_t(indices.size() / 3), lanesIndependent});
+                              uint32_t(indices.size() / 3), lanesIndependent, samplesAroundPixel});
 
   // 4. Binning.
   const uint64_t binStart = cycleCount();
@@ -266,6 +268,21 @@ bool Renderer::visibilityFirst() const {
   return depthTested;
 }
 
+// The pass's work items in Hilbert order of their tiles (raster::samplesAroundPixel), a
+// tile's bands top to bottom. The other passes keep rows of tiles: each read and write runs
+// on along a texel row from one tile into the next, which the hardware prefetchers and the
+// lookups' own row prefetches (texture/sample_half_avx512.h) count on. BENCHMARKS.md has both
+// orders' times ("Tiles in Hilbert order for SSAO").
+void Renderer::orderAlongHilbertCurve() {
+  const int tilesX = bins_.tilesX(), tilesY = bins_.tileCount() / tilesX;
+  const uint32_t side = hilbertSide(uint32_t(std::max(tilesX, tilesY)));
+  auto key = [&](const WorkItem& item) {
+    const uint32_t x = uint32_t(item.tile % tilesX), y = uint32_t(item.tile / tilesX);
+    return std::pair(hilbertIndex(x, y, side), item.bounds.y0);
+  };
+  std::sort(workItems_.begin(), workItems_.end(), [&](const WorkItem& a, const WorkItem& b) { return key(a) < key(b); });
+}
+
 // 5-6. Every tile of the pass (or band of one), in parallel: its share of the clear, then
 // its triangles through tile/ and merge/.
 void Renderer::flush() {
@@ -303,6 +320,8 @@ void Renderer::flush() {
       for (int y = whole.y0; y <= whole.y1; y += bandRows)
         workItems_.push_back({tile, TileBounds{whole.x0, y, whole.x1, std::min(y + bandRows - 1, whole.y1)}});
     }
+    if (std::any_of(draws_.begin(), draws_.end(), [](const DrawRecord& d) { return d.samplesAroundPixel; }))
+      orderAlongHilbertCurve();
     std::vector<PipelineCounters> itemCounters(workItems_.size());
     // A stage view records the pass; its fragment counts take the instrumented walk.
     ViewPass* view = viewRecorder_ ? &viewRecorder_->beginPass(job, bins_.tilesX(), bins_.tilesY()) : nullptr;

@@ -76,6 +76,7 @@ class Renderer {
   static constexpr int kVertexRange = 1024;
 
   bool visibilityFirst() const;
+  void orderAlongHilbertCurve();
   void beginPassHistory();
   void shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount);
   int setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount, size_t primitives);

@@ -109,4 +109,16 @@ constexpr bool lanesIndependent() {
   else return false;
 }
 
+// Whether a program's fragment shader samples textures at points spread around its pixel,
+// many texels away (SSAO's hemisphere of samples), rather than at or next to it. A port says
+// so with `static constexpr bool kSamplesAroundPixel = true;`; a pass drawing it then has
+// its tiles shaded in Hilbert order (Renderer::flush), where a tile's neighbours on the
+// screen are mostly its neighbours in time too, so the texels it reads are still cached from
+// theirs. A hint about speed alone: the order of tiles never changes a byte.
+template <class Program>
+constexpr bool samplesAroundPixel() {
+  if constexpr (requires { Program::kSamplesAroundPixel; }) return Program::kSamplesAroundPixel;
+  else return false;
+}
+
 }  // namespace raster

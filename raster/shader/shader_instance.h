@@ -22,6 +22,8 @@ class ShaderInstance {
   virtual bool samplesTextures() const = 0;
   // Whether its lanes are independent (raster::lanesIndependent, shader/program.h).
   virtual bool lanesIndependent() const = 0;
+  // Whether it samples around its pixel (raster::samplesAroundPixel, shader/program.h).
+  virtual bool samplesAroundPixel() const = 0;
   // Shades a batch of one instance's vertices into their records of `out`, with the
   // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;

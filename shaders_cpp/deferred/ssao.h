@@ -14,6 +14,9 @@ using namespace raster::glsl;
 struct SsaoPass : PostProgram {
   static constexpr const char* kName = "deferred/post+ssao";
   static constexpr int kColorOutputs = 1;
+  // Its 16 samples a pixel land up to SSAO_RADIUS away in the world, tens of pixels on the
+  // screen: the pipeline shades its tiles in an order that keeps neighbours together.
+  static constexpr bool kSamplesAroundPixel = true;
   struct Uniforms {
     glm::mat4 u_view{1.0f};
     glm::mat4 u_proj{1.0f};

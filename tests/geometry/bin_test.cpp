@@ -3,7 +3,8 @@
 // at all four corners of the overlap), a triangle inside one tile into it untested (as
 // llvmpipe bins it), a triangle larger than the screen into every tile, tiles
 // of a framebuffer whose size is not a multiple of 64 have clipped bounds, banded binning equals
-// one pass, and each bin keeps API order.
+// one pass, and each bin keeps API order. And the Hilbert order of tiles (util/hilbert.h)
+// that passes sampling around their pixels are shaded in.
 //
 // Triangles are given by pixel-centre vertices (window px + 0.5, fixed 256 px) and set up with
 // setupTriangle; tile (tx, ty) of an n-wide grid is tile index ty * n + tx.
@@ -17,6 +18,7 @@
 
 #include "raster/geometry/assemble.h"
 #include "raster/geometry/bin.h"
+#include "raster/util/hilbert.h"
 #include "tests/geometry/geometry_test_helpers.h"
 
 namespace {
@@ -248,5 +250,35 @@ TEST_SUITE("geometry") {
     CHECK(bins.tilesX() == 1);
     CHECK(bins.tilesY() == 3);
     for (int tile = 0; tile < 3; ++tile) CHECK(bins.bin(tile).empty());
+  }
+
+  // What Renderer::orderAlongHilbertCurve relies on: every tile of the grid gets its own
+  // index (the sort then keeps each tile once, and the order is the same every run), and
+  // the tile after each is beside it, so tiles shaded one after another share their
+  // surroundings.
+  TEST_CASE("Hilbert order: every cell of the grid once, each beside the one before") {
+    CHECK(raster::hilbertSide(1) == 1);
+    CHECK(raster::hilbertSide(10) == 16);
+    CHECK(raster::hilbertSide(16) == 16);
+    CHECK(raster::hilbertSide(30) == 32);
+    for (uint32_t side : {1u, 2u, 4u, 8u, 32u}) {
+      CAPTURE(side);
+      std::vector<std::pair<uint32_t, uint32_t>> cellAt(size_t(side) * side, {~0u, ~0u});
+      for (uint32_t y = 0; y < side; ++y)
+        for (uint32_t x = 0; x < side; ++x) {
+          const uint64_t index = raster::hilbertIndex(x, y, side);
+          REQUIRE(index < cellAt.size());
+          REQUIRE(cellAt[index].first == ~0u);   // no index given twice
+          cellAt[index] = {x, y};
+        }
+      CHECK(cellAt.front() == std::pair(0u, 0u));
+      for (size_t i = 1; i < cellAt.size(); ++i) {
+        const auto [x0, y0] = cellAt[i - 1];
+        const auto [x1, y1] = cellAt[i];
+        const uint32_t step = (x0 > x1 ? x0 - x1 : x1 - x0) + (y0 > y1 ? y0 - y1 : y1 - y0);
+        CAPTURE(i);
+        CHECK(step == 1);
+      }
+    }
   }
 }

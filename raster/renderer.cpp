@@ -269,10 +269,11 @@ bool Renderer::visibilityFirst() const {
 }
 
 // The pass's work items in Hilbert order of their tiles (raster::samplesAroundPixel), a
-// tile's bands top to bottom. The other passes keep rows of tiles: each read and write runs
-// on along a texel row from one tile into the next, which the hardware prefetchers and the
-// lookups' own row prefetches (texture/sample_half_avx512.h) count on. BENCHMARKS.md has both
-// orders' times ("Tiles in Hilbert order for SSAO").
+// tile's bands in the order of their first rows. The other passes keep rows of tiles: their
+// reads and writes run on along a texel row from one tile into the next, which the hardware
+// prefetchers and the row prefetches of lookups and stores (prefetchFootprintRows,
+// merge::prefetchBlockRowsForWrite) count on. BENCHMARKS.md has both orders' times ("Tiles
+// in Hilbert order for SSAO").
 void Renderer::orderAlongHilbertCurve() {
   const int tilesX = bins_.tilesX(), tilesY = bins_.tileCount() / tilesX;
   const uint32_t side = hilbertSide(uint32_t(std::max(tilesX, tilesY)));

@@ -10,14 +10,16 @@
 namespace raster {
 
 // Cell (x, y) of a side x side grid, side a power of two: its index 0 .. side^2 - 1 along the
-// curve that starts at (0, 0) and ends at (side - 1, 0) (the classic xy2d: each level's
-// quadrant, then the cell turned into that quadrant's frame).
+// curve that starts at (0, 0) and ends at (side - 1, 0) (the classic xy2d: at each level,
+// the quadrant's place on the curve, then the cell taken into that quadrant's frame).
 inline uint64_t hilbertIndex(uint32_t x, uint32_t y, uint32_t side) {
   uint64_t index = 0;
   for (uint32_t half = side / 2; half > 0; half /= 2) {
     const uint32_t right = (x & half) ? 1 : 0, top = (y & half) ? 1 : 0;
     index += uint64_t(half) * half * ((3 * right) ^ top);
-    if (top == 0) {   // the quadrant's frame: turned a quarter, and mirrored on the right
+    // A lower quadrant's frame is the grid's mirrored across a diagonal (the left quadrant's
+    // across the main one, the right's across the other).
+    if (top == 0) {
       if (right == 1) {
         x = half - 1 - (x & (half - 1));
         y = half - 1 - (y & (half - 1));

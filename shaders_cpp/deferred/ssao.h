@@ -14,8 +14,9 @@ using namespace raster::glsl;
 struct SsaoPass : PostProgram {
   static constexpr const char* kName = "deferred/post+ssao";
   static constexpr int kColorOutputs = 1;
-  // Its 16 samples a pixel land up to SSAO_RADIUS away in the world, tens of pixels on the
-  // screen: the pipeline shades its tiles in an order that keeps neighbours together.
+  // Its 16 samples a pixel land up to SSAO_RADIUS away in the world, tens to hundreds of
+  // pixels on the screen: the pipeline shades its tiles in an order that keeps neighbours
+  // together (raster::samplesAroundPixel).
   static constexpr bool kSamplesAroundPixel = true;
   struct Uniforms {
     glm::mat4 u_view{1.0f};

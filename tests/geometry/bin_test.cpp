@@ -253,9 +253,8 @@ TEST_SUITE("geometry") {
   }
 
   // What Renderer::orderAlongHilbertCurve relies on: every tile of the grid gets its own
-  // index (the sort then keeps each tile once, and the order is the same every run), and
-  // the tile after each is beside it, so tiles shaded one after another share their
-  // surroundings.
+  // index (so the order is total, the same every run), and the tile after each is beside
+  // it, so tiles shaded one after another share their surroundings.
   TEST_CASE("Hilbert order: every cell of the grid once, each beside the one before") {
     CHECK(raster::hilbertSide(1) == 1);
     CHECK(raster::hilbertSide(10) == 16);
@@ -272,6 +271,7 @@ TEST_SUITE("geometry") {
           cellAt[index] = {x, y};
         }
       CHECK(cellAt.front() == std::pair(0u, 0u));
+      CHECK(cellAt.back() == std::pair(side - 1, 0u));
       for (size_t i = 1; i < cellAt.size(); ++i) {
         const auto [x0, y0] = cellAt[i - 1];
         const auto [x1, y1] = cellAt[i];

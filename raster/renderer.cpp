@@ -275,7 +275,7 @@ bool Renderer::visibilityFirst() const {
 // merge::prefetchBlockRowsForWrite) count on. BENCHMARKS.md has both orders' times ("Tiles
 // in Hilbert order for SSAO").
 void Renderer::orderAlongHilbertCurve() {
-  const int tilesX = bins_.tilesX(), tilesY = bins_.tileCount() / tilesX;
+  const int tilesX = bins_.tilesX(), tilesY = bins_.tilesY();
   const uint32_t side = hilbertSide(uint32_t(std::max(tilesX, tilesY)));
   auto key = [&](const WorkItem& item) {
     const uint32_t x = uint32_t(item.tile % tilesX), y = uint32_t(item.tile / tilesX);

@@ -59,23 +59,36 @@ namespace raster::sampling {
 }
 
 // sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load
-// (two lanes to a 16-byte register; dead lanes, not in `live`, read as zero: their indices
-// are clamped into the texture like the others), converted and transposed straight into
-// Float8x2 planes, with about a third of the shuffles that transposing each group and
-// joining the halves takes. The loads replaced two 8-element gathers: on the AMD EPYC Zen 4
+// (two lanes to a 16-byte register; dead lanes, not in `live`, read as zero), converted and
+// transposed straight into Float8x2 planes, with about a third of the shuffles that
+// transposing each group and joining the halves takes. The loads replaced two 8-element gathers: on the AMD EPYC Zen 4
 // host the deferred frame, whose SSAO pass makes 16 such lookups a pixel, read 2% faster
 // (16 alternated pairs, 12 won). The texture must be RGBA16F.
+//
+// Dead lanes cost no memory: a lookup with no live lane reads nothing, a half (eight lanes)
+// with none loads nothing, and a dead lane of a live half loads texel 0, which stays cached,
+// instead of its own. SSAO's stored-normal reads (textureWhere) are where this counts: of
+// their lanes only 12-13% are live, a third to two fifths of the lookups have none and over
+// half their halves (640x480 and 1920x1080); the deferred frame read 2-3% faster at both sizes
+// (BENCHMARKS.md, "Dead lanes of SSAO's normal reads").
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          __mmask16 live, simd::Float8x2 out[4]) {
+  if (!live) {
+    for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(_mm512_setzero_ps());
+    return;
+  }
   const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
-  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
+  const __m512i index =
+      _mm512_maskz_mov_epi32(live, _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x));
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
   alignas(64) int at[16];
   storeLaneIndices16(index, at);
   for (int h = 0; h < 2; ++h) {
-    const __m512i texel = _mm512_maskz_mov_epi64(__mmask8(live >> (8 * h)), loadEightLanes64(texels, at, 8 * h, 8));
+    const __mmask8 halfLive = __mmask8(live >> (8 * h));
+    __m512i texel = _mm512_setzero_si512();
+    if (halfLive) texel = _mm512_maskz_mov_epi64(halfLive, loadEightLanes64(texels, at, 8 * h, 8));
     v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
     v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
   }

@@ -61,16 +61,17 @@ namespace raster::sampling {
 // sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load
 // (two lanes to a 16-byte register; dead lanes, not in `live`, read as zero), converted and
 // transposed straight into Float8x2 planes, with about a third of the shuffles that
-// transposing each group and joining the halves takes. The loads replaced two 8-element gathers: on the AMD EPYC Zen 4
-// host the deferred frame, whose SSAO pass makes 16 such lookups a pixel, read 2% faster
-// (16 alternated pairs, 12 won). The texture must be RGBA16F.
+// transposing each group and joining the halves takes. The loads replaced two 8-element
+// gathers: on the AMD EPYC Zen 4 host the deferred frame, whose SSAO pass makes 16 such
+// lookups a pixel, read 2% faster (16 alternated pairs, 12 won). The texture must be RGBA16F.
 //
 // Dead lanes cost no memory: a lookup with no live lane reads nothing, a half (eight lanes)
 // with none loads nothing, and a dead lane of a live half loads texel 0, which stays cached,
-// instead of its own. SSAO's stored-normal reads (textureWhere) are where this counts: of
-// their lanes only 12-13% are live, a third to two fifths of the lookups have none and over
-// half their halves (640x480 and 1920x1080); the deferred frame read 2-3% faster at both sizes
-// (BENCHMARKS.md, "Dead lanes of SSAO's normal reads").
+// instead of its own. SSAO's stored-normal reads (textureWhere) are where this counts: only
+// 12-13% of their lanes are live, a third to two fifths of the lookups have none, and over
+// half their halves (640x480 and 1920x1080). The deferred frame read 3.6% faster at
+// 1920x1080, where the G-buffer targets outgrow the cache, and 0.4% at 640x480 (BENCHMARKS.md,
+// "Dead lanes of SSAO's normal reads").
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          __mmask16 live, simd::Float8x2 out[4]) {
   if (!live) {

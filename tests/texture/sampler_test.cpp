@@ -276,8 +276,8 @@ TEST_SUITE("texture") {
               raster::simd::Float8x2 planes[4], planesLive[4];
               raster::sampling::sampleColor8x2(tex, s, t, planes);
               // The lookup for some lanes only (textureWhere): those lanes must still be exact.
-              // Some rounds leave one eight-lane half, or all but one lane, dead: the 16-lane
-              // NEAREST lookup skips the loads of a half with no live lane.
+              // Some rounds leave every lane dead, or one eight-lane half, or all but one lane:
+              // the 16-lane NEAREST lookup skips the loads of a half with no live lane.
               const unsigned anyBits = rng() & 0xFFFFu;
               const unsigned liveBits = round % 5 == 0 ? 0u
                                         : round % 5 == 1 ? (anyBits & 0x00FFu)

@@ -193,13 +193,7 @@ constexpr float kAtan11 = -0.0121323213173444f;
 // Always inlined (here and log2Impl): pow is exp2(log2), and for Float8x2 an outlined call
 // would pass both 64-byte halves through the stack.
 template <class F>
-[[gnu::always_inline]] inline F exp2Core(F x) {
-  using U = UOf<F>;
-  x = minps(F(128.0f), x);
-  x = maxps(F(-126.99999f), x);
-  const F ipart = floorF(x);
-  const F fpart = x - ipart;
-  const F expipart = asFloat((cvtt(ipart) + U(127u)) << 23);
+[[gnu::always_inline]] inline F exp2Polynomial(F fpart) {
   const F f2 = fpart * fpart;
   F odd = F(kExp2P5);
   F even = F(kExp2P4);
@@ -207,12 +201,39 @@ template <class F>
   even = fmaF(f2, even, F(kExp2P2));
   odd = fmaF(f2, odd, F(kExp2P1));
   even = fmaF(f2, even, F(kExp2P0));
-  const F p = fmaF(odd, fpart, even);
-  return expipart * p;
+  return fmaF(odd, fpart, even);
+}
+template <class F>
+[[gnu::always_inline]] inline F exp2Core(F x) {
+  using U = UOf<F>;
+  x = minps(F(128.0f), x);
+  x = maxps(F(-126.99999f), x);
+  const F ipart = floorF(x);
+  const F fpart = x - ipart;
+  const F expipart = asFloat((cvtt(ipart) + U(127u)) << 23);
+  return expipart * exp2Polynomial(fpart);
 }
 template <class F>
 [[gnu::always_inline]] inline F exp2Impl(F x) { return exp2Core(daz(x)); }
 
+// exp2Core's expipart * p for an integral ipart in [-126, 125] and a p in [1, 2]: 2^ipart
+// is a normal float and the product is p with its exponent moved, rounding nothing. Where
+// AVX-512 has that as one instruction (vscalefps, gl_math_avx512.h) it replaces four.
+template <class F>
+F scaleByPowerOfTwo(F p, F ipart) {
+  using U = UOf<F>;
+  return asFloat((cvtt(ipart) + U(127u)) << 23) * p;
+}
+
+// exp2Core for an x in [-126, 126): its clamps change nothing, floor(x) is in [-126, 125]
+// and the polynomial of a fraction in [0, 1) is in [1, 2] (P(0) = 1, every coefficient
+// positive, P(1) = 2 to float precision), so the scale is scaleByPowerOfTwo's case. Same
+// bits, two clamps and three operations fewer.
+template <class F>
+[[gnu::always_inline]] inline F exp2InNormalRange(F x) {
+  const F ipart = floorF(x);
+  return scaleByPowerOfTwo(exp2Polynomial(x - ipart), ipart);
+}
 // lp_build_log2_safe = lp_build_log2_approx(handle_edge_cases = TRUE):
 //   logexp = float(((bits(x) & 0x7f800000) >> 23) - 127)
 //   mant = bits((bits(x) & 0x007fffff) | bits(1.0))            (in [1, 2))
@@ -303,11 +324,20 @@ template <class F>
 
 // powImpl with an exponent fixed at compile time, a normal float: daz(y) is y and y is no
 // NaN, so only x's part is left.
+// When also |y| <= 0.98 (the composite's gamma 1 / 2.2), powPlain's product lies in
+// exp2InNormalRange's range for every positive normal x: log2Core(x) is fma(y', p, e) with
+// the exponent e in [-126, 127] and y' * p < 1 (log2 of the mantissa), so it is in
+// [-126, 128] and times |y| <= 0.98 in [-125.5, 125.5]. A zero x is masked as in powPlain.
+constexpr float kNormalRangeExponentMax = 0.98f;
 template <float Y, class F>
 [[gnu::always_inline]] inline F powConstImpl(F x) {
   static_assert(Y == Y && __builtin_isnormal(Y), "a literal exponent is a normal float");
   if constexpr (Y >= kPlainExponentMin || Y <= -kPlainExponentMin)
-    if (powBaseIsPlain(x)) return powPlain(x, F(Y));
+    if (powBaseIsPlain(x)) {
+      if constexpr (Y <= kNormalRangeExponentMax && Y >= -kNormalRangeExponentMax)
+        return sel(x == F(0.0f), F(0.0f), exp2InNormalRange(log2Core(x) * F(Y)));
+      return powPlain(x, F(Y));
+    }
   x = daz(x);
   const auto zero = ueq(x, F(0.0f));
   const F res = exp2Impl(log2Impl(x) * F(Y));

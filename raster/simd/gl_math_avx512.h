@@ -46,5 +46,15 @@ inline simd::Float8 log2Mantissa(simd::Float8 x) {
   return simd::Float8(_mm256_getmant_ps(x.v, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero));
 }
 
+// scaleByPowerOfTwo (gl_math.h) in one instruction: vscalefps gives p * 2^floor(ipart),
+// the same product wherever gl_math.h calls it (an integral ipart in [-126, 125], p in
+// [1, 2]: no rounding, no overflow, no denormal).
+inline simd::Float8x2 scaleByPowerOfTwo(simd::Float8x2 p, simd::Float8x2 ipart) {
+  return simd::Float8x2(_mm512_scalef_ps(p.v, ipart.v));
+}
+inline simd::Float8 scaleByPowerOfTwo(simd::Float8 p, simd::Float8 ipart) {
+  return simd::Float8(_mm256_scalef_ps(p.v, ipart.v));
+}
+
 }  // namespace raster::glsl::detail
 #endif

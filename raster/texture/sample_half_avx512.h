@@ -262,6 +262,14 @@ template <int R>
   return true;
 }
 
+// Whether, for lanes k = 0..3 and 8..11, lane k + 4's texel index is lane k's plus two:
+// then the 32 bytes from lane k's texel hold the texel pairs [i, i + 1] of both lanes.
+[[gnu::always_inline]] inline bool pairsFollowEachOther16(__m512i index) {
+  const __m512i fourOn = _mm512_setr_epi32(4, 5, 6, 7, 0, 0, 0, 0, 12, 13, 14, 15, 0, 0, 0, 0);
+  return _mm512_mask_cmpeq_epi32_mask(0x0F0F, _mm512_permutexvar_epi32(fourOn, index),
+                                      _mm512_add_epi32(index, _mm512_set1_epi32(2))) == 0x0F0F;
+}
+
 // Bilinear RGBA16F for two groups at once, blended before the transpose, as the 8-lane
 // sampleHalfClampBlendFirst (sample_color_avx2.cpp) does per group: each lane loads its row's
 // texel pair [left rgba | right rgba] with one 16-byte load, lanes k, k + 4, k + 8 and k + 12
@@ -277,29 +285,42 @@ template <int R>
   if (_mm512_cmpeq_epi32_mask(x.i0, _mm512_set1_epi32(t.width - 1))) return false;
   const uint16_t* texels = t.half.data();
   const __m512i width = _mm512_set1_epi32(t.width);
+  const __m512i rowStart[2] = {_mm512_add_epi32(_mm512_mullo_epi32(y.i0, width), x.i0),
+                               _mm512_add_epi32(_mm512_mullo_epi32(y.i1, width), x.i0)};
   alignas(64) int start[2][16];   // [row y0 | y1][lane]: the lane's left texel
-  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(y.i0, width), x.i0), start[0]);
-  storeLaneIndices16(_mm512_add_epi32(_mm512_mullo_epi32(y.i1, width), x.i0), start[1]);
+  storeLaneIndices16(rowStart[0], start[0]);
+  storeLaneIndices16(rowStart[1], start[1]);
   prefetchFootprintRows(t, start[0], 2);
-  auto pair = [&](int r, int lane) {   // [lane left | right | lane + 4 left | right]
+  auto blend = [&](auto pair) __attribute__((always_inline)) {
+    __m512 blended[4];   // [lane k | k + 4 | k + 8 | k + 12], rgba each
+    for (int k = 0; k < 4; ++k) {
+      const __m512i lanes = blockLanes(k);
+      const __m512 weightX = _mm512_permutexvar_ps(lanes, x.weight), weightY = _mm512_permutexvar_ps(lanes, y.weight);
+      __m512 row[2];
+      for (int r = 0; r < 2; ++r) {
+        const __m512 g0 = pair(r, k), g1 = pair(r, k + 8);
+        const __m512 left = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(2, 0, 2, 0));
+        const __m512 right = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(3, 1, 3, 1));
+        row[r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
+      }
+      blended[k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(row[1], row[0]), row[0]);
+    }
+    lanesToPlanes(blended, out);
+  };
+  // A texture read at its own resolution (the composite's HDR scene): in each row, lane
+  // k + 4's pair starts two texels after lane k's (lane_layout.h: lane k + 4 is two pixels
+  // right of lane k), so one 32-byte load reads both pairs.
+  if (pairsFollowEachOther16(rowStart[0]) && pairsFollowEachOther16(rowStart[1])) {
+    blend([&](int r, int lane) __attribute__((always_inline)) {   // [lane left | right | lane + 4 left | right]
+      return _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + size_t(start[r][lane]) * 4)));
+    });
+    return true;
+  }
+  blend([&](int r, int lane) __attribute__((always_inline)) {   // the same, from two 16-byte loads
     const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane]) * 4));
     const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels + size_t(start[r][lane + 4]) * 4));
     return _mm512_cvtph_ps(_mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1));
-  };
-  __m512 blended[4];   // [lane k | k + 4 | k + 8 | k + 12], rgba each
-  for (int k = 0; k < 4; ++k) {
-    const __m512i lanes = blockLanes(k);
-    const __m512 weightX = _mm512_permutexvar_ps(lanes, x.weight), weightY = _mm512_permutexvar_ps(lanes, y.weight);
-    __m512 row[2];
-    for (int r = 0; r < 2; ++r) {
-      const __m512 g0 = pair(r, k), g1 = pair(r, k + 8);
-      const __m512 left = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(2, 0, 2, 0));
-      const __m512 right = _mm512_shuffle_f32x4(g0, g1, _MM_SHUFFLE(3, 1, 3, 1));
-      row[r] = _mm512_fmadd_ps(weightX, _mm512_sub_ps(right, left), left);
-    }
-    blended[k] = _mm512_fmadd_ps(weightY, _mm512_sub_ps(row[1], row[0]), row[0]);
-  }
-  lanesToPlanes(blended, out);
+  });
   return true;
 }
 
@@ -417,6 +438,112 @@ template <bool InPlaceX, bool InPlaceY>
   }
 }
 
+// Whether every lane's taps along an axis (texel and weight) are those of lane lead[lane].
+[[gnu::always_inline]] inline bool tapsFollowLeads16(const LinearTaps16 (&taps)[3], __m512i lead) {
+  __mmask16 same = 0xFFFF;
+  for (const LinearTaps16& tap : taps) {
+    const __m512i weight = _mm512_castps_si512(tap.weight);
+    same &= _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(lead, tap.i0), tap.i0) &
+            _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(lead, weight), weight);
+  }
+  return same == 0xFFFF;
+}
+
+// blendHalfGrid16 where each lane's taps along x are those of every lane in its block column
+// and its taps along y those of every lane in its block row, and the block's taps span at
+// most 8 texels along each axis: a full-screen pass whose coordinates follow the pixel grid
+// (the bloom upsample, reading a mip of half its size: 6x6 texels a block). Then each row
+// blend serves a whole block column: per texel row, the 4 columns x 3 taps are blended once
+// (three registers of [column 0 rgba | 1 | 2 | 3], their texels picked from the row's 8 with
+// two-source permutes), where the lane-by-lane path blends each of the 16 lanes' rows after
+// loading and transposing them per lane. Each tap row then blends two of those per block
+// row, and a transpose and one permute a channel put the lanes in place. Every lane's values
+// come from the same operations on the same texels as before: rows, then columns, the row's
+// weight broadcast over its channels. False (nothing written) where the taps do not line up so.
+[[gnu::always_inline]] inline bool blendHalfGridSeparable16(const Texture& t, const LinearTaps16 (&x)[3],
+                                                            const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
+  // The 4x4 block's lanes (lane_layout.h): lane L sits in block column ((L >> 2) & 1) * 2 +
+  // (L & 1) and block row ((L >> 1) & 1) + 2 * (L >> 3) (a flipped block swaps rows in
+  // pairs, which changes nothing here). Lanes 0, 1, 4 and 5 lead columns 0-3, lanes 0, 2, 8
+  // and 10 rows 0-3; columnLead[L] and rowLead[L] are L's.
+  const __m512i columnLead = _mm512_setr_epi32(0, 1, 0, 1, 4, 5, 4, 5, 0, 1, 0, 1, 4, 5, 4, 5);
+  const __m512i rowLead = _mm512_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2, 8, 8, 10, 10, 8, 8, 10, 10);
+  constexpr int kSpan = 8;   // texels along each axis
+  // First, two lanes' centre taps, for grids that spread wider (the downsample's, 10 texels
+  // a block): the block's first and last columns (lanes 0 and 5), first and last rows (0, 10).
+  const int x0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(x[1].i0));
+  const int x5 = _mm_extract_epi32(_mm512_extracti32x4_epi32(x[1].i0, 1), 1);
+  const int y0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(y[1].i0));
+  const int y10 = _mm_extract_epi32(_mm512_extracti32x4_epi32(y[1].i0, 2), 2);
+  if (t.width < kSpan || std::abs(x5 - x0) > 3 || std::abs(y10 - y0) > 3) return false;
+  if (!tapsFollowLeads16(x, columnLead) || !tapsFollowLeads16(y, rowLead)) return false;
+  // The window: the lowest first texel along each axis (left moved in so that 8 texels fit).
+  const int originX = std::min(_mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(x[0].i0, x[1].i0), x[2].i0)),
+                               t.width - kSpan);
+  const int originY = _mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(y[0].i0, y[1].i0), y[2].i0));
+  const int lastY = _mm512_reduce_max_epi32(_mm512_max_epi32(_mm512_max_epi32(y[0].i1, y[1].i1), y[2].i1));
+  const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
+  const __m512i last = _mm512_set1_epi32(kSpan - 1);
+  __mmask16 outside = 0;   // a second texel is never before the first (i1 >= i0 >= origin)
+  for (const LinearTaps16& tap : x) outside |= _mm512_cmpgt_epu32_mask(_mm512_sub_epi32(tap.i1, cornerX), last);
+  if (outside || lastY - originY >= kSpan) return false;
+  const int rows = lastY - originY + 1;
+
+  // Per tap column: the permute indices of its left and right texels and its weight, for
+  // [column 0 rgba | 1 | 2 | 3] (the column's lead lane's, each over four channels).
+  const __m512i spread = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 4, 4, 4, 4, 5, 5, 5, 5);
+  const __m512i channel = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+  auto pickIndex = [&](__m512i texel) __attribute__((always_inline)) {
+    return _mm512_add_epi32(_mm512_slli_epi32(_mm512_permutexvar_epi32(spread, _mm512_sub_epi32(texel, cornerX)), 2),
+                            channel);
+  };
+  __m512i leftIndex[3], rightIndex[3];
+  __m512 weightX[3];
+  for (int i = 0; i < 3; ++i) {
+    leftIndex[i] = pickIndex(x[i].i0);
+    rightIndex[i] = pickIndex(x[i].i1);
+    weightX[i] = _mm512_permutexvar_ps(spread, x[i].weight);
+  }
+  // Row blends of every window row: rowBlend[row][tap column], [column 0 rgba | 1 | 2 | 3].
+  alignas(64) float rowBlend[kSpan][3][16];
+  const uint16_t* texels = t.half.data() + (size_t(originY) * size_t(t.width) + size_t(originX)) * 4;
+  for (int r = 0; r < rows; ++r) {
+    const uint16_t* row = texels + size_t(r) * size_t(t.width) * 4;
+    const __m512 low = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row)));        // texels 0-3
+    const __m512 high = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + 16)));  // 4-7
+    for (int i = 0; i < 3; ++i) {
+      const __m512 left = _mm512_permutex2var_ps(low, leftIndex[i], high);
+      const __m512 right = _mm512_permutex2var_ps(low, rightIndex[i], high);
+      _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left));
+    }
+  }
+  // Each block row's taps along y: its lead lane's (lanes 0, 2, 8, 10) window rows and weight.
+  alignas(64) int top[3][16], bottom[3][16];
+  alignas(64) float weightY[3][16];
+  for (int j = 0; j < 3; ++j) {
+    _mm512_store_si512(top[j], _mm512_sub_epi32(y[j].i0, cornerY));
+    _mm512_store_si512(bottom[j], _mm512_sub_epi32(y[j].i1, cornerY));
+    _mm512_store_ps(weightY[j], y[j].weight);
+  }
+  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes.
+  const __m512i toLanes = _mm512_setr_epi32(0, 4, 1, 5, 8, 12, 9, 13, 2, 6, 3, 7, 10, 14, 11, 15);
+  constexpr int kRowLeads[4] = {0, 2, 8, 10};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
+      for (int r = 0; r < 4; ++r) {
+        const int lead = kRowLeads[r];
+        const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
+        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
+        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
+      }
+      simd::Float8x2 planes[4];
+      lanesToPlanes(blockRow, planes);
+      for (int c = 0; c < 4; ++c) taps[j * 3 + i][c] = simd::Float8x2(_mm512_permutexvar_ps(toLanes, planes[c].v));
+    }
+  return true;
+}
+
 // textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's nine 2x2
 // footprints lie in one 4x4 window of texels inside the texture. Usually tap k spans window
 // texels k and k + 1 along both axes in every lane: each window row is then read with one
@@ -431,6 +558,7 @@ template <bool InPlaceX, bool InPlaceY>
                                                    simd::Float8x2 (&taps)[9][4]) {
   LinearTaps16 x[3], y[3];
   bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
+  if (blendHalfGridSeparable16(t, x, y, taps)) return true;
   // Where an axis's taps are consecutive, the window starts at tap 0's first texel along it.
   const bool inPlaceX = axisTapsAreConsecutive16(x, 3), inPlaceY = axisTapsAreConsecutive16(y, 3);
   const bool inPlace = inPlaceX && inPlaceY;

@@ -22,6 +22,7 @@ TEST_SUITE("texture") {
   struct GridCounts {
     long taps = 0, mismatches = 0, shared16 = 0;
     long pickedRows = 0, pickedColumns = 0, pickedBoth = 0;
+    long separable = 0;   // grids whose taps follow the block's columns and rows
   };
 
   // Every tap of textureGrid3x3 for `Lanes` (Float8, or Float8x2 with its 16-lane path)
@@ -47,14 +48,15 @@ TEST_SUITE("texture") {
             // Pixel centres of a target twice the size (as the bloom upsample reads) or half
             // (the downsample), or anywhere; in most rounds every lane, so that the vector
             // forms' shared paths (which need all lanes one texel apart) are taken.
-            // Every sixth round the lanes are one 4x4 block of that target, laid out as the
+            // Every third round the lanes are one 4x4 block of that target, laid out as the
             // pipeline lays out a block's lanes (lane_layout.h): a block on one edge of the
             // texture has its taps in place along the other axis, as the bloom passes' border
-            // blocks do.
+            // blocks do. Such a block of a target twice the size (or the same size) is what
+            // the separable 16-lane path takes: each tap the same down a block column.
             const int scale = round % 4 == 3 ? 1 : 2;
             const int cols = round % 2 ? scale * w : std::max(w / scale, 1);
             const int rows = round % 2 ? scale * h : std::max(h / scale, 1);
-            const bool asBlock = round % 6 == 0;
+            const bool asBlock = round % 3 == 0;
             // The block's column and row of blocks: the first, the last or any, so that
             // blocks on one edge and in a corner are both common.
             auto blockAt = [&](int size) {
@@ -97,6 +99,8 @@ TEST_SUITE("texture") {
               counts.pickedRows += shared && inPlaceX && !inPlaceY;      // a top or bottom edge
               counts.pickedColumns += shared && !inPlaceX && inPlaceY;   // a left or right edge
               counts.pickedBoth += shared && !inPlaceX && !inPlaceY;
+              raster::simd::Float8x2 separablePlanes[9][4];
+              counts.separable += shared && raster::sampling::blendHalfGridSeparable16(tex, x, y, separablePlanes);
             }
 #endif
             for (int j = 0; j < 3; ++j)
@@ -131,13 +135,14 @@ TEST_SUITE("texture") {
     MESSAGE(counts.taps << " grid taps, " << counts.mismatches << " channel mismatches, " << counts.shared16
                         << " grids on the 16-lane path, picking texels at an edge: " << counts.pickedRows
                         << " down the rows only, " << counts.pickedColumns << " along them only, " << counts.pickedBoth
-                        << " both");
+                        << " both, " << counts.separable << " separable");
     CHECK(counts.taps == 2 * 4 * 2 * 300 * 9 * 16);
     CHECK(counts.shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
     // and each of its edge forms
     CHECK(counts.pickedRows > 10);
     CHECK(counts.pickedColumns > 10);
     CHECK(counts.pickedBoth > 10);
+    CHECK(counts.separable > 10);
     CHECK(counts.mismatches == 0);
   }
 #endif

@@ -460,8 +460,8 @@ template <bool InPlaceX, bool InPlaceY>
 // row, and a transpose and one permute a channel put the lanes in place. Every lane's values
 // come from the same operations on the same texels as before: rows, then columns, the row's
 // weight broadcast over its channels. False (nothing written) where the taps do not line up so.
-[[gnu::always_inline]] inline bool blendHalfGridSeparable16(const Texture& t, const LinearTaps16 (&x)[3],
-                                                            const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
+[[gnu::always_inline]] inline bool blendHalfSeparable16(const Texture& t, const LinearTaps16 (&x)[3],
+                                                        const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
   // The 4x4 block's lanes (lane_layout.h): lane L sits in block column ((L >> 2) & 1) * 2 +
   // (L & 1) and block row ((L >> 1) & 1) + 2 * (L >> 3) (a flipped block swaps rows in
   // pairs, which changes nothing here). Lanes 0, 1, 4 and 5 lead columns 0-3, lanes 0, 2, 8
@@ -469,14 +469,7 @@ template <bool InPlaceX, bool InPlaceY>
   const __m512i columnLead = _mm512_setr_epi32(0, 1, 0, 1, 4, 5, 4, 5, 0, 1, 0, 1, 4, 5, 4, 5);
   const __m512i rowLead = _mm512_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2, 8, 8, 10, 10, 8, 8, 10, 10);
   constexpr int kSpan = 8;   // texels along each axis
-  // First, two lanes' centre taps, for grids that spread wider (the downsample's, 10 texels
-  // a block): the block's first and last columns (lanes 0 and 5), first and last rows (0, 10).
-  const int x0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(x[1].i0));
-  const int x5 = _mm_extract_epi32(_mm512_extracti32x4_epi32(x[1].i0, 1), 1);
-  const int y0 = _mm_cvtsi128_si32(_mm512_castsi512_si128(y[1].i0));
-  const int y10 = _mm_extract_epi32(_mm512_extracti32x4_epi32(y[1].i0, 2), 2);
-  if (t.width < kSpan || std::abs(x5 - x0) > 3 || std::abs(y10 - y0) > 3) return false;
-  if (!tapsFollowLeads16(x, columnLead) || !tapsFollowLeads16(y, rowLead)) return false;
+  if (t.width < kSpan || !tapsFollowLeads16(x, columnLead) || !tapsFollowLeads16(y, rowLead)) return false;
   // The window: the lowest first texel along each axis (left moved in so that 8 texels fit).
   const int originX = std::min(_mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(x[0].i0, x[1].i0), x[2].i0)),
                                t.width - kSpan);
@@ -544,6 +537,26 @@ template <bool InPlaceX, bool InPlaceY>
   return true;
 }
 
+// blendHalfSeparable16 for textureGrid3x3's taps (bloomGridTaps16), out of line: the
+// upsample pays one call a block, and the downsample, which never takes this path, carries
+// none of its code.
+[[gnu::noinline]] inline bool blendHalfGridSeparable16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
+                                                       simd::Float8x2 (&taps)[9][4]) {
+  LinearTaps16 x[3], y[3];
+  bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
+  return blendHalfSeparable16(t, x, y, taps);
+}
+
+// Whether blendHalfGridSeparable16 may take a grid, from two lanes' centre coordinates: the
+// block's first and last columns (lanes 0 and 5) at most 3 texels apart, and its first and
+// last rows (lanes 0 and 10). A block that spreads wider (the downsample's grid, 10 texels a
+// block) does not fit 8 texels; this spares it the call. Only a shortcut: the call checks.
+[[gnu::always_inline]] inline bool mayBeSeparable16(const Texture& t, __m512 s, __m512 tc) {
+  const float s0 = _mm512_cvtss_f32(s), s5 = _mm_cvtss_f32(_mm_movehdup_ps(_mm512_extractf32x4_ps(s, 1)));
+  const float t0 = _mm512_cvtss_f32(tc), t10 = _mm_cvtss_f32(_mm_movehl_ps(_mm512_extractf32x4_ps(tc, 2), _mm512_extractf32x4_ps(tc, 2)));
+  return std::fabs(s5 - s0) * float(t.width) <= 3.0f && std::fabs(t10 - t0) * float(t.height) <= 3.0f;
+}
+
 // textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's nine 2x2
 // footprints lie in one 4x4 window of texels inside the texture. Usually tap k spans window
 // texels k and k + 1 along both axes in every lane: each window row is then read with one
@@ -558,7 +571,6 @@ template <bool InPlaceX, bool InPlaceY>
                                                    simd::Float8x2 (&taps)[9][4]) {
   LinearTaps16 x[3], y[3];
   bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
-  if (blendHalfGridSeparable16(t, x, y, taps)) return true;
   // Where an axis's taps are consecutive, the window starts at tap 0's first texel along it.
   const bool inPlaceX = axisTapsAreConsecutive16(x, 3), inPlaceY = axisTapsAreConsecutive16(y, 3);
   const bool inPlace = inPlaceX && inPlaceY;

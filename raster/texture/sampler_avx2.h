@@ -163,6 +163,17 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
                                                       glm::vec2 step, glsl::vec4<simd::Float8x2> (&taps)[3][3]) {
 #if RASTER_ZMM_PAIRS
   if (isHalfBilinearClamp(texture)) {
+    if (mayBeSeparable16(texture, uv.x.v, uv.y.v)) {
+      // Planes of its own: handed the ones below, the call had cost the downsample 8%
+      // though it never takes this path (most likely as their address then escapes, and the
+      // compiler could no longer drop from blendHalfGrid16's code the taps and channels the
+      // shader never reads: the downsample reads 5 taps of 9, 3 channels of 4).
+      simd::Float8x2 lined[9][4];
+      if (blendHalfGridSeparable16(texture, uv.x.v, uv.y.v, step.x, step.y, lined)) {
+        for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {lined[k][0], lined[k][1], lined[k][2], lined[k][3]};
+        return;
+      }
+    }
     simd::Float8x2 planes[9][4];
     if (blendHalfGrid16(texture, uv.x.v, uv.y.v, step.x, step.y, planes)) {
       for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};

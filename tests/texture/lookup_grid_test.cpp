@@ -100,7 +100,8 @@ TEST_SUITE("texture") {
               counts.pickedColumns += shared && !inPlaceX && inPlaceY;   // a left or right edge
               counts.pickedBoth += shared && !inPlaceX && !inPlaceY;
               raster::simd::Float8x2 separablePlanes[9][4];
-              counts.separable += shared && raster::sampling::blendHalfGridSeparable16(tex, x, y, separablePlanes);
+              counts.separable += shared && raster::sampling::mayBeSeparable16(tex, s, t) &&
+                                  raster::sampling::blendHalfGridSeparable16(tex, s, t, step.x, step.y, separablePlanes);
             }
 #endif
             for (int j = 0; j < 3; ++j)

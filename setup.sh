@@ -27,14 +27,15 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-# With GCC the build is profile-guided (CMakeLists.txt, RASTER_PGO_*): an instrumented
-# build renders each scene at two sizes and two times, and once more per size with the
-# `fast` method set (whose paths, never run in training, had been laid out as cold code:
-# shadow with `--preset fast` read 13-25% slower than without a profile), and the release
-# build is compiled by those counts. The profile is made again only when a source it was
-# made from has changed.
-pgo=() renewed=0
-if "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
+# RASTER_PGO=1 makes the build profile-guided (GCC; CMakeLists.txt, RASTER_PGO_*): an
+# instrumented build renders each scene at two sizes and two times, and once more per size
+# with the `fast` method set (whose paths, never run in training, had been laid out as cold
+# code), and the release build is compiled by those counts. The profile is made again only
+# when a source it was made from has changed. Not the default: on the AMD EPYC Zen 4 host
+# the plain build ran every scene as fast or faster (BENCHMARKS.md, "The profile-guided
+# build, measured again": shadow and deferred 4-7% faster without it at 640x480).
+pgo=(-DRASTER_PGO_USE=) renewed=0
+if [ "${RASTER_PGO:-0}" = 1 ] && "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
   profile="$PWD/build-pgo/profile"
   sources=$(find raster scenes shaders_cpp apps cmake CMakeLists.txt setup.sh -type f | LC_ALL=C sort | xargs sha256sum | sha256sum)
   if [ "$(cat "$profile.sources" 2>/dev/null)" != "$sources" ]; then

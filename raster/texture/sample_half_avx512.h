@@ -1,7 +1,8 @@
 // Lookups of RGBA16F textures for Float8x2 lanes held in one 512-bit register, sixteen lanes
 // at a time: NEAREST (the G-buffer reads of SSAO and lighting), bilinear with
 // CLAMP_TO_EDGE (the hdr composite and bright pass) and the 3x3 grid of such lookups (the
-// bloom downsample and upsample). Inline, so that a port's lookup costs
+// bloom downsample and upsample; the upsample's separable form, which blends each texel row
+// once per block column, is in sample_half_separable_avx512.h). Inline, so that a port's lookup costs
 // no call and the shader's compiler drops the channels it never reads (SSAO uses xyz); with
 // the lookups of sample_color_avx2.cpp the SSAO pass took 13% longer. The wraps, blends and
 // the F16C conversion are the 8-lane sampler's (sample_color_avx2.cpp) on 16 lanes at once,
@@ -436,125 +437,6 @@ template <bool InPlaceX, bool InPlaceY>
       }
     }
   }
-}
-
-// Whether every lane's taps along an axis (texel and weight) are those of lane lead[lane].
-[[gnu::always_inline]] inline bool tapsFollowLeads16(const LinearTaps16 (&taps)[3], __m512i lead) {
-  __mmask16 same = 0xFFFF;
-  for (const LinearTaps16& tap : taps) {
-    const __m512i weight = _mm512_castps_si512(tap.weight);
-    same &= _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(lead, tap.i0), tap.i0) &
-            _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(lead, weight), weight);
-  }
-  return same == 0xFFFF;
-}
-
-// blendHalfGrid16 where each lane's taps along x are those of every lane in its block column
-// and its taps along y those of every lane in its block row, and the block's taps span at
-// most 8 texels along each axis: a full-screen pass whose coordinates follow the pixel grid
-// (the bloom upsample, reading a mip of half its size: 6x6 texels a block). Then each row
-// blend serves a whole block column: per texel row, the 4 columns x 3 taps are blended once
-// (three registers of [column 0 rgba | 1 | 2 | 3], their texels picked from the row's 8 with
-// two-source permutes), where the lane-by-lane path blends each of the 16 lanes' rows after
-// loading and transposing them per lane. Each tap row then blends two of those per block
-// row, and a transpose and one permute a channel put the lanes in place. Every lane's values
-// come from the same operations on the same texels as before: rows, then columns, the row's
-// weight broadcast over its channels. False (nothing written) where the taps do not line up so.
-[[gnu::always_inline]] inline bool blendHalfSeparable16(const Texture& t, const LinearTaps16 (&x)[3],
-                                                        const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
-  // The 4x4 block's lanes (lane_layout.h): lane L sits in block column ((L >> 2) & 1) * 2 +
-  // (L & 1) and block row ((L >> 1) & 1) + 2 * (L >> 3) (a flipped block swaps rows in
-  // pairs, which changes nothing here). Lanes 0, 1, 4 and 5 lead columns 0-3, lanes 0, 2, 8
-  // and 10 rows 0-3; columnLead[L] and rowLead[L] are L's.
-  const __m512i columnLead = _mm512_setr_epi32(0, 1, 0, 1, 4, 5, 4, 5, 0, 1, 0, 1, 4, 5, 4, 5);
-  const __m512i rowLead = _mm512_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2, 8, 8, 10, 10, 8, 8, 10, 10);
-  constexpr int kSpan = 8;   // texels along each axis
-  if (t.width < kSpan || !tapsFollowLeads16(x, columnLead) || !tapsFollowLeads16(y, rowLead)) return false;
-  // The window: the lowest first texel along each axis (left moved in so that 8 texels fit).
-  const int originX = std::min(_mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(x[0].i0, x[1].i0), x[2].i0)),
-                               t.width - kSpan);
-  const int originY = _mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(y[0].i0, y[1].i0), y[2].i0));
-  const int lastY = _mm512_reduce_max_epi32(_mm512_max_epi32(_mm512_max_epi32(y[0].i1, y[1].i1), y[2].i1));
-  const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
-  const __m512i last = _mm512_set1_epi32(kSpan - 1);
-  __mmask16 outside = 0;   // a second texel is never before the first (i1 >= i0 >= origin)
-  for (const LinearTaps16& tap : x) outside |= _mm512_cmpgt_epu32_mask(_mm512_sub_epi32(tap.i1, cornerX), last);
-  if (outside || lastY - originY >= kSpan) return false;
-  const int rows = lastY - originY + 1;
-
-  // Per tap column: the permute indices of its left and right texels and its weight, for
-  // [column 0 rgba | 1 | 2 | 3] (the column's lead lane's, each over four channels).
-  const __m512i spread = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 4, 4, 4, 4, 5, 5, 5, 5);
-  const __m512i channel = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
-  auto pickIndex = [&](__m512i texel) __attribute__((always_inline)) {
-    return _mm512_add_epi32(_mm512_slli_epi32(_mm512_permutexvar_epi32(spread, _mm512_sub_epi32(texel, cornerX)), 2),
-                            channel);
-  };
-  __m512i leftIndex[3], rightIndex[3];
-  __m512 weightX[3];
-  for (int i = 0; i < 3; ++i) {
-    leftIndex[i] = pickIndex(x[i].i0);
-    rightIndex[i] = pickIndex(x[i].i1);
-    weightX[i] = _mm512_permutexvar_ps(spread, x[i].weight);
-  }
-  // Row blends of every window row: rowBlend[row][tap column], [column 0 rgba | 1 | 2 | 3].
-  alignas(64) float rowBlend[kSpan][3][16];
-  const uint16_t* texels = t.half.data() + (size_t(originY) * size_t(t.width) + size_t(originX)) * 4;
-  for (int r = 0; r < rows; ++r) {
-    const uint16_t* row = texels + size_t(r) * size_t(t.width) * 4;
-    const __m512 low = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row)));        // texels 0-3
-    const __m512 high = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + 16)));  // 4-7
-    for (int i = 0; i < 3; ++i) {
-      const __m512 left = _mm512_permutex2var_ps(low, leftIndex[i], high);
-      const __m512 right = _mm512_permutex2var_ps(low, rightIndex[i], high);
-      _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left));
-    }
-  }
-  // Each block row's taps along y: its lead lane's (lanes 0, 2, 8, 10) window rows and weight.
-  alignas(64) int top[3][16], bottom[3][16];
-  alignas(64) float weightY[3][16];
-  for (int j = 0; j < 3; ++j) {
-    _mm512_store_si512(top[j], _mm512_sub_epi32(y[j].i0, cornerY));
-    _mm512_store_si512(bottom[j], _mm512_sub_epi32(y[j].i1, cornerY));
-    _mm512_store_ps(weightY[j], y[j].weight);
-  }
-  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes.
-  const __m512i toLanes = _mm512_setr_epi32(0, 4, 1, 5, 8, 12, 9, 13, 2, 6, 3, 7, 10, 14, 11, 15);
-  constexpr int kRowLeads[4] = {0, 2, 8, 10};
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
-      for (int r = 0; r < 4; ++r) {
-        const int lead = kRowLeads[r];
-        const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
-        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
-        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
-      }
-      simd::Float8x2 planes[4];
-      lanesToPlanes(blockRow, planes);
-      for (int c = 0; c < 4; ++c) taps[j * 3 + i][c] = simd::Float8x2(_mm512_permutexvar_ps(toLanes, planes[c].v));
-    }
-  return true;
-}
-
-// blendHalfSeparable16 for textureGrid3x3's taps (bloomGridTaps16), out of line: the
-// upsample pays one call a block, and the downsample, which never takes this path, carries
-// none of its code.
-[[gnu::noinline]] inline bool blendHalfGridSeparable16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
-                                                       simd::Float8x2 (&taps)[9][4]) {
-  LinearTaps16 x[3], y[3];
-  bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
-  return blendHalfSeparable16(t, x, y, taps);
-}
-
-// Whether blendHalfGridSeparable16 may take a grid, from two lanes' centre coordinates: the
-// block's first and last columns (lanes 0 and 5) at most 3 texels apart, and its first and
-// last rows (lanes 0 and 10). A block that spreads wider (the downsample's grid, 10 texels a
-// block) does not fit 8 texels; this spares it the call. Only a shortcut: the call checks.
-[[gnu::always_inline]] inline bool mayBeSeparable16(const Texture& t, __m512 s, __m512 tc) {
-  const float s0 = _mm512_cvtss_f32(s), s5 = _mm_cvtss_f32(_mm_movehdup_ps(_mm512_extractf32x4_ps(s, 1)));
-  const float t0 = _mm512_cvtss_f32(tc), t10 = _mm_cvtss_f32(_mm_movehl_ps(_mm512_extractf32x4_ps(tc, 2), _mm512_extractf32x4_ps(tc, 2)));
-  return std::fabs(s5 - s0) * float(t.width) <= 3.0f && std::fabs(t10 - t0) * float(t.height) <= 3.0f;
 }
 
 // textureGrid3x3 (sampler.h) for such a texture on 16 lanes, when every lane's nine 2x2

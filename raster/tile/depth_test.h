@@ -150,6 +150,23 @@ constexpr bool kDepthTestsInBlocks = false;
 template <class F>
 uint32_t depthTestBlock(const TileJob& job, const SetupTriangle& tri, int blockX, int blockY, uint32_t coverage);
 
+// depthTestBlock for the blocks of one triangle: made once per triangle, then called per
+// block. A lane type may keep what every block of the triangle shares (its z plane, the
+// buffer, the test) in registers (depth_test_avx512.h): read through the triangle and the
+// job instead, each block would load it again after the last block's stores to the buffer.
+template <class F>
+class BlockDepthTest {
+ public:
+  BlockDepthTest(const TileJob& job, const SetupTriangle& tri) : job_(job), tri_(tri) {}
+  uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
+    return depthTestBlock<F>(job_, tri_, blockX, blockY, coverage);
+  }
+
+ private:
+  const TileJob& job_;
+  const SetupTriangle& tri_;
+};
+
 }  // namespace raster
 
 #include "raster/tile/depth_test_avx2.h"

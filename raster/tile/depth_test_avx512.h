@@ -40,56 +40,88 @@ inline void splitRows(__m512i v, __m128i (&rows)[4]) {
 }
 
 // The depth test of one 4x4 block in memory-row order (lane row * 4 + col) instead of two
-// lane groups. Returns the pixels that pass (bit row * 4 + col).
+// lane groups, for the blocks of one triangle (BlockDepthTest, depth_test.h): its z plane,
+// the buffer and the test are held here, in registers across the blocks, as the buffer's
+// stores (through __m128i, which may alias anything) would make the compiler load them from
+// the triangle and the job again for every block. Returns the pixels that pass (bit row * 4
+// + col).
 template <>
-[[gnu::always_inline]] inline uint32_t depthTestBlock<simd::Float8>(const TileJob& job, const SetupTriangle& tri,
-                                                                  int blockX, int blockY, uint32_t coverage) {
-  const Framebuffer& fb = *job.framebuffer;
-  const RasterState& state = job.draws[tri.drawIndex].state;
-  if (!state.depthTest || !fb.depth) return coverage;
-  using simd::Float8x2;
-  const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
-  const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
-  const __m512i code = depthCodes16(clampDepth(fragmentDepth(tri, px, py)), fb.depth->format);
-  const bool lessEqual = state.depthFunc == DepthFunc::Lequal;
-  // The block's four memory rows, read whole and written back blended, as masked stores are
-  // slow. This case goes first, straight from memory to registers and back: through the
-  // row arrays below, GCC at -O2 kept the rows on the stack.
-  if (blockX + 4 <= fb.width && blockY + 4 <= fb.height) {
-    uint32_t* const first = fb.depth->depth.data() + size_t(blockY) * size_t(fb.width) + size_t(blockX);
-    const size_t stride = size_t(fb.width);
-    const auto row = [&](int r) { return reinterpret_cast<__m128i*>(first + size_t(r) * stride); };
-    const __m512i stored = joinRows({_mm_loadu_si128(row(0)), _mm_loadu_si128(row(1)), _mm_loadu_si128(row(2)),
-                                     _mm_loadu_si128(row(3))});
-    const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual);
-    // Written back even where no pixel passed (the same codes then): whether one did is a
-    // branch no predictor learns in the visibility pass, where half the blocks fail whole.
-    if (state.depthWrite) {
-      const __m512i blended = _mm512_mask_blend_epi32(pass, stored, code);
-      _mm_storeu_si128(row(0), _mm512_castsi512_si128(blended));
-      _mm_storeu_si128(row(1), _mm512_extracti32x4_epi32(blended, 1));
-      _mm_storeu_si128(row(2), _mm512_extracti32x4_epi32(blended, 2));
-      _mm_storeu_si128(row(3), _mm512_extracti32x4_epi32(blended, 3));
+class BlockDepthTest<simd::Float8> {
+ public:
+  BlockDepthTest(const TileJob& job, const SetupTriangle& tri)
+      : dadx_(tri.z.dadx), dady_(tri.z.dady), a0_(tri.z.a0), depthOffset_(tri.depthOffset) {
+    const Framebuffer& fb = *job.framebuffer;
+    const RasterState& state = job.draws[tri.drawIndex].state;
+    tests_ = state.depthTest && fb.depth;
+    if (!tests_) return;
+    buffer_ = fb.depth->depth.data();
+    format_ = fb.depth->format;
+    width_ = fb.width, height_ = fb.height;
+    lessEqual_ = state.depthFunc == DepthFunc::Lequal;
+    writes_ = state.depthWrite;
+  }
+
+  [[gnu::always_inline]] uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
+    if (!tests_) return coverage;
+    using simd::Float8x2;
+    const Float8x2 px(_mm512_add_ps(_mm512_set1_ps(float(blockX)), _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3)));
+    const Float8x2 py(_mm512_add_ps(_mm512_set1_ps(float(blockY)), _mm512_setr_ps(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3)));
+    // fragmentDepth and clampDepth, the same operations, less clampDepth's min(z, 1):
+    // fragmentDepth's z is already at most 1, and not NaN, so that min changes no bit.
+    const Float8x2 z = simd::min(simd::fma(dady_, py, simd::fma(dadx_, px, a0_)) + depthOffset_, Float8x2(1.0f));
+    const __m512i code = depthCodes16(simd::max(z, Float8x2(0.0f)), format_);
+    // The block's four memory rows, read whole and written back blended, as masked stores are
+    // slow. This case goes first, straight from memory to registers and back: through the
+    // row arrays below, GCC at -O2 kept the rows on the stack.
+    if (blockX + 4 <= width_ && blockY + 4 <= height_) {
+      uint32_t* const first = buffer_ + size_t(blockY) * size_t(width_) + size_t(blockX);
+      const size_t stride = size_t(width_);
+      const auto row = [&](int r) { return reinterpret_cast<__m128i*>(first + size_t(r) * stride); };
+      const __m512i stored = joinRows({_mm_loadu_si128(row(0)), _mm_loadu_si128(row(1)), _mm_loadu_si128(row(2)),
+                                       _mm_loadu_si128(row(3))});
+      const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual_);
+      // Written back even where no pixel passed (the same codes then): whether one did is a
+      // branch no predictor learns in the visibility pass, where half the blocks fail whole.
+      if (writes_) {
+        const __m512i blended = _mm512_mask_blend_epi32(pass, stored, code);
+        _mm_storeu_si128(row(0), _mm512_castsi512_si128(blended));
+        _mm_storeu_si128(row(1), _mm512_extracti32x4_epi32(blended, 1));
+        _mm_storeu_si128(row(2), _mm512_extracti32x4_epi32(blended, 2));
+        _mm_storeu_si128(row(3), _mm512_extracti32x4_epi32(blended, 3));
+      }
+      return pass;
+    }
+    // Where the block sticks out of the framebuffer, rows and pixels outside it (never
+    // covered) are neither read nor written.
+    uint32_t* rows[4];
+    __m128i rowCodes[4];
+    for (int r = 0; r < 4; ++r) {
+      const __mmask8 covered = __mmask8(coverage >> (4 * r) & 0xFu);
+      rows[r] = covered ? buffer_ + size_t(blockY + r) * size_t(width_) + size_t(blockX) : nullptr;
+      rowCodes[r] = covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
+    }
+    const __m512i stored = joinRows(rowCodes);
+    const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual_);
+    if (writes_ && pass) {
+      splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
+      for (int r = 0; r < 4; ++r)
+        if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
     }
     return pass;
   }
-  // Where the block sticks out of the framebuffer, rows and pixels outside it (never
-  // covered) are neither read nor written.
-  uint32_t* rows[4];
-  __m128i rowCodes[4];
-  for (int r = 0; r < 4; ++r) {
-    const __mmask8 covered = __mmask8(coverage >> (4 * r) & 0xFu);
-    rows[r] = covered ? fb.depth->depth.data() + size_t(blockY + r) * size_t(fb.width) + size_t(blockX) : nullptr;
-    rowCodes[r] = covered ? _mm_maskz_loadu_epi32(covered, rows[r]) : _mm_setzero_si128();
-  }
-  const __m512i stored = joinRows(rowCodes);
-  const __mmask16 pass = depthPasses16(__mmask16(coverage), code, stored, lessEqual);
-  if (state.depthWrite && pass) {
-    splitRows(_mm512_mask_blend_epi32(pass, stored, code), rowCodes);
-    for (int r = 0; r < 4; ++r)
-      if (rows[r]) _mm_mask_storeu_epi32(rows[r], __mmask8(pass >> (4 * r) & 0xFu), rowCodes[r]);
-  }
-  return pass;
+
+ private:
+  const simd::Float8x2 dadx_, dady_, a0_, depthOffset_;   // the z plane, broadcast
+  bool tests_ = false, lessEqual_ = false, writes_ = false;
+  uint32_t* buffer_ = nullptr;
+  TexelFormat format_ = TexelFormat::Depth16;
+  int width_ = 0, height_ = 0;
+};
+
+template <>
+[[gnu::always_inline]] inline uint32_t depthTestBlock<simd::Float8>(const TileJob& job, const SetupTriangle& tri,
+                                                                  int blockX, int blockY, uint32_t coverage) {
+  return BlockDepthTest<simd::Float8>(job, tri)(blockX, blockY, coverage);
 }
 
 // depthOnlyRegion (depth_test.h) a 16-pixel region row at a time: its codes, test and

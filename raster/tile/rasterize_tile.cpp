@@ -43,10 +43,11 @@ template <class F>
         });
         continue;
       }
+      const BlockDepthTest<F> depthTest(job, tri);
       walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
         constexpr uint32_t kWholeBlock = 0xFFFFu;
         const bool whole = coverage == kWholeBlock;
-        const uint32_t passed = whole ? depthTestBlock<F>(job, tri, blockX, blockY, coverage) : 0u;
+        const uint32_t passed = whole ? depthTest(blockX, blockY, coverage) : 0u;
         if (passed == kWholeBlock) {
           shader.flush();
           shadeBlockWhole(job, tri, layout, blockX, blockY, counters);

@@ -28,7 +28,9 @@
 namespace raster {
 
 // Per-pixel triangle indices of one tile, kept per lane group: a group's entries are valid
-// once it is marked (bit: group column, per pair of rows).
+// once it is marked (bit: group column, per pair of rows). Stored a 4x4 block at a time,
+// each block's 16 entries (row * 4 + col) in one 64-byte line: a block is marked, and read
+// whole, with one load and one store, and a group of two rows is half of one.
 template <class F>
 class TileTriangles {
  public:
@@ -47,9 +49,11 @@ class TileTriangles {
 
   // Lanes `passed` of the group at tile offset (lx, ly) now show triangle `index`.
   void mark(int lx, int ly, unsigned passed, uint32_t index) {
-    uint32_t* at = entries_ + ly * kTile + lx;
     markGroup(lx, ly, passed != 0);
-    for (; passed; passed &= passed - 1) at[local_.texel[__builtin_ctz(passed)]] = index;
+    for (; passed; passed &= passed - 1) {
+      const int lane = __builtin_ctz(passed);
+      entries_[entryIndex(lx + local_.dx[lane], ly + local_.dy[lane])] = index;
+    }
   }
 
   // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
@@ -69,11 +73,10 @@ class TileTriangles {
     for (int row = 0; row < kTile / 2; ++row) {
       for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
         const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
-        const uint32_t* at = entries_ + ly * kTile + lx;
         uint32_t lanes[kLanes];
         unsigned remaining = 0;
         for (int i = 0; i < kLanes; ++i) {
-          lanes[i] = at[local_.texel[i]];
+          lanes[i] = entries_[entryIndex(lx + local_.dx[i], ly + local_.dy[i])];
           if (lanes[i] != kNone) remaining |= 1u << i;
         }
         while (remaining) {
@@ -89,6 +92,12 @@ class TileTriangles {
   }
 
  private:
+  static constexpr int kBlock = limits::kBlockSize;
+  // Where pixel (x, y) of the tile keeps its entry: its block's line, then row * 4 + col.
+  static int entryIndex(int x, int y) {
+    return ((y / kBlock) * (kTile / kBlock) + x / kBlock) * (kBlock * kBlock) + (y % kBlock) * kBlock + x % kBlock;
+  }
+
   // Marks the group at (lx, ly) as holding entries when `any`: an or, not a branch, since
   // half the visibility pass's blocks fail their depth test whole, in no pattern a branch
   // predictor can learn.
@@ -96,7 +105,7 @@ class TileTriangles {
 
   const LaneLayout<F> local_;   // lane offsets within the tile
   const bool flipY_;
-  alignas(32) uint32_t entries_[kTile * kTile];
+  alignas(64) uint32_t entries_[kTile * kTile];
   uint32_t marked_[kTile / 2] = {};
 };
 
@@ -164,8 +173,9 @@ void rasterizeVisibleFirst(const TileJob& job, const TileBounds& tile, std::span
     for (uint32_t index : bin) {
       const SetupTriangle& tri = job.triangles[index];
       const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
+      const BlockDepthTest<F> depthTest(job, tri);
       walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
-        const uint32_t passed = depthTestBlock<F>(job, tri, blockX, blockY, coverage);
+        const uint32_t passed = depthTest(blockX, blockY, coverage);
         if (writesColor) shown.markBlock(blockX - tile.x0, blockY - tile.y0, passed, index);
       });
     }

@@ -1,6 +1,7 @@
-// TileTriangles for Float8 groups (visible_first.h): a group's two rows of 4 entries marked
-// and read in one register each way, and (AVX-512) a 4x4 block's pixels marked from its
-// depth test's mask. Same entries as the reference.
+// TileTriangles for Float8 groups (visible_first.h): a group's two rows of 4 entries, 8
+// entries of its block's line, marked and read in one register each way, and (AVX-512) a
+// 4x4 block's pixels marked from its depth test's mask with one load, blend and store. Same
+// entries as the reference.
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -12,45 +13,35 @@ namespace raster {
 
 template <>
 inline void TileTriangles<simd::Float8>::mark(int lx, int ly, unsigned passed, uint32_t index) {
-  uint32_t* at = entries_ + ly * kTile + lx;
+  __m256i* at = reinterpret_cast<__m256i*>(entries_ + entryIndex(lx, ly));
   markGroup(lx, ly, passed != 0);
   // The group's two rows of four, read, blended, written.
-  __m128i* top = reinterpret_cast<__m128i*>(at);
-  __m128i* bottom = reinterpret_cast<__m128i*>(at + kTile);
-  const __m256i old = _mm256_setr_m128i(_mm_loadu_si128(top), _mm_loadu_si128(bottom));
+  const __m256i old = _mm256_load_si256(at);
   const __m256i lanes = _mm256_castps_si256(simd::Mask8::fromBits(passed).v);
   const __m256i rows = _mm256_permutevar8x32_epi32(lanes, simd::quadLanesToRows(flipY_));
-  const __m256i merged = _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows);
-  _mm_storeu_si128(top, _mm256_castsi256_si128(merged));
-  _mm_storeu_si128(bottom, _mm256_extracti128_si256(merged, 1));
+  _mm256_store_si256(at, _mm256_blendv_epi8(old, _mm256_set1_epi32(int(index)), rows));
 }
 
 #if RASTER_ZMM_PAIRS
 template <>
 inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
-  // mark() for the block's upper group and its lower one, in memory rows, without a branch:
-  // a block none of whose pixels passed writes its rows back as they were.
+  // mark() for the block's upper group and its lower one, without a branch: a block none of
+  // whose pixels passed writes its line back as it was (read, blended and written: masked
+  // stores are slow).
   for (int half = 0; half < 2; ++half) markGroup(lx, ly + 2 * half, (passed >> (8 * half) & 0xFFu) != 0);
-  for (int r = 0; r < 4; ++r) {
-    uint32_t* at = entries_ + (ly + r) * kTile + lx;
-    const __mmask8 row = __mmask8(passed >> (4 * r) & 0xFu);
-    // A row the tile owns whole: read, blended and written back (masked stores are slow).
-    const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(at));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(at), _mm_mask_blend_epi32(row, before, _mm_set1_epi32(int(index))));
-  }
+  __m512i* at = reinterpret_cast<__m512i*>(entries_ + entryIndex(lx, ly));
+  _mm512_store_si512(at, _mm512_mask_blend_epi32(__mmask16(passed), _mm512_load_si512(at), _mm512_set1_epi32(int(index))));
 }
 #endif
 
 namespace visible_first_detail {
 
-// One Float8 group's entries, its two memory rows from `at` (a tile row apart): shade(lx,
-// ly, index, laneMask) once per triangle they name, the lanes in quad order.
+// One Float8 group's entries, its two rows of four from `at`: shade(lx, ly, index,
+// laneMask) once per triangle they name, the lanes in quad order.
 template <class Shade>
-[[gnu::always_inline]] inline void visitGroup(const uint32_t* at, int tileWidth, __m256i toLanes, int lx, int ly,
-                                              Shade&& shade) {
+[[gnu::always_inline]] inline void visitGroup(const uint32_t* at, __m256i toLanes, int lx, int ly, Shade&& shade) {
   alignas(32) uint32_t lanes[8];
-  const __m256i rows = _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
-                                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + tileWidth)));
+  const __m256i rows = _mm256_load_si256(reinterpret_cast<const __m256i*>(at));
   const __m256i v = _mm256_permutevar8x32_epi32(rows, toLanes);
   _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
   const __m256i none = _mm256_cmpeq_epi32(v, _mm256_set1_epi32(-1));
@@ -73,7 +64,7 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
   for (int row = 0; row < kTile / 2; ++row) {
     for (uint32_t bits = marked_[row]; bits; bits &= bits - 1) {
       const int lx = __builtin_ctz(bits) * kGroupWidth, ly = row * 2;
-      visible_first_detail::visitGroup(entries_ + ly * kTile + lx, kTile, toLanes, lx, ly, shade);
+      visible_first_detail::visitGroup(entries_ + entryIndex(lx, ly), toLanes, lx, ly, shade);
     }
   }
 }
@@ -90,18 +81,13 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) c
       const uint32_t bit = bits & (0u - bits);
       const int lx = __builtin_ctz(bits) * kGroupWidth;
       if (upper & lower & bit) {   // both groups marked: does one triangle show in all 16?
-        const uint32_t* at = entries_ + ly * kTile + lx;
-        const __m512i block = _mm512_inserti64x4(
-            _mm512_castsi256_si512(_mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)),
-                                                     _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + kTile)))),
-            _mm256_setr_m128i(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at + 2 * kTile)),
-                              _mm_loadu_si128(reinterpret_cast<const __m128i*>(at + 3 * kTile))),
-            1);
+        const uint32_t* at = entries_ + entryIndex(lx, ly);
+        const __m512i block = _mm512_load_si512(at);
         if (at[0] != kNone && _mm512_cmpneq_epi32_mask(block, _mm512_set1_epi32(int(at[0]))) == 0 && whole(lx, ly, at[0]))
           continue;
       }
-      if (upper & bit) visible_first_detail::visitGroup(entries_ + ly * kTile + lx, kTile, toLanes, lx, ly, shade);
-      if (lower & bit) visible_first_detail::visitGroup(entries_ + (ly + 2) * kTile + lx, kTile, toLanes, lx, ly + 2, shade);
+      if (upper & bit) visible_first_detail::visitGroup(entries_ + entryIndex(lx, ly), toLanes, lx, ly, shade);
+      if (lower & bit) visible_first_detail::visitGroup(entries_ + entryIndex(lx, ly + 2), toLanes, lx, ly + 2, shade);
     }
   }
 }

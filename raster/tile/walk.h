@@ -112,8 +112,9 @@ template <class F, class Passed>
     const bool writesColor = colorOutputsWritten(job.draws[tri.drawIndex], *job.framebuffer) > 0;
     if constexpr (kDepthTestsInBlocks<F>) {
       if (!writesColor) {   // depth only: no quads needed
+        const BlockDepthTest<F> depthTest(job, tri);
         walkTriangleBlocks<F>(job, tri, tile, [&](int blockX, int blockY, uint32_t coverage) __attribute__((always_inline)) {
-          depthTestBlock<F>(job, tri, blockX, blockY, coverage);
+          depthTest(blockX, blockY, coverage);
         });
         continue;
       }

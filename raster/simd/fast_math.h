@@ -143,6 +143,26 @@ template <class F>
   return fmaF(fmaF(fmaF(F(sign * kAcosC3), a, F(sign * kAcosC2)), a, F(sign * kAcosC1)), a, F(sign * kAcosC0));
 }
 
+// exp2's polynomial, 2^f for f in [0, 1) (see kExp2C1).
+template <class F>
+[[gnu::always_inline]] inline F exp2Polynomial(F fraction) {
+  using namespace detail;
+  return fmaF(fmaF(fmaF(F(kExp2C3), fraction, F(kExp2C2)), fraction, F(kExp2C1)), fraction, F(1.0f));
+}
+
+// log2 without its edge cases: e + f * r(f) from the bits (see kLog2R0 and fast::log2), for
+// a positive normal x (at 0, -127; other non-normal x give values fast::log2 replaces).
+template <class F>
+[[gnu::always_inline]] inline F log2Core(F x) {
+  using namespace detail;
+  using U = UOf<F>;
+  const U shifted = asBits(x) + U(kLog2Offset);
+  const F exponent = cvt((shifted >> 23) - U(127u));
+  const F f = asFloat((shifted & U(0x007fffffu)) + U(kSqrtHalfBits)) - F(1.0f);   // exact
+  const F r = fmaF(fmaF(fmaF(fmaF(F(kLog2R4), f, F(kLog2R3)), f, F(kLog2R2)), f, F(kLog2R1)), f, F(kLog2R0));
+  return fmaF(f, r, exponent);
+}
+
 }  // namespace impl
 
 // exp2(x) = 2^floor(x) * P(x - floor(x)); 2^floor(x) built in the exponent field.
@@ -154,14 +174,11 @@ template <class F>
 template <class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F exp2(F x) {
   using namespace detail;
-  using namespace impl;
   using U = UOf<F>;
   x = maxps(F(-127.0f), minps(F(128.0f), x));
   const F whole = floorF(x);
-  const F fraction = x - whole;   // [0, 1), exact
   const F powerOfTwo = asFloat((cvtt(whole) + U(127u)) << 23);
-  const F p = fmaF(fmaF(fmaF(F(kExp2C3), fraction, F(kExp2C2)), fraction, F(kExp2C1)), fraction, F(1.0f));
-  return powerOfTwo * p;
+  return powerOfTwo * impl::exp2Polynomial(x - whole);   // the fraction: [0, 1), exact
 }
 
 // log2(x) = e + f * r(f), x = 2^e * (1 + f) with 1 + f in [sqrt(1/2), sqrt(2)), read from the
@@ -176,12 +193,7 @@ template <class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F log2(F x) {
   using namespace detail;
   using namespace impl;
-  using U = UOf<F>;
-  const U shifted = asBits(x) + U(kLog2Offset);
-  const F exponent = cvt((shifted >> 23) - U(127u));
-  const F f = asFloat((shifted & U(0x007fffffu)) + U(kSqrtHalfBits)) - F(1.0f);   // exact
-  const F r = fmaF(fmaF(fmaF(fmaF(F(kLog2R4), f, F(kLog2R3)), f, F(kLog2R2)), f, F(kLog2R1)), f, F(kLog2R0));
-  F result = fmaF(f, r, exponent);
+  F result = log2Core(x);
   result = sel(x < F(kSmallestNormal), sel(x < F(0.0f), F(kNaN), F(-kInf)), result);
   return sel(x < F(kInf), result, x);
 }
@@ -197,6 +209,29 @@ template <class F> requires detail::LaneType<F>
 template <class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F pow(F x, F y) {
   return fast::exp2(fast::log2(x) * y);
+}
+
+// pow(x, Y) for a literal exponent (glsl::pow<Y>): pow(x, F(Y)), bit for bit, with fewer
+// operations where 0 < |Y| <= 0.98 (the hdr composite's gamma, 1 / 2.2) and every lane's x is
+// +-0 or a positive normal float (detail::powBaseIsPlain). There log2's edge cases do not
+// occur but at zero; log2Core of a positive normal x lies in [-126.5, 128.5], so its
+// product with Y in (-126, 126): exp2's clamps change nothing, floor is in [-126, 125] and
+// the polynomial in [1, 2), so 2^floor * P is P with its exponent moved, rounding nothing
+// (detail::scaleByPowerOfTwo: one vscalefps with AVX-512). A zero x gives exp2's value at its clamp: +0 for Y > 0, +inf
+// for Y < 0. The composite with `--preset fast` had been slower than with `gl`, whose
+// exact pow takes the same shortcut (gl_math.h, powConstImpl).
+template <float Y, class F> requires detail::LaneType<F>
+[[gnu::always_inline]] inline F powConst(F x) {
+  if constexpr (Y != 0.0f && Y >= -0.98f && Y <= 0.98f) {
+    using namespace detail;
+    if (powBaseIsPlain(x)) {
+      const F t = impl::log2Core(x) * F(Y);
+      const F whole = floorF(t);
+      const F scaled = scaleByPowerOfTwo(impl::exp2Polynomial(t - whole), whole);
+      return sel(x == F(0.0f), F(Y > 0.0f ? 0.0f : impl::kInf), scaled);
+    }
+  }
+  return fast::pow(x, F(Y));
 }
 
 // sin(x): reduction by pi/2 to |r| <= pi/4 (impl::sinQuadrant), then r + r^3 (s3 + s5 r^2)

@@ -539,7 +539,12 @@ template <float Y, class F> requires detail::LaneType<F>
     const F squared = detail::daz(x * x);
     return detail::daz(squared * squared);
   } else {
-    RASTER_MATH_METHOD(detail::powConstImpl<Y>(x), pow(x, F(Y)));
+    switch (methods::active().math) {
+      case MathMethod::Fast: return fast::powConst<Y>(x);   // fast::pow(x, F(Y)), shortened
+      case MathMethod::Libm: return libm::pow(x, F(Y));
+      case MathMethod::Llvmpipe: break;
+    }
+    return detail::powConstImpl<Y>(x);
   }
 }
 #undef RASTER_MATH_METHOD

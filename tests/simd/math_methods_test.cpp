@@ -362,6 +362,58 @@ TEST_SUITE("math_methods") {
     CHECK(libm::exp2(-140.0f) == 0x1p-140f);   // denormal results are kept
   }
 
+  // fast::powConst<Y> (glsl::pow<Y> with `math=fast`) against fast::pow(x, Y), on groups of 16
+  // arguments whose every lane is +-0 or a positive normal float (its shortcut, where 0 < |Y|
+  // <= 0.98), and on groups with one other lane (denormal, negative, infinite, NaN: the full
+  // function). Returns how many lanes of every lane type differ in their bits.
+  template <float Y>
+  size_t powConstMismatches() {
+    using raster::simd::Lanes;
+    using L8 = Lanes<8>;
+    std::mt19937 rng(1234);
+    std::uniform_real_distribution<float> exponent(-126.0f, 127.99f);
+    const float others[] = {1e-40f, -1e-45f, -0.0f, -2.0f, -FLT_MAX, kInf, -kInf, kNaN};
+    const float plain[] = {0.0f, -0.0f, FLT_MIN, FLT_MAX, 1.0f, 0.5f};
+    size_t mismatches = 0;
+    const auto check = [&](float got, float expected) {
+      if (!sameBits(got, expected) && !(std::isnan(got) && std::isnan(expected))) ++mismatches;
+    };
+    for (int group = 0; group < 20000; ++group) {
+      alignas(64) float xs[16];
+      for (float& x : xs) x = rng() % 8u == 0 ? plain[rng() % 6u] : std::exp2(exponent(rng));
+      if (group % 4 == 3) xs[rng() % 16u] = others[rng() % 8u];
+      float expected[16];
+      for (int l = 0; l < 16; ++l) {
+        expected[l] = fast::pow(xs[l], Y);
+        check(fast::powConst<Y>(xs[l]), expected[l]);
+      }
+      alignas(64) float out[16];
+      fast::powConst<Y>(L8::load(xs)).store(out);
+      fast::powConst<Y>(L8::load(xs + 8)).store(out + 8);
+      for (int l = 0; l < 16; ++l) check(out[l], expected[l]);
+#if RASTER_AVX2
+      using raster::simd::Float8;
+      using raster::simd::Float8x2;
+      fast::powConst<Y>(Float8::load(xs)).store(out);
+      fast::powConst<Y>(Float8::load(xs + 8)).store(out + 8);
+      for (int l = 0; l < 16; ++l) check(out[l], expected[l]);
+      fast::powConst<Y>(Float8x2::load(xs)).store(out);
+      for (int l = 0; l < 16; ++l) check(out[l], expected[l]);
+#endif
+    }
+    return mismatches;
+  }
+
+  TEST_CASE("fast: pow with a literal exponent gives pow(x, Y)'s bits, with or without its shortcut") {
+    CHECK(powConstMismatches<1.0f / 2.2f>() == 0);   // the hdr composite's gamma
+    CHECK(powConstMismatches<0.98f>() == 0);
+    CHECK(powConstMismatches<0.01f>() == 0);
+    CHECK(powConstMismatches<-0.5f>() == 0);
+    CHECK(powConstMismatches<-0.98f>() == 0);
+    CHECK(powConstMismatches<0.99f>() == 0);   // beyond the shortcut: fast::pow itself
+    CHECK(powConstMismatches<2.5f>() == 0);
+  }
+
   TEST_CASE("fast and libm: float, Lanes<8>, Float8 and Float8x2 give the same bits") {
     using raster::simd::Lanes;
     using L8 = Lanes<8>;

@@ -217,9 +217,9 @@ template <class F> requires detail::LaneType<F>
 // occur but at zero; log2Core of a positive normal x lies in [-126.5, 128.5], so its
 // product with Y in (-126, 126): exp2's clamps change nothing, floor is in [-126, 125] and
 // the polynomial in [1, 2), so 2^floor * P is P with its exponent moved, rounding nothing
-// (detail::scaleByPowerOfTwo: one vscalefps with AVX-512). A zero x gives exp2's value at its clamp: +0 for Y > 0, +inf
-// for Y < 0. The composite with `--preset fast` had been slower than with `gl`, whose
-// exact pow takes the same shortcut (gl_math.h, powConstImpl).
+// (detail::scaleByPowerOfTwo: one vscalefps with AVX-512). A zero x gives exp2's value at
+// its clamp: +0 for Y > 0, +inf for Y < 0. The composite with `--preset fast` had been
+// slower than with `gl`, whose exact pow takes the same shortcut (gl_math.h, powConstImpl).
 template <float Y, class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F powConst(F x) {
   if constexpr (Y != 0.0f && Y >= -0.98f && Y <= 0.98f) {

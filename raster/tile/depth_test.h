@@ -124,7 +124,7 @@ void storeDepthCodes(const SetupTriangle& tri, Texture& depth, int width, const 
 
 // A depth-only draw over a 16x16 region inside the framebuffer that its triangle straddles
 // (some pixel centres inside, some not) or covers: each covered pixel tested and written as
-// depthTestBlock would, in memory rows instead of blocks. `pendingClear`, when given, is
+// BlockDepthTest would, in memory rows instead of blocks. `pendingClear`, when given, is
 // the code of a depth clear the region has not taken yet: the test reads it in place of the
 // stored codes, and every row of the region is written, covered or not. Returns false
 // where the lane type has no such form (kDepthRowsInRegions) or an edge's steps are not
@@ -144,28 +144,13 @@ bool depthOnlyStraddledRegion(const SetupTriangle&, const RasterState&, Texture&
 template <class F>
 constexpr bool kDepthTestsInBlocks = false;
 
-// That test: the pixels `coverage` (bit row * 4 + col) of the 4x4 block at (blockX, blockY)
-// tested and written, each as depthTestGroup would; returns those that pass. Defined for the
-// lane types with kDepthTestsInBlocks.
+// That test, for the blocks of one triangle: made once per triangle, then called per block,
+// blockTest(blockX, blockY, coverage) tests and writes the pixels `coverage` (bit row * 4 +
+// col) of the 4x4 block at (blockX, blockY), each as depthTestGroup would, and returns those
+// that pass. Defined for the lane types with kDepthTestsInBlocks (depth_test_avx512.h, which
+// keeps the triangle's z plane, the buffer and the test in registers across its blocks).
 template <class F>
-uint32_t depthTestBlock(const TileJob& job, const SetupTriangle& tri, int blockX, int blockY, uint32_t coverage);
-
-// depthTestBlock for the blocks of one triangle: made once per triangle, then called per
-// block. A lane type may keep what every block of the triangle shares (its z plane, the
-// buffer, the test) in registers (depth_test_avx512.h): read through the triangle and the
-// job instead, each block would load it again after the last block's stores to the buffer.
-template <class F>
-class BlockDepthTest {
- public:
-  BlockDepthTest(const TileJob& job, const SetupTriangle& tri) : job_(job), tri_(tri) {}
-  uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
-    return depthTestBlock<F>(job_, tri_, blockX, blockY, coverage);
-  }
-
- private:
-  const TileJob& job_;
-  const SetupTriangle& tri_;
-};
+class BlockDepthTest;
 
 }  // namespace raster
 

@@ -118,14 +118,8 @@ class BlockDepthTest<simd::Float8> {
   int width_ = 0, height_ = 0;
 };
 
-template <>
-[[gnu::always_inline]] inline uint32_t depthTestBlock<simd::Float8>(const TileJob& job, const SetupTriangle& tri,
-                                                                  int blockX, int blockY, uint32_t coverage) {
-  return BlockDepthTest<simd::Float8>(job, tri)(blockX, blockY, coverage);
-}
-
 // depthOnlyRegion (depth_test.h) a 16-pixel region row at a time: its codes, test and
-// write in one register each, as depthTestBlock makes them.
+// write in one register each, as BlockDepthTest makes them.
 template <>
 [[gnu::noinline]] inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth,
                                                            int width, int x, int y) {
@@ -197,7 +191,7 @@ template <>
 }
 
 // storeDepthCodes (depth_test.h) sixteen pixels of a row at a time, each code computed as
-// depthTestBlock computes it (the pixels are exact small integers in any lane) and stored
+// BlockDepthTest computes it (the pixels are exact small integers in any lane) and stored
 // straight from its register: the 8-lane form went through the stack and a copy.
 template <>
 inline void storeDepthCodes<simd::Float8>(const SetupTriangle& tri, Texture& depth, int width, const TileBounds& rect) {

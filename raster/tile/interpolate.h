@@ -39,11 +39,15 @@ template <class F>
   // Varyings: a = fma(dady, y, fma(dadx, x, a0)) * (1 / w), w from the 1/w plane. The
   // method set (methods.h) may ask for an approximate 1 / w (div=approx), or for
   // screen-linear varyings (interp=affine: setup made planes of the plain values).
+  // A triangle whose vertices all have w = 1 (a post pass's fullscreen triangle, a 2D
+  // draw) has the 1/w plane (1, 0, 0): w is 1 at every lane, and so are 1 / w and both
+  // methods' reciprocal of it, and a product with 1 changes no bit, so they are skipped.
   const MethodSet& methodSet = methods::active();
-  const F w = evaluatePlane(tri.w, px, py);
+  const bool unitW = tri.w.a0 == 1.0f && tri.w.dadx == 0.0f && tri.w.dady == 0.0f;
+  const F w = unitW ? F(1.0f) : evaluatePlane(tri.w, px, py);
   const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
   const Plane* planes = job.varyingPlanes.data() + tri.varyingBase;
-  if (methodSet.interp == InterpMethod::Affine) {
+  if (methodSet.interp == InterpMethod::Affine || unitW) {
     for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py);
   } else {
     const F oow = methodSet.div == DivMethod::Approx ? glsl::reciprocalApprox(w) : F(1.0f) / w;

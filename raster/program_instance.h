@@ -10,6 +10,7 @@
 #include "raster/geometry/vertex_stage.h"
 #include "raster/shader/program.h"
 #include "raster/shader/shader_instance.h"
+#include "raster/tile/covered_tile.h"
 
 namespace raster {
 
@@ -42,6 +43,12 @@ class ProgramInstance final : public ShaderInstance {
                       FragmentOutput<PairedLanes>& out) const override {
     shade(in, varyings, out);
   }
+  void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                      const LaneLayout<FastLanes>& layout, PipelineCounters& counters) const override {
+    shadeTileWholeWith(job, tile, tri, layout, counters,
+                       [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
+                              FragmentOutput<PairedLanes>& out) __attribute__((always_inline)) { shade(in, varyings, out); });
+  }
 #endif
 
  private:
@@ -63,7 +70,7 @@ class ProgramInstance final : public ShaderInstance {
     }
   }
   template <class F>
-  void shade(const FragmentInput<F>& in, const F* varyings, FragmentOutput<F>& out) const {
+  [[gnu::always_inline]] void shade(const FragmentInput<F>& in, const F* varyings, FragmentOutput<F>& out) const {
     Program::fragment(uniforms_, in, varyingsFromArray<Program, F>(varyings), out);
   }
   typename Program::Uniforms uniforms_;

@@ -10,6 +10,9 @@
 
 namespace raster {
 
+template <class F>
+struct LaneLayout;   // tile/lane_layout.h
+
 class ShaderInstance {
  public:
   virtual ~ShaderInstance() = default;
@@ -35,6 +38,11 @@ class ShaderInstance {
 #if RASTER_AVX2
   virtual void shadeFragments(const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
                               FragmentOutput<PairedLanes>& out) const = 0;
+  // Shades and merges a tile that `tri` covers whole, every fragment passing its depth test
+  // (tile/covered_tile.h, shadeTileWhole): the covered-tile loop instantiated for this
+  // program, calling its fragment shader directly: one virtual call a tile, not one a block.
+  virtual void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                              const LaneLayout<FastLanes>& layout, PipelineCounters& counters) const = 0;
 #endif
 };
 

@@ -79,6 +79,14 @@ TEST_SUITE("simd") {
     }
   }
 
+  TEST_CASE("div=approx: the reciprocal of 1 is exactly 1") {
+    // Interpolation leaves out the 1/w of a triangle whose w is 1 at every vertex (a
+    // fullscreen pass's, tile/interpolate.h), a product with 1 either way: that keeps
+    // --preset fast's bytes only while this reciprocal lands on 1.0 exactly.
+    CHECK(bitsOf(reciprocalApprox(1.0f)) == bitsOf(1.0f));
+    CHECK(bitsOf(reciprocalApprox(Plain(1.0f)).lane[7]) == bitsOf(1.0f));
+  }
+
   TEST_CASE("div: normalize follows the method set; exact is llvmpipe's v * (1 / sqrt(dot(v, v)))") {
     using raster::glsl::vec3;
     const vec3<float> v(3.0f, 4.0f, 12.0f);

@@ -44,8 +44,8 @@ class ProgramInstance final : public ShaderInstance {
     shade(in, varyings, out);
   }
   void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
-                      const LaneLayout<FastLanes>& layout, PipelineCounters& counters) const override {
-    shadeTileWholeWith(job, tile, tri, layout, counters,
+                      const LaneLayout<FastLanes>& layout, bool onlyTriangle, PipelineCounters& counters) const override {
+    shadeTileWholeWith(job, tile, tri, layout, onlyTriangle, counters,
                        [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
                               FragmentOutput<PairedLanes>& out) __attribute__((always_inline)) { shade(in, varyings, out); });
   }

@@ -109,9 +109,11 @@ inline glsl::vec4<simd::Float8> highGroup(const glsl::vec4<simd::Float8x2>& c) {
 // The same for a pair of whole groups (simd::Float8x2), `first` the low group's texels and
 // `second` the high one's. With 512-bit pairs, one conversion and one lane-to-row permute
 // serve both groups.
-inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t* texels, const size_t* first,
-                               const size_t* second) {
 #if RASTER_ZMM_PAIRS
+// A pair's RGBA8 texels as the rows they go to, 16 bytes each: [the low group's lane 0 row |
+// its lane 2 row | the high group's lane 0 row | its lane 2 row]. One conversion and one
+// lane-to-row permute serve both groups.
+inline __m512i rgba8RowsPair(const glsl::vec4<simd::Float8x2>& color) {
   auto channel = [](__m512 x) {   // packRgba8Lanes' conversion, 16 lanes
     const __m512 clamped = _mm512_min_ps(_mm512_set1_ps(1.0f), x);
     const __m512i scaled = _mm512_cvtps_epi32(_mm512_mul_ps(clamped, _mm512_set1_ps(255.0f)));
@@ -120,9 +122,15 @@ inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t*
   const __m512i r = channel(color.x.v), g = channel(color.y.v), b = channel(color.z.v), a = channel(color.w.v);
   const __m512i packed = _mm512_or_si512(_mm512_or_si512(r, _mm512_slli_epi32(g, 8)),
                                          _mm512_or_si512(_mm512_slli_epi32(b, 16), _mm512_slli_epi32(a, 24)));
-  // simd::quadLanesToRows(false) in each half: [first's two rows | second's two rows].
-  const __m512i rows = _mm512_permutexvar_epi32(
-      _mm512_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7, 8, 9, 12, 13, 10, 11, 14, 15), packed);
+  // simd::quadLanesToRows(false) in each half.
+  return _mm512_permutexvar_epi32(_mm512_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7, 8, 9, 12, 13, 10, 11, 14, 15), packed);
+}
+#endif
+
+inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t* texels, const size_t* first,
+                               const size_t* second) {
+#if RASTER_ZMM_PAIRS
+  const __m512i rows = rgba8RowsPair(color);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + first[0] * 4), _mm512_castsi512_si128(rows));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + first[2] * 4), _mm512_extracti32x4_epi32(rows, 1));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(texels + second[0] * 4), _mm512_extracti32x4_epi32(rows, 2));

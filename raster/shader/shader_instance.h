@@ -42,7 +42,8 @@ class ShaderInstance {
   // (tile/covered_tile.h, shadeTileWhole): the covered-tile loop instantiated for this
   // program, calling its fragment shader directly: one virtual call a tile, not one a block.
   virtual void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
-                              const LaneLayout<FastLanes>& layout, PipelineCounters& counters) const = 0;
+                              const LaneLayout<FastLanes>& layout, bool onlyTriangle,
+                              PipelineCounters& counters) const = 0;
 #endif
 };
 

@@ -48,9 +48,11 @@ void shadeBlockWhole(const TileJob&, const SetupTriangle&, const LaneLayout<F>&,
 // The path itself, for a triangle the caller has shown to cover the tile, each of whose
 // fragments passes its depth test (its codes, where it writes depth, are stored by the
 // caller): every pixel of the tile shaded and merged as the in-order walk would. Only where
-// canShadeTileWhole.
+// canShadeTileWhole. `onlyTriangle`: nothing after it reaches the tile (its colour may then
+// be stored around the cache).
 template <class F>
-void shadeTileWhole(const TileJob&, const TileBounds&, const SetupTriangle&, const LaneLayout<F>&, PipelineCounters&) {}
+void shadeTileWhole(const TileJob&, const TileBounds&, const SetupTriangle&, const LaneLayout<F>&, bool onlyTriangle,
+                    PipelineCounters&) {}
 
 }  // namespace raster
 

@@ -140,7 +140,8 @@ size_t clearTile(const TileJob& job, std::span<const uint32_t> bin, const TileBo
   if (!plan.firstStoresDepth) return 0;
   const SetupTriangle& first = job.triangles[bin.front()];
   storeDepthCodes<F>(first, *fb.depth, fb.width, tile);
-  if (plan.firstShadedWhole) shadeTileWhole<F>(job, tile, first, LaneLayout<F>(fb.flipY, fb.width), counters);
+  if (plan.firstShadedWhole)
+    shadeTileWhole<F>(job, tile, first, LaneLayout<F>(fb.flipY, fb.width), bin.size() == 1, counters);
   return 1;
 }
 

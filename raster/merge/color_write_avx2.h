@@ -106,9 +106,6 @@ inline glsl::vec4<simd::Float8> highGroup(const glsl::vec4<simd::Float8x2>& c) {
   return {c.x.high(), c.y.high(), c.z.high(), c.w.high()};
 }
 
-// The same for a pair of whole groups (simd::Float8x2), `first` the low group's texels and
-// `second` the high one's. With 512-bit pairs, one conversion and one lane-to-row permute
-// serve both groups.
 #if RASTER_ZMM_PAIRS
 // A pair's RGBA8 texels as the rows they go to, 16 bytes each: [the low group's lane 0 row |
 // its lane 2 row | the high group's lane 0 row | its lane 2 row]. One conversion and one
@@ -127,6 +124,8 @@ inline __m512i rgba8RowsPair(const glsl::vec4<simd::Float8x2>& color) {
 }
 #endif
 
+// writeRgba8Rows for a pair of whole groups (simd::Float8x2), `first` the low group's texels
+// and `second` the high one's; with 512-bit pairs, from rgba8RowsPair.
 inline void writeRgba8RowsPair(const glsl::vec4<simd::Float8x2>& color, uint8_t* texels, const size_t* first,
                                const size_t* second) {
 #if RASTER_ZMM_PAIRS

@@ -9,10 +9,7 @@
 // current context per thread, and this backend makes its context current only when it is
 // created or resized, never before each call. Backends may be created one after another. Mesa reads GALLIUM_DRIVER and LP_NUM_THREADS when the
 // first context of the process is created.
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
+#include "scenes/gl_entry_points.h"   // GL and OSMesa, loaded when the first backend is made
 
 #include <algorithm>
 #include <cstdlib>
@@ -36,8 +33,9 @@
 namespace scenes {
 namespace {
 
-// Throws if the GL error flag is set after `call` (libOSMesa exports every GL 3.3 core
-// entry point, so they are linked directly; no GetProcAddress is needed).
+// Throws if the GL error flag is set after `call`. (Each gl* name here is a pointer into
+// libOSMesa, gl_entry_points.h; libOSMesa exports every GL 3.3 core entry point, so no
+// GetProcAddress is needed.)
 void checkGl(const char* call) {
   GLenum error = glGetError();
   if (error == GL_NO_ERROR) return;
@@ -75,6 +73,7 @@ class GlBackend : public Backend {
     if (liveBackends > 0)
       throw std::runtime_error("GL backend: only one GlBackend may exist at a time");
     checkGalliumEnvironment();
+    loadGlEntryPoints();
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA,
                               OSMESA_DEPTH_BITS, 24,
                               OSMESA_STENCIL_BITS, 0,

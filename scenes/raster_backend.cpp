@@ -99,13 +99,14 @@ class RasterBackend final : public Backend {
     if (pixels && raster::makeGreyCopy(*t))
       reserve(t->grey8.size(), memory::joined({"the grey copy of a ", std::to_string(desc.width), "x",
                                                std::to_string(desc.height), " texture"}));
-    // Another RGBA8 texture sampled bilinearly gets the 16-lane sampler's strip copy
-    // (footprint_strips.h), where this build has that sampler: 4/3 of the texture, so
-    // reserved before it is made.
+    // Another RGBA8 texture sampled bilinearly is kept in the 16-lane sampler's strips
+    // instead of rows (footprint_strips.h), where this build has that sampler: 4/3 of the
+    // rows, reserved before they are made; the rows are then freed.
     if (pixels && raster::kSamplersReadStrips && raster::wantsStripCopy(*t)) {
-      reserve(raster::stripCopyBytes(*t), memory::joined({"the strip copy of a ", std::to_string(desc.width), "x",
+      reserve(raster::stripCopyBytes(*t), memory::joined({"the strips of a ", std::to_string(desc.width), "x",
                                                           std::to_string(desc.height), " texture"}));
       raster::makeStripCopy(*t);
+      unreserve(raster::releaseRows(*t));
     }
     textures_.push_back(std::move(t));
     return Handle(textures_.size() - 1);
@@ -115,14 +116,16 @@ class RasterBackend final : public Backend {
     raster::Framebuffer fb;
     auto attach = [&](Handle h) {
       raster::Texture* t = texture(h);
-      // Drawing writes rgba8 only: a sampler's copy would go stale, so a render target has none.
-      const uint64_t bytes = t->grey8.size() + t->strips8.size();
-      if (bytes > 0) {
-        raster::dropGreyCopy(*t);
-        raster::dropStripCopy(*t);
-        memory::release(bytes);
-        reserved_ -= std::min<uint64_t>(reserved_, bytes);
-      }
+      // Drawing writes rows only: a sampler's copy would go stale, so a render target has
+      // none, and a texture kept in strips gets its rows back first.
+      if (raster::texelsInStripsOnly(*t))
+        reserve(raster::textureStorageBytes(t->width, t->height, t->format),
+                memory::joined({"the rows of a ", std::to_string(t->width), "x", std::to_string(t->height),
+                                " texture drawn into"}));
+      const uint64_t copies = t->grey8.size() + t->strips8.size();
+      raster::dropGreyCopy(*t);
+      raster::restoreRows(*t);
+      unreserve(copies);
       if (fb.width == 0) { fb.width = t->width; fb.height = t->height; }
       if (t->width != fb.width || t->height != fb.height) throw std::runtime_error("framebuffer attachments differ in size");
       return t;
@@ -238,6 +241,11 @@ class RasterBackend final : public Backend {
   void reserve(uint64_t bytes, const std::string& what) {
     memory::reserve(bytes, what);
     reserved_ += bytes;
+  }
+  void unreserve(uint64_t bytes) {
+    bytes = std::min(reserved_, bytes);
+    memory::release(bytes);
+    reserved_ -= bytes;
   }
 
   // Read-backs hold RGBA8 as 4 bytes a pixel, depth codes as 4, float formats as 4 floats.

@@ -12,14 +12,20 @@
 //   on average, against 2.1 for rows of the row-major layout. Minified without mipmaps, as
 //   the G-buffer samples its 1K and 2K material maps, almost every footprint misses the
 //   cache, and the lines are the time (BENCHMARKS.md, "Footprint strips").
-// The copy is 4/3 of the texture. rgba8 stays whole and is what every writer, every other
-// reader and the reference sampler use. The copy is made at upload and dropped when the
-// texture becomes a render target (scenes/raster_backend.cpp), as the grey copy is.
+// The strips are 4/3 of the texture and hold every texel, so an uploaded texture keeps
+// them instead of its rows (releaseRows): every reader of a texel then finds it through
+// rgba8Texel below (the reference sampler, pixel history) or the same unit arithmetic in
+// vector form (sample_color_avx2.cpp, sample_rgba8_avx512.h). The copy is made at upload,
+// and the rows come back (restoreRows) when the texture becomes a render target
+// (scenes/raster_backend.cpp), whose writers write rows. Keeping both had put the deferred
+// scene's peak memory at 1920x1080 above llvmpipe's (BENCHMARKS.md, "Peak memory").
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "raster/simd/isa.h"
 #include "raster/texture/texture.h"
@@ -61,6 +67,7 @@ inline size_t stripCopyBytes(const Texture& t) { return stripCount(t.height) * s
 // Makes t's strip copy if it wants one; returns whether it did. Rows past the last of the
 // texture, in the last strip, are zero and never read.
 inline bool makeStripCopy(Texture& t) {
+  if (t.rgba8.empty()) return t.hasStripCopy();   // the strips hold the texels already
   t.strips8 = {};
   if (!wantsStripCopy(t)) return false;
   const size_t width = size_t(t.width), strips = stripCount(t.height);
@@ -74,6 +81,41 @@ inline bool makeStripCopy(Texture& t) {
   return true;
 }
 
-inline void dropStripCopy(Texture& t) { t.strips8 = {}; }
+// Whether t's texels are in its strip copy alone (releaseRows).
+inline bool texelsInStripsOnly(const Texture& t) { return t.hasStripCopy() && t.rgba8.empty(); }
+
+// The 4-byte unit of any texel (x, y) of the texture in the copy: in strip y / 3, or in the
+// last strip for a last row that no strip starts at (row 3 of it).
+inline size_t stripUnitOfTexel(int width, int height, int x, int y) {
+  const size_t strip = std::min(size_t(y) / kStripStep, stripCount(height) - 1);
+  return (strip * size_t(width) + size_t(x)) * kStripRows + (size_t(y) - strip * kStripStep);
+}
+
+// The four bytes of RGBA8 texel (x, y) of t, from its rows or its strips.
+inline const uint8_t* rgba8Texel(const Texture& t, int x, int y) {
+  if (!t.rgba8.empty()) return &t.rgba8[(size_t(y) * size_t(t.width) + size_t(x)) * 4];
+  return &t.strips8[stripUnitOfTexel(t.width, t.height, x, y) * 4];
+}
+
+// Frees t's rows once its strip copy holds the texels; returns the bytes freed.
+inline size_t releaseRows(Texture& t) {
+  if (!t.hasStripCopy() || t.rgba8.empty()) return 0;
+  const size_t bytes = t.rgba8.size();
+  decltype(t.rgba8)().swap(t.rgba8);
+  return bytes;
+}
+
+// Gives t its rows back from the strips, then drops the strips (a texture about to be
+// drawn into). The rows take rgba8's bytes again; the caller reserves them first.
+inline void restoreRows(Texture& t) {
+  if (texelsInStripsOnly(t)) {
+    decltype(t.rgba8) rows(size_t(t.width) * size_t(t.height) * 4);
+    for (int y = 0; y < t.height; ++y)
+      for (int x = 0; x < t.width; ++x)
+        std::memcpy(&rows[(size_t(y) * size_t(t.width) + size_t(x)) * 4], rgba8Texel(t, x, y), 4);
+    t.rgba8 = std::move(rows);
+  }
+  decltype(t.strips8)().swap(t.strips8);
+}
 
 }  // namespace raster

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/texture/footprint_strips.h"
 #include "raster/texture/format.h"
 #include "raster/texture/sample_trace.h"
 #include "raster/texture/sampler.h"
@@ -85,8 +86,7 @@ int wrapNearestFixed(float coord, int size, Wrap wrap) {
 int lerp8(int weight, int a, int b) { return (a + ((weight * (b - a) * 128 + 16384) >> 15)) & 0xFF; }
 
 void sampleRgba8(const Texture& t, float s, float tc, float out[4]) {
-  const uint8_t* texels = t.rgba8.data();
-  auto texel = [&](int x, int y) { return texels + (size_t(y) * size_t(t.width) + size_t(x)) * 4; };
+  auto texel = [&](int x, int y) { return rgba8Texel(t, x, y); };
   constexpr float kUnorm8 = float(1.0 / 255.0);
   if (t.sampler.filter == Filter::Nearest) {
     const uint8_t* p = texel(wrapNearestFixed(s, t.width, t.sampler.wrapS), wrapNearestFixed(tc, t.height, t.sampler.wrapT));
@@ -152,8 +152,8 @@ int wrapNearestFloat(float coord, int size, Wrap wrap) {
 
 void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
   auto texel = [&](int x, int y, int c) {
+    if (t.format == TexelFormat::RGBA8) return float(rgba8Texel(t, x, y)[c]) * float(1.0 / 255.0);
     const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4 + size_t(c);
-    if (t.format == TexelFormat::RGBA8) return float(t.rgba8[i]) * float(1.0 / 255.0);
     return t.format == TexelFormat::RGBA32F ? t.f32[i] : format::floatFromHalf(t.half[i]);
   };
   if (t.sampler.filter == Filter::Nearest) {
@@ -190,7 +190,7 @@ void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int
 void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
   const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
   for (int c = 0; c < 4; ++c) {
-    if (t.format == TexelFormat::RGBA8) out[c] = float(t.rgba8[i + size_t(c)]) * float(1.0 / 255.0);
+    if (t.format == TexelFormat::RGBA8) out[c] = float(rgba8Texel(t, x, y)[c]) * float(1.0 / 255.0);
     else if (t.format == TexelFormat::RGBA32F) out[c] = t.f32[i + size_t(c)];
     else out[c] = format::floatFromHalf(t.half[i + size_t(c)]);
   }

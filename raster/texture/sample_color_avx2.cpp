@@ -4,6 +4,7 @@
 #if RASTER_AVX2
 #include "raster/simd/intrinsics.h"
 
+#include "raster/texture/footprint_strips.h"
 #include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
@@ -77,6 +78,18 @@ __m256i lerp8(__m256i weight128, __m256i a, __m256i b) {
 
 __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi32(texels, 8 * c), splat(0xFF)); }
 
+// Where texels (x, y) are: in rows, texel y * width + x; in a strip copy that holds the
+// texels (texelsInStripsOnly), their 4-byte units there (footprint_strips.h's
+// stripUnitOfTexel per lane; y / 3 as a multiply and a shift, exact for 0 <= y < 98304).
+__m256i texelUnits(const Texture& t, bool inStrips, __m256i x, __m256i y) {
+  if (!inStrips) return _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
+  static_assert(kStripStep == 3, "the multiplier is for a step of 3");
+  const __m256i strip = _mm256_min_epi32(_mm256_srli_epi32(_mm256_mullo_epi32(y, splat(43691)), 17),
+                                         splat(int(stripCount(t.height)) - 1));
+  const __m256i row = _mm256_sub_epi32(y, _mm256_mullo_epi32(strip, splat(kStripStep)));
+  return _mm256_add_epi32(_mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(strip, splat(t.width)), x), 2), row);
+}
+
 // N independent 8-lane lookups (N = 2 for Float8x2 shading). Each phase runs over all of
 // them before the next, so the texel loads of every lookup are in flight together: one
 // lookup's cache misses overlap the other's instead of following them.
@@ -88,10 +101,11 @@ __m256i channel(__m256i texels, int c) { return _mm256_and_si256(_mm256_srli_epi
 template <int N>
 [[gnu::always_inline]] inline void sampleRgba8(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
   const bool grey = t.hasGreyCopy();
-  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
+  const bool inStrips = texelsInStripsOnly(t);   // (a grey texture keeps its rows)
+  const int* texels = reinterpret_cast<const int*>(inStrips ? t.strips8.data() : t.rgba8.data());
   const int* greyBytes = reinterpret_cast<const int*>(t.grey8.data());
-  const __m256i width = splat(t.width), low8 = splat(0xFF);
-  auto index = [&](__m256i x, __m256i y) { return _mm256_add_epi32(_mm256_mullo_epi32(y, width), x); };
+  const __m256i low8 = splat(0xFF);
+  auto index = [&](__m256i x, __m256i y) { return texelUnits(t, inStrips, x, y); };
   // One texel a lane: RGBA in four bytes, or the grey byte in the low eight bits.
   auto fetch = [&](__m256i x, __m256i y) {
     return grey ? _mm256_and_si256(_mm256_i32gather_epi32(greyBytes, index(x, y), 1), low8)
@@ -120,9 +134,10 @@ template <int N>
     x[h] = wrapLinearFixed(s[h], t.width, t.sampler.wrapS);
     y[h] = wrapLinearFixed(tc[h], t.height, t.sampler.wrapT);
     const __m256i adjacent = _mm256_cmpeq_epi32(x[h].x1, _mm256_add_epi32(x[h].x0, splat(1)));
-    if (_mm256_movemask_epi8(adjacent) == -1) {
+    if (!inStrips && _mm256_movemask_epi8(adjacent) == -1) {
       // Every lane's two texels of a row are neighbours (no wrap, no clamp between them):
-      // one element fetches both, 64 bits of RGBA8 or 32 of the grey copy.
+      // one element fetches both, 64 bits of RGBA8 or 32 of the grey copy. (In the strips
+      // they are a column apart: that case takes the four fetches below.)
       const __m256i row0 = index(x[h].x0, y[h].x0), row1 = index(x[h].x0, y[h].x1);
       if (grey) {
         const __m256i top = _mm256_i32gather_epi32(greyBytes, row0, 1), bottom = _mm256_i32gather_epi32(greyBytes, row1, 1);
@@ -308,11 +323,11 @@ template <int N>
 // as unorm8 * float(1/255); bit-identical to sample_color.cpp's sampleFloat.
 template <int N>
 void sampleRgba8Float(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
-  const int* texels = reinterpret_cast<const int*>(t.rgba8.data());
-  const __m256i width = splat(t.width);
+  const bool inStrips = texelsInStripsOnly(t);
+  const int* texels = reinterpret_cast<const int*>(inStrips ? t.strips8.data() : t.rgba8.data());
   const __m256 kUnorm8 = splat(float(1.0 / 255.0));
   auto fetch = [&](__m256i x, __m256i y, __m256 planes[4]) {
-    const __m256i p = _mm256_i32gather_epi32(texels, _mm256_add_epi32(_mm256_mullo_epi32(y, width), x), 4);
+    const __m256i p = _mm256_i32gather_epi32(texels, texelUnits(t, inStrips, x, y), 4);
     for (int c = 0; c < 4; ++c) planes[c] = _mm256_mul_ps(_mm256_cvtepi32_ps(channel(p, c)), kUnorm8);
   };
   if (t.sampler.filter == Filter::Nearest) {
@@ -541,27 +556,28 @@ void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
   // (x0, y1), in the layout it reads, with the same wrapping.
   const char* base = nullptr;
   int texelShift = 0;   // log2 of the bytes a texel
-  __m256i x0, y0, y1;
+  __m256i first, second;   // the texel index of each lane's footprint rows' first texels
   if (texture.format == TexelFormat::RGBA8) {
-    const bool grey = texture.hasGreyCopy();
-    base = grey ? reinterpret_cast<const char*>(texture.grey8.data()) : reinterpret_cast<const char*>(texture.rgba8.data());
+    const bool grey = texture.hasGreyCopy(), inStrips = texelsInStripsOnly(texture);
+    base = grey       ? reinterpret_cast<const char*>(texture.grey8.data())
+           : inStrips ? reinterpret_cast<const char*>(texture.strips8.data())
+                      : reinterpret_cast<const char*>(texture.rgba8.data());
     texelShift = grey ? 0 : 2;
     const FixedTaps8 x = wrapLinearFixed(s.v, texture.width, texture.sampler.wrapS);
     const FixedTaps8 y = wrapLinearFixed(t.v, texture.height, texture.sampler.wrapT);
-    x0 = x.x0, y0 = y.x0, y1 = y.x1;
+    first = texelUnits(texture, inStrips, x.x0, y.x0), second = texelUnits(texture, inStrips, x.x0, y.x1);
   } else if (texture.format == TexelFormat::RGBA16F) {
     base = reinterpret_cast<const char*>(texture.half.data());
     texelShift = 3;
     const LinearTaps8 x = wrapLinearFloat(s.v, texture.width, texture.sampler.wrapS);
     const LinearTaps8 y = wrapLinearFloat(t.v, texture.height, texture.sampler.wrapT);
-    x0 = x.i0, y0 = y.i0, y1 = y.i1;
+    first = texelUnits(texture, false, x.i0, y.i0), second = texelUnits(texture, false, x.i0, y.i1);
   } else {
     return;
   }
-  const __m256i width = splat(texture.width);
   alignas(32) int rows[2][8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[0]), _mm256_add_epi32(_mm256_mullo_epi32(y0, width), x0));
-  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[1]), _mm256_add_epi32(_mm256_mullo_epi32(y1, width), x0));
+  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[0]), first);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(rows[1]), second);
   for (int i = 0; i < 8; ++i) {
     _mm_prefetch(base + (size_t(unsigned(rows[0][i])) << texelShift), _MM_HINT_T0);
     _mm_prefetch(base + (size_t(unsigned(rows[1][i])) << texelShift), _MM_HINT_T0);

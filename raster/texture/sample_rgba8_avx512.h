@@ -82,6 +82,15 @@ struct StripColumns16 {
   return {left, _mm512_add_epi32(left, _mm512_slli_epi32(_mm512_sub_epi32(x.x1, x.x0), 2))};
 }
 
+// The 4-byte units of any texels (x, y) in a strip copy that holds the texels
+// (footprint_strips.h's stripUnitOfTexel per lane).
+[[gnu::always_inline]] inline __m512i stripTexelUnits16(const Texture& t, __m512i x, __m512i y) {
+  const __m512i strip = _mm512_min_epi32(stripIndex16(y), _mm512_set1_epi32(int(stripCount(t.height)) - 1));
+  const __m512i row = _mm512_sub_epi32(y, _mm512_mullo_epi32(strip, _mm512_set1_epi32(kStripStep)));
+  const __m512i column = _mm512_add_epi32(_mm512_mullo_epi32(strip, _mm512_set1_epi32(t.width)), x);
+  return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row);
+}
+
 // Whether sampleRgba8Pair is this texture's lookup under the active method set.
 inline bool isRgba8Bilinear(const Texture& t) {
   return t.format == TexelFormat::RGBA8 && t.sampler.filter == Filter::Linear &&
@@ -134,6 +143,15 @@ inline bool isRgba8Bilinear(const Texture& t) {
     const StripColumns16 at = stripColumns16(t.width, x, y.x0);
     fetchTwo(t.strips8.data(), at.left, p00, p10);
     fetchTwo(t.strips8.data(), at.right, p01, p11);
+  } else if (texelsInStripsOnly(t)) {
+    // Some footprint's rows are not neighbours (clamped at the first or last row, or a
+    // REPEAT wrap from the last to the first), and the strips alone hold the texels: each
+    // texel from its own unit.
+    const int* strips = reinterpret_cast<const int*>(t.strips8.data());
+    auto texel = [&](__m512i column, __m512i row) __attribute__((always_inline)) {
+      return _mm512_i32gather_epi32(stripTexelUnits16(t, column, row), strips, 4);
+    };
+    p00 = texel(x.x0, y.x0), p01 = texel(x.x1, y.x0), p10 = texel(x.x0, y.x1), p11 = texel(x.x1, y.x1);
   } else {
     // Rows y0 and y1 of rgba8 or of the grey copy. (Their starts are computed here, not
     // before the strip path: there the compiler left them in, two multiplies a lookup.)
@@ -168,8 +186,8 @@ inline bool isRgba8Bilinear(const Texture& t) {
 [[gnu::always_inline]] inline void prefetchRgba8Strips(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc) {
   const FixedTaps16 x = wrapLinearFixed16(s.v, t.width, t.sampler.wrapS);
   const FixedTaps16 y = wrapLinearFixed16(tc.v, t.height, t.sampler.wrapT);
-  // A footprint whose rows are not neighbours is read from rgba8; its strip here is a
-  // nearby one, in the copy, and the prefetch is only a wasted one.
+  // A footprint whose rows are not neighbours is read texel by texel (or from rgba8); its
+  // strip here is a nearby one, in the copy, and the prefetch is only a wasted one.
   const StripColumns16 at = stripColumns16(t.width, x, _mm512_min_epi32(y.x0, _mm512_set1_epi32(t.height - 2)));
   alignas(64) int units[2][16];
   _mm512_store_si512(units[0], at.left);

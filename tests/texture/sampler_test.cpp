@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "raster/methods.h"
@@ -138,6 +139,40 @@ TEST_SUITE("texture") {
     MESSAGE(cmp.diffs << " of " << kSize * kSize << " pixels differ " << cmp.firstDiff);
     CHECK(cmp.diffs == 0);
   }
+  TEST_CASE("a texture kept in strips and then drawn into gets its rows back: sampled after a pass, it equals llvmpipe") {
+    // An uploaded bilinear RGBA8 texture is kept in strips alone (footprint_strips.h). As a
+    // render target it needs rows: the pass below clears nothing and draws nothing, so what
+    // is sampled after it is the upload, through the rows made back from the strips.
+    std::mt19937 rng(37);
+    for (const auto& [w, h] : {std::pair{37, 37}, std::pair{13, 7}, std::pair{5, 4}}) {
+      std::vector<uint8_t> bytes(size_t(w) * size_t(h) * 4);
+      for (uint8_t& b : bytes) b = uint8_t(rng());
+      constexpr int kSize = 64;
+      const MeshData mesh = gridMesh(kSize, kSize, 2, [&](int, int) {
+        GridCell cell;
+        cell.attribute = glm::vec4(uniform(rng, -1.0f, 2.0f), uniform(rng, -1.0f, 2.0f), 0.0f, 1.0f);
+        return cell;
+      });
+      BackendPair backends;
+      ImageData images[2];
+      Backend* sides[2] = {backends.raster.get(), backends.gl.get()};
+      for (int k = 0; k < 2; ++k) {
+        Backend& b = *sides[k];
+        scenes::TextureDesc desc;
+        desc.width = w;
+        desc.height = h;
+        desc.format = TexelFormat::RGBA8;
+        desc.sampler = {Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge, false};
+        const Handle texture = b.createTexture(desc, bytes.data());
+        const Handle textureFb = b.createFramebuffer({{texture}, 0});
+        b.beginPass(textureFb, {0, 0, w, h}, ClearOp{});
+        images[k] = drawLookups(b, texture, mesh, kSize);
+      }
+      const FloatComparison cmp = compareFloatBits(images[0], images[1]);
+      MESSAGE(w << "x" << h << ": " << cmp.diffs << " of " << kSize * kSize << " pixels differ " << cmp.firstDiff);
+      CHECK(cmp.diffs == 0);
+    }
+  }
   TEST_CASE("textures one texel wide or high, and 16384 wide, equal llvmpipe") {
     checkLookups({3, 1001, TexelFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge}, 31);
     checkLookups({16384, 1, TexelFormat::RGBA8, Filter::Linear, Wrap::Repeat, Wrap::Repeat}, 32);
@@ -163,9 +198,13 @@ TEST_SUITE("texture") {
     raster::MethodSet methods;
     methods.filter = method;
     const raster::ScopedMethods scoped(methods);
-    // RGBA8, RGBA16F, and grey RGBA8 (with the one-byte copy the AVX2 sampler reads).
-    for (const auto& [format, grey] : {std::pair{raster::TexelFormat::RGBA8, false}, std::pair{raster::TexelFormat::RGBA16F, false},
-                                       std::pair{raster::TexelFormat::RGBA8, true}}) {
+    // RGBA8 in rows and kept in strips alone (as uploads are where the 16-lane lookup reads
+    // strips, footprint_strips.h), RGBA16F, and grey RGBA8 (with the one-byte copy the AVX2
+    // sampler reads).
+    for (const auto& [format, grey, strips] : {std::tuple{raster::TexelFormat::RGBA8, false, false},
+                                               std::tuple{raster::TexelFormat::RGBA8, false, true},
+                                               std::tuple{raster::TexelFormat::RGBA16F, false, false},
+                                               std::tuple{raster::TexelFormat::RGBA8, true, false}}) {
       for (const auto& [w, h] : {std::pair{16, 8}, std::pair{13, 7}, std::pair{1, 1}, std::pair{64, 3}, std::pair{3, 1001},
                                  std::pair{16384, 1}}) {
         raster::Texture tex = randomTexture(rng, w, h, format, grey);
@@ -173,6 +212,15 @@ TEST_SUITE("texture") {
           for (raster::Wrap ws : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge})
             for (raster::Wrap wt : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge}) {
               tex.sampler = {filter, ws, wt, false};
+              raster::Texture stripped;   // the strips variant's texture; the reference reads tex's rows
+              if (strips) {
+                stripped = tex;
+                stripped.sampler.filter = raster::Filter::Linear;   // the copy is made for a bilinear filter
+                if (raster::makeStripCopy(stripped)) raster::releaseRows(stripped);
+                stripped.sampler = tex.sampler;
+                REQUIRE((h < 2 || raster::texelsInStripsOnly(stripped)));
+              }
+              const raster::Texture& sampled = strips ? stripped : tex;
               for (int round = 0; round < 200; ++round) {
                 // Lanes 0-7 go to the 8-lane lookups; all 16 to the paired ones (Float8x2).
                 alignas(32) float s16[16], t16[16];
@@ -185,21 +233,23 @@ TEST_SUITE("texture") {
                 Float8 out[4], outLive[4];
                 // A prefetch of the same lanes first: it must take any coordinate (NaN, huge,
                 // far outside) on any texture and change nothing that follows.
-                raster::sampling::prefetchColor8(tex, Float8::load(s16), Float8::load(t16));
-                raster::sampling::sampleColor8(tex, Float8::load(s16), Float8::load(t16), out);
+                raster::sampling::prefetchColor8(sampled, Float8::load(s16), Float8::load(t16));
+                raster::sampling::sampleColor8(sampled, Float8::load(s16), Float8::load(t16), out);
                 // The lookup for some lanes only (textureWhere): those lanes must still be exact.
                 const unsigned liveBits = rng() & 0xFFFFu;
-                raster::sampling::sampleColor8(tex, Float8::load(s16), Float8::load(t16), Mask8::fromBits(liveBits & 0xFFu),
+                raster::sampling::sampleColor8(sampled, Float8::load(s16), Float8::load(t16), Mask8::fromBits(liveBits & 0xFFu),
                                                outLive);
                 const Float8 sPair[2] = {Float8::load(s16), Float8::load(s16 + 8)};
                 const Float8 tPair[2] = {Float8::load(t16), Float8::load(t16 + 8)};
                 const Mask8 livePair[2] = {Mask8::fromBits(liveBits & 0xFFu), Mask8::fromBits(liveBits >> 8)};
                 Float8 pair[2][4], pairLive[2][4];
-                raster::sampling::sampleColor8x2(tex, sPair, tPair, pair);
-                raster::sampling::sampleColor8x2(tex, sPair, tPair, livePair, pairLive);
+                raster::sampling::sampleColor8x2(sampled, sPair, tPair, pair);
+                raster::sampling::sampleColor8x2(sampled, sPair, tPair, livePair, pairLive);
                 for (int i = 0; i < 16; ++i) {
-                  float ref[4];
+                  float ref[4], refSampled[4];
                   raster::sampling::sampleColor(tex, s16[i], t16[i], ref);
+                  raster::sampling::sampleColor(sampled, s16[i], t16[i], refSampled);   // the scalar reference from strips
+                  for (int c = 0; c < 4; ++c) mismatches += !sameLookup(refSampled[c], ref[c]);
                   const bool live = (liveBits >> i) & 1u;
                   for (int c = 0; c < 4; ++c) {
                     const float paired = pair[i / 8][c][i % 8], pairedLive = live ? pairLive[i / 8][c][i % 8] : ref[c];
@@ -207,7 +257,7 @@ TEST_SUITE("texture") {
                     for (const float got : {single, singleLive, paired, pairedLive}) {
                       if (sameLookup(got, ref[c])) continue;
                       if (++mismatches <= 3)
-                        MESSAGE("mismatch: format " << int(format) << std::string(grey ? " grey" : "") << " " << w << "x" << h << " filter " << int(filter)
+                        MESSAGE("mismatch: format " << int(format) << std::string(grey ? " grey" : "") << std::string(strips ? " strips" : "") << " " << w << "x" << h << " filter " << int(filter)
                                 << " wrap " << int(ws) << int(wt) << " at (" << s16[i] << ", " << t16[i] << ") channel " << c
                                 << ": SIMD " << got << " scalar " << ref[c]);
                     }
@@ -229,7 +279,7 @@ TEST_SUITE("texture") {
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0, awayFromEdge = 0;
     // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), grey,
-    // and with the strip copy that uploaded RGBA8 textures get (footprint_strips.h).
+    // and kept in strips alone, as uploaded RGBA8 textures are (footprint_strips.h).
     struct Variant {
       raster::TexelFormat format;
       bool grey;
@@ -240,7 +290,8 @@ TEST_SUITE("texture") {
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8},
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8, true},
                                   Variant{raster::TexelFormat::RGBA8, true, raster::FilterMethod::Unorm8},
-                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float}}) {
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float},
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float, true}}) {
       const raster::TexelFormat format = variant.format;
       raster::MethodSet methods;
       methods.filter = variant.method;
@@ -254,7 +305,17 @@ TEST_SUITE("texture") {
                                             std::pair{raster::Wrap::Repeat, raster::Wrap::Repeat},
                                             std::pair{raster::Wrap::ClampToEdge, raster::Wrap::Repeat}}) {
             tex.sampler = {filter, wrap, wrapT, false};
-            if (variant.strips) raster::makeStripCopy(tex);   // made for a bilinear filter only
+            // The strip variant samples a copy kept in strips alone, as an upload is
+            // (footprint_strips.h), under every sampler state; the reference reads the rows.
+            raster::Texture stripped;
+            if (variant.strips) {
+              stripped = tex;
+              stripped.sampler.filter = raster::Filter::Linear;   // the copy is made for a bilinear filter
+              if (raster::makeStripCopy(stripped)) raster::releaseRows(stripped);
+              stripped.sampler = tex.sampler;
+              REQUIRE((h < 2 || raster::texelsInStripsOnly(stripped)));
+            }
+            const raster::Texture& sampled = variant.strips ? stripped : tex;
             for (int round = 0; round < 300; ++round) {
               // Pixel centres of a post pass's quads (the fast path's case), or anywhere.
               alignas(64) float s16[16], t16[16];
@@ -274,7 +335,7 @@ TEST_SUITE("texture") {
               }
               const raster::simd::Float8x2 s = raster::simd::Float8x2::load(s16), t = raster::simd::Float8x2::load(t16);
               raster::simd::Float8x2 planes[4], planesLive[4];
-              raster::sampling::sampleColor8x2(tex, s, t, planes);
+              raster::sampling::sampleColor8x2(sampled, s, t, planes);
               // The lookup for some lanes only (textureWhere): those lanes must still be exact.
               // Some rounds leave every lane dead, or one eight-lane half, or all but one lane:
               // the 16-lane NEAREST lookup skips the loads of a half with no live lane.
@@ -284,19 +345,21 @@ TEST_SUITE("texture") {
                                         : round % 5 == 2 ? (anyBits & 0xFF00u)
                                         : round % 5 == 3 ? (1u << (anyBits % 16u))
                                                          : anyBits;
-              raster::sampling::sampleColor8x2(tex, s, t, raster::simd::Mask8x2::fromBits(liveBits), planesLive);
+              raster::sampling::sampleColor8x2(sampled, s, t, raster::simd::Mask8x2::fromBits(liveBits), planesLive);
               // And through the shaders' own entry points (sampler_avx2.h), which take some
               // lookups inline (sample_half_avx512.h) rather than through sampleColor8x2.
               const raster::glsl::vec2<raster::simd::Float8x2> uv{s, t};
-              raster::sampling::prefetchColor(tex, uv);   // any coordinate, and nothing changes
-              const auto viaPort = raster::sampling::lookupColor(tex, uv);
-              const auto viaPortLive = raster::sampling::lookupColorWhere(raster::simd::Mask8x2::fromBits(liveBits), tex, uv);
+              raster::sampling::prefetchColor(sampled, uv);   // any coordinate, and nothing changes
+              const auto viaPort = raster::sampling::lookupColor(sampled, uv);
+              const auto viaPortLive = raster::sampling::lookupColorWhere(raster::simd::Mask8x2::fromBits(liveBits), sampled, uv);
               const raster::simd::Float8x2 port[4] = {viaPort.x, viaPort.y, viaPort.z, viaPort.w};
               const raster::simd::Float8x2 portLive[4] = {viaPortLive.x, viaPortLive.y, viaPortLive.z, viaPortLive.w};
               bool edge = false;
               for (int i = 0; i < 16; ++i) {
-                float ref[4];
+                float ref[4], refSampled[4];
                 raster::sampling::sampleColor(tex, s16[i], t16[i], ref);
+                raster::sampling::sampleColor(sampled, s16[i], t16[i], refSampled);   // the scalar reference from strips
+                for (int c = 0; c < 4; ++c) mismatches += !sameLookup(refSampled[c], ref[c]);
                 edge = edge || std::min(s16[i] * float(w), float(w)) - 0.5f >= float(w - 1);
                 for (int c = 0; c < 4; ++c) {
                   const bool live = (liveBits >> i) & 1u;
@@ -352,6 +415,26 @@ TEST_SUITE("texture") {
     MESSAGE(checked << " texels checked, " << wrong << " wrong");
     CHECK(checked > 0);
     CHECK(wrong == 0);
+    // Kept in strips alone, every texel is still found (rgba8Texel), a sampler state change
+    // keeps the strips, and the rows come back byte for byte for a texture drawn into.
+    for (const auto& [w, h] : {std::pair{1, 2}, std::pair{2, 3}, std::pair{4, 4}, std::pair{5, 5}, std::pair{13, 7},
+                               std::pair{3, 1001}}) {
+      raster::Texture tex = randomTexture(rng, w, h, raster::TexelFormat::RGBA8);
+      tex.sampler = {raster::Filter::Linear, raster::Wrap::Repeat, raster::Wrap::Repeat, false};
+      const auto rows = tex.rgba8;
+      REQUIRE(raster::makeStripCopy(tex));
+      CHECK(raster::releaseRows(tex) == rows.size());
+      REQUIRE(raster::texelsInStripsOnly(tex));
+      CHECK(raster::makeStripCopy(tex));   // the strips are the texels now: kept, not remade
+      long missed = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          missed += std::memcmp(raster::rgba8Texel(tex, x, y), &rows[(size_t(y) * size_t(w) + size_t(x)) * 4], 4) != 0;
+      CHECK(missed == 0);
+      raster::restoreRows(tex);
+      CHECK_FALSE(tex.hasStripCopy());
+      CHECK((tex.rgba8.size() == rows.size() && std::equal(rows.begin(), rows.end(), tex.rgba8.begin())));
+    }
     raster::Texture oneRow = randomTexture(rng, 16384, 1, raster::TexelFormat::RGBA8);
     CHECK_FALSE(raster::makeStripCopy(oneRow));   // no footprint of two rows
     raster::Texture nearest = randomTexture(rng, 13, 7, raster::TexelFormat::RGBA8);

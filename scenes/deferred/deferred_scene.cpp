@@ -60,8 +60,8 @@ class DeferredScene final : public Scene {
     std::vector<std::string> images;
     for (const char* image : {CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_AO, BRICK_ROUGH})
       images.push_back(assetPath(options_, image));
-    const std::vector<ImageRgba8> loaded = loadImagesRgba8(images);   // decoded in parallel
-    const ImageRgbFloat env = loadHdrRgb(assetPath(options_, HDRI));
+    std::vector<ImageRgba8> loaded = loadImagesRgba8(images);   // decoded in parallel
+    ImageRgbFloat env = loadHdrRgb(assetPath(options_, HDRI));
 
     // The seed's shadow_vs / shadow_fs are the shadow-map scene's shaders, word for word.
     prog_shadow_ = b.createProgram("shadow/shadow");
@@ -78,10 +78,15 @@ class DeferredScene final : public Scene {
                              {Filter::Linear, Wrap::Repeat, Wrap::Repeat, false}};
       textures_[i] = b.createTexture(desc, loaded[i].pixels.data());
       b.labelTexture(textures_[i], std::filesystem::path(images[i]).filename().string());
+      // Both backends copy what they are given: each decoded image goes as soon as it is
+      // uploaded, so the 52 MiB of them never sit beside all the textures made from them
+      // (BENCHMARKS.md, "Peak memory at 1920x1080 against llvmpipe").
+      loaded[i] = ImageRgba8{};
     }
     // load_hdr_texture: RGB16F, REPEAT on s, CLAMP_TO_EDGE on t, LINEAR.
     tex_env_ = b.createTexture({env.width, env.height, TexelFormat::RGB16F, {Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge, false}},
                                env.pixels.data());
+    env = ImageRgbFloat{};
     b.labelTexture(tex_env_, std::filesystem::path(assetPath(options_, HDRI)).filename().string());
 
     // create_shadow_target

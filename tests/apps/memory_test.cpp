@@ -79,10 +79,10 @@ TEST_SUITE("hostile") {
   }
 
   // render used to read back every target even without --dump (a 16384x16384 deferred render
-  // died with bad_alloc at 21 GB). At 2048x2048 the frame needs under 290 MiB (the material
-  // maps kept in strips, footprint_strips.h, 4/3 of their rows; under 270 in a build whose
-  // textures keep rows), and reading back every target for --dump passes 400 MiB: under a
-  // 380 MiB cap the plain render succeeds, and the same render with --dump is refused. (This ran at 4096x4096
+  // died with bad_alloc at 21 GB). At 2048x2048 the frame needs under 250 MiB (the material
+  // maps kept in strips, footprint_strips.h, 4/3 of their rows, and each decoded image freed
+  // once uploaded), and reading back every target for --dump passes 400 MiB: under a 380 MiB
+  // cap the plain render succeeds, and the same render with --dump is refused. (This ran at 4096x4096
   // under a 900 MiB cap until the sanitizer and SIMD-off builds took a minute or two on that
   // frame alone.)
   TEST_CASE("memory: render reads back only the final image unless it dumps every target") {

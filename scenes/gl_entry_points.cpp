@@ -15,7 +15,7 @@ RASTER_GL_ENTRY_POINTS(RASTER_GL_DEFINE_ENTRY_POINT)
 
 namespace {
 
-void loadOnce() {
+void loadLibraryAndEntryPoints() {
   // Never closed: Mesa keeps threads and atexit handlers that must outlive the process's
   // last GL call.
   void* library = nullptr;
@@ -44,7 +44,7 @@ void loadGlEntryPoints() {
   static bool loaded = false;
   const std::lock_guard<std::mutex> lock(loading);
   if (loaded) return;
-  loadOnce();
+  loadLibraryAndEntryPoints();
   loaded = true;
 }
 

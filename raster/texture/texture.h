@@ -58,14 +58,14 @@ struct Texture {
   int height = 0;
   TexelFormat format = TexelFormat::RGBA8;
   SamplerState sampler;
-  std::vector<uint8_t, HugePageAllocator<uint8_t>> rgba8;       // RGBA8
+  std::vector<uint8_t, HugePageAllocator<uint8_t>> rgba8;       // RGBA8 rows (empty where strips8 holds the texels)
   std::vector<uint16_t, HugePageAllocator<uint16_t>> half;       // RGBA16F, 4 per texel
   std::vector<float> f32;           // RGBA32F, 4 per texel
   std::vector<uint32_t, HugePageAllocator<uint32_t>> depth;      // Depth16 / Depth24 codes
   // A second layout of a grey RGBA8 texture, for the samplers: see makeGreyCopy().
   std::vector<uint8_t, HugePageAllocator<uint8_t>> grey8;
-  // A third, of an RGBA8 texture sampled bilinearly, in overlapping row strips for the
-  // 16-lane sampler: see footprint_strips.h.
+  // An RGBA8 texture sampled bilinearly, in overlapping row strips for the 16-lane sampler:
+  // an upload keeps these instead of rows (footprint_strips.h, releaseRows).
   std::vector<uint8_t, HugePageAllocator<uint8_t>> strips8;
   ClearedTiles clearedTiles;   // the tiles that hold only the last clear (cleared_tiles.h)
   std::string label;   // what the scene calls it ("shadow_map"), as glObjectLabel: pixel history names it

@@ -43,8 +43,7 @@ class RasterBackend final : public Backend {
     const uint64_t before = raster::textureStorageBytes(defaultColor_.width, defaultColor_.height, TexelFormat::RGBA8) * 2;
     defaultColor_ = raster::Texture();   // freed before the new size is reserved
     defaultDepth_ = raster::Texture();
-    memory::release(before);
-    reserved_ -= std::min(reserved_, before);
+    unreserve(before);
     reserve(raster::textureStorageBytes(width, height, TexelFormat::RGBA8) * 2,
             memory::joined({"the ", std::to_string(width), "x", std::to_string(height), " window (RGBA8 colour, 24-bit depth)"}));
     defaultColor_ = raster::Texture(width, height, TexelFormat::RGBA8);

@@ -68,27 +68,31 @@ struct FixedTaps16 {
   return _mm512_srli_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(43691)), 17);
 }
 
+// The 4-byte unit of texel (x, y) in strip `strip` of the copy, per lane:
+// (strip * width + x) * 4 + (y - 3 * strip).
+[[gnu::always_inline]] inline __m512i unitInStrip16(int width, __m512i x, __m512i y, __m512i strip) {
+  const __m512i row = _mm512_sub_epi32(y, _mm512_mullo_epi32(strip, _mm512_set1_epi32(kStripStep)));
+  const __m512i column = _mm512_add_epi32(_mm512_mullo_epi32(strip, _mm512_set1_epi32(width)), x);
+  return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row);
+}
+
 struct StripColumns16 {
   __m512i left, right;   // per lane, the 4-byte units of the footprint's columns x0 and x1 at row y0
 };
 
 // Where a footprint with columns x0, x1 and first row y0 starts in the strip copy, as
-// stripUnit of footprint_strips.h: (strip * width + x) * 4 + (y0 - 3 * strip).
+// stripUnit of footprint_strips.h: in strip y0 / 3.
 [[gnu::always_inline]] inline StripColumns16 stripColumns16(int width, const FixedTaps16& x, __m512i y0) {
-  const __m512i strip = stripIndex16(y0);
-  const __m512i row = _mm512_sub_epi32(y0, _mm512_mullo_epi32(strip, _mm512_set1_epi32(kStripStep)));
-  const __m512i column0 = _mm512_add_epi32(_mm512_mullo_epi32(strip, _mm512_set1_epi32(width)), x.x0);
-  const __m512i left = _mm512_add_epi32(_mm512_slli_epi32(column0, 2), row);
+  const __m512i left = unitInStrip16(width, x.x0, y0, stripIndex16(y0));
   return {left, _mm512_add_epi32(left, _mm512_slli_epi32(_mm512_sub_epi32(x.x1, x.x0), 2))};
 }
 
 // The 4-byte units of any texels (x, y) in a strip copy that holds the texels
-// (footprint_strips.h's stripUnitOfTexel per lane).
+// (footprint_strips.h's stripUnitOfTexel per lane: a last row no strip starts at is in the
+// last strip).
 [[gnu::always_inline]] inline __m512i stripTexelUnits16(const Texture& t, __m512i x, __m512i y) {
   const __m512i strip = _mm512_min_epi32(stripIndex16(y), _mm512_set1_epi32(int(stripCount(t.height)) - 1));
-  const __m512i row = _mm512_sub_epi32(y, _mm512_mullo_epi32(strip, _mm512_set1_epi32(kStripStep)));
-  const __m512i column = _mm512_add_epi32(_mm512_mullo_epi32(strip, _mm512_set1_epi32(t.width)), x);
-  return _mm512_add_epi32(_mm512_slli_epi32(column, 2), row);
+  return unitInStrip16(t.width, x, y, strip);
 }
 
 // Whether sampleRgba8Pair is this texture's lookup under the active method set.

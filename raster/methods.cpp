@@ -11,7 +11,7 @@ namespace {
 // step's value lives in a MethodSet.
 struct StepBinding {
   const char* step;
-  std::array<const char*, 3> names;   // unused slots are nullptr
+  std::array<const char*, 4> names;   // unused slots are nullptr
   uint8_t (*get)(const MethodSet&);   // the enum's value, an index into names
   void (*set)(MethodSet&, uint8_t);
 };
@@ -24,7 +24,7 @@ void setField(MethodSet& set, uint8_t index) { set.*Field = std::remove_referenc
 
 const std::array<StepBinding, 6>& bindings() {
   static const std::array<StepBinding, 6> table{{
-      {"math", {"llvmpipe", "libm", "fast"}, RASTER_STEP_FIELD(math)},
+      {"math", {"llvmpipe", "libm", "fast", "fast-fragment"}, RASTER_STEP_FIELD(math)},
       {"filter", {"8bit", "float", nullptr}, RASTER_STEP_FIELD(filter)},
       {"half", {"rtz", "rne", nullptr}, RASTER_STEP_FIELD(half)},
       {"div", {"exact", "approx", nullptr}, RASTER_STEP_FIELD(div)},
@@ -57,7 +57,8 @@ const std::vector<StepInfo>& methodCatalog() {
        "GLSL transcendentals in the shader ports: sin cos exp2 log2 pow atan atan2 asin acos",
        {{"llvmpipe", "llvmpipe's polynomials, bit for bit (relative error up to ~1e-4 in pow; 2-3 ulp in sin)"},
         {"libm", "the C library in double, rounded once: correctly rounded float; 5-20x slower per call"},
-        {"fast", "low-degree polynomials, documented bounds in fast_math.h; fewer operations than llvmpipe's"}}},
+        {"fast", "low-degree polynomials, documented bounds in fast_math.h; fewer operations than llvmpipe's"},
+        {"fast-fragment", "fast in fragment shaders, llvmpipe's in vertex shaders: the same speed, and every vertex (so coverage) is GL's"}}},
       {"filter",
        "bilinear weights of RGBA8 colour lookups (shadow compares are float in every method)",
        {{"8bit", "llvmpipe's AoS path: 8-bit weights, every lerp rounded to 8 bits"},
@@ -96,9 +97,11 @@ MethodSet presetMethods(std::string_view preset) {
     set.half = HalfMethod::NearestEven;
     return set;
   }
+  // Not div=approx, nor math=fast's vertex stage: neither buys a measurable share of a frame,
+  // and either moves hdr's one pixel where llvmpipe's rim pow takes a negative base at
+  // 1920x1080, which llvmpipe's bloom turns into a black block (TRADEOFF.md).
   if (preset == "fast") {
-    set.math = MathMethod::Fast;
-    set.div = DivMethod::Approx;
+    set.math = MathMethod::FastFragment;
     set.compare = CompareMethod::Nearest;
     return set;
   }
@@ -142,6 +145,12 @@ std::vector<std::pair<std::string, std::string>> methodNames(const MethodSet& se
   std::vector<std::pair<std::string, std::string>> names;
   for (const StepBinding& b : bindings()) names.emplace_back(b.step, b.names[b.get(set)]);
   return names;
+}
+
+MethodSet vertexStageSet(const MethodSet& set) {
+  MethodSet vertex = set;
+  if (vertex.math == MathMethod::FastFragment) vertex.math = MathMethod::Llvmpipe;
+  return vertex;
 }
 
 std::string methodLabel(const MethodSet& set) {

@@ -9,7 +9,8 @@
 //   fast     the fastest set that keeps every scene at >= 40 dB against llvmpipe.
 //
 // Where each step is decided:
-//   math    simd/gl_math.h        the GLSL transcendentals the shader ports call
+//   math    simd/gl_math.h        the GLSL transcendentals the shader ports call (the
+//                                 vertex stage's view of the set: Renderer::shadeVertices)
 //   filter  texture/sample_color  bilinear weights of RGBA8 colour lookups
 //   half    merge/color_write.h   float -> half rounding on writes to RGBA16F targets
 //   div     simd/div_approx.h     normalize / inversesqrt (simd/glsl.h), and the 1/w of
@@ -39,6 +40,7 @@ enum class MathMethod : uint8_t {
   Llvmpipe,   // llvmpipe's polynomials, bit for bit (gl_math.h)
   Libm,       // the C library in double, rounded once to float: the precise reference
   Fast,       // low-degree polynomials with a documented error bound (fast_math.h)
+  FastFragment,   // Fast in fragment shaders, Llvmpipe in vertex shaders (vertexStageSet)
 };
 enum class FilterMethod : uint8_t {
   Unorm8,     // llvmpipe's 8-bit fixed-point weights and lerps (AoS path)
@@ -101,6 +103,10 @@ std::vector<std::pair<std::string, std::string>> methodNames(const MethodSet& se
 std::string methodName(const MethodSet& set, std::string_view step);
 // Sets one step by names; MethodError for an unknown step or method.
 void setMethod(MethodSet& set, std::string_view step, std::string_view method);
+// The set the vertex stage runs under: `set` with math=fast-fragment read as llvmpipe's
+// math, so every vertex position and varying (and so which pixels a triangle covers) is
+// GL's; every other step as in `set`.
+MethodSet vertexStageSet(const MethodSet& set);
 // A short label: the preset's name when the set equals a preset, else "STEP=NAME,..." of
 // the steps that differ from gl.
 std::string methodLabel(const MethodSet& set);

@@ -9,6 +9,7 @@
 
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
+#include "raster/methods.h"
 #include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
 #include "raster/tile/tile_clear.h"
@@ -165,7 +166,11 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
 // Every vertex of the buffer once per instance, into shaded_: instances, and ranges of a
 // large buffer's vertices, in parallel (each vertex is shaded on its own, so the records
 // are the same however they are split).
+// The vertex stage runs under its own view of the method set (math=fast-fragment keeps
+// llvmpipe's math here); no fragment work is in flight while it runs, and the pool's
+// hand-off orders the switch before the workers read it.
 void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount) {
+  const ScopedMethods vertexMethods(vertexStageSet(methods::active()));
   ShadedVertices& shaded = shaded_;   // every record is written, so old contents never show
   shaded.varyingFloats = shader.varyingFloats();
   shaded.stride = vertex_record::kVaryings + shaded.varyingFloats;

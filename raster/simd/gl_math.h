@@ -490,7 +490,8 @@ namespace raster::glsl {
 // polynomials (fast_math.h). The step is one branch per call on a value fixed for the frame.
 #define RASTER_MATH_METHOD(llvmpipeForm, call)           \
   switch (methods::active().math) {                      \
-    case MathMethod::Fast: return fast::call;            \
+    case MathMethod::Fast:                               \
+    case MathMethod::FastFragment: return fast::call;    \
     case MathMethod::Libm: return libm::call;            \
     case MathMethod::Llvmpipe: break;                    \
   }                                                      \
@@ -540,7 +541,8 @@ template <float Y, class F> requires detail::LaneType<F>
     return detail::daz(squared * squared);
   } else {
     switch (methods::active().math) {
-      case MathMethod::Fast: return fast::powConst<Y>(x);   // fast::pow(x, F(Y)), shortened
+      case MathMethod::Fast:
+      case MathMethod::FastFragment: return fast::powConst<Y>(x);   // fast::pow(x, F(Y)), shortened
       case MathMethod::Libm: return libm::pow(x, F(Y));
       case MathMethod::Llvmpipe: break;
     }

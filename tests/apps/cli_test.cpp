@@ -145,7 +145,7 @@ TEST_SUITE("cli") {
     fs::create_directory(cwd);
     const RunResult list = runCli(cwd, "methods");
     REQUIRE(list.status == 0);
-    for (const char* line : {"math=llvmpipe (default)", "math=libm", "math=fast", "filter=8bit (default)", "filter=float",
+    for (const char* line : {"math=llvmpipe (default)", "math=libm", "math=fast", "math=fast-fragment", "filter=8bit (default)", "filter=float",
                              "half=rtz (default)", "half=rne", "div=exact (default)", "div=approx",
                              "interp=perspective (default)", "interp=affine", "compare=bilinear (default)", "compare=nearest",
                              "  gl  math=llvmpipe", "  precise ", "  fast "})
@@ -199,7 +199,7 @@ TEST_SUITE("cli") {
       if (p["kind"] == "driver") CHECK(p["methods"].is_null());
       else CHECK(p["methods"].size() == raster::methodCatalog().size());
     }
-    for (const char* name : {"gl", "precise", "fast", "math=libm", "math=fast", "filter=float", "half=rne", "div=approx",
+    for (const char* name : {"gl", "precise", "fast", "math=libm", "math=fast", "math=fast-fragment", "filter=float", "half=rne", "div=approx",
                              "interp=affine", "compare=nearest", "llvmpipe", "softpipe"})
       CHECK(names.count(name) == 1);
     for (const nlohmann::json& p : result["points"]) {

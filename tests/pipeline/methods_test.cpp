@@ -8,6 +8,8 @@
 //            held closer to llvmpipe than softpipe is, where softpipe differs.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -59,7 +61,7 @@ TEST_SUITE("methods") {
       }
     CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
-          "unknown method 'slow' for step math (methods: llvmpipe, libm, fast)");
+          "unknown method 'slow' for step math (methods: llvmpipe, libm, fast, fast-fragment)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
           "unknown step 'blend' (steps: math, filter, half, div, interp, compare)");
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
@@ -72,6 +74,33 @@ TEST_SUITE("methods") {
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("gl"), gl, 320, 240).maxAbs == 0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("fast"), gl, 320, 240).psnr >= 40.0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("precise"), gl, 320, 240).psnr >= 30.0);
+    }
+  }
+
+  TEST_CASE("math=fast-fragment keeps llvmpipe's vertex math: hdr's geometry and its one NaN pixel are llvmpipe's") {
+    // At 1920x1080, t = 1, llvmpipe's rim pow takes a negative base at one pixel (a dot of
+    // two unit vectors rounds above 1) and its bloom spreads the NaN into a black block of
+    // the final image (TRADEOFF.md). math=fast's vertex sin and cos move the cubes by ulps
+    // and the pixel with them (18.7 dB); fast-fragment places every vertex as llvmpipe does.
+    const int w = 1920, h = 1080;
+    const auto gl = renderWithLlvmpipe("hdr", 1.0f, w, h);
+    raster::MethodSet fragmentOnly;
+    fragmentOnly.math = raster::MathMethod::FastFragment;
+    const raster::ScopedMethods scoped(fragmentOnly);
+    auto ours = scenes::makeRasterBackend(0);
+    const auto mine = renderScene(*ours, "hdr", 1.0f, w, h);
+    REQUIRE(mine.size() == gl.size());
+    for (size_t i = 0; i < mine.size(); ++i) {
+      const compare::TargetStats stats = compare::compareImages(mine[i].name, mine[i].image, gl[i].image);
+      CAPTURE(compare::formatStatsLine(stats));
+      if (mine[i].name == "hdr_depth") CHECK(stats.maxAbs == 0);
+      if (mine[i].name == "hdr_scene") {
+        CHECK(stats.maxUlps <= 1);   // fast pow in the fragment shader: at most one half ulp
+        const auto nans = std::count_if(mine[i].image.floats.begin(), mine[i].image.floats.end(),
+                                        [](float v) { return std::isnan(v); });
+        CHECK(nans > 0);   // llvmpipe's NaN pixel, made the same way
+      }
+      if (mine[i].name == "final") CHECK(stats.psnr >= 40.0);
     }
   }
 

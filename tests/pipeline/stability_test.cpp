@@ -47,12 +47,16 @@ TEST_SUITE("stability") {
   }
 
   TEST_CASE("hdr time: past 1e7 s llvmpipe's sin and cos leave their range; libm and fast sin part from them") {
-    const json s = sweep("hdr --param time=1e7:1e8:2 --methods gl,fast,math=libm --size 96x72");
-    for (const char* method : {"fast", "math=libm"}) {
+    const json s = sweep("hdr --param time=1e7:1e8:2 --methods gl,fast,math=fast,math=libm --size 96x72");
+    for (const char* method : {"math=fast", "math=libm"}) {
       CHECK(pointOf(s, method, 1e7)["fails"] == false);
       CHECK(pointOf(s, method, 1e8)["fails"] == true);
     }
     CHECK(pointOf(s, "gl", 1e8)["identical_to_llvmpipe"] == true);
+    // The time reaches only the vertex shader's sin and cos, which the fast preset
+    // (math=fast-fragment) leaves llvmpipe's: it follows llvmpipe where math=fast parts.
+    const json fast = pointOf(s, "fast", 1e8);
+    CHECK((fast["identical_to_llvmpipe"] == true || fast["psnr_vs_llvmpipe_db"].get<double>() > 60.0));
   }
 
   TEST_CASE("deferred world_offset: precise's rounding of the half-float G-buffer moves SSAO past 30 dB at 100") {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The sweeps STABILITY.md shows: every parameter of every scene driven toward where methods
 # fail, each method set and softpipe against llvmpipe. Writes docs/stability/SCENE-PARAM/
-# (sweep.json, sweep.md, sweep.png, sweep.svg). About half an hour on 2 cores.
+# (sweep.json, sweep.md, sweep.png, sweep.svg). About 9 minutes on 2 cores.
 # Usage: bench/stability_sweeps.sh [RASTER_BINARY] [ONLY_SCENE]
 set -euo pipefail
 cd "$(dirname "$0")/.."

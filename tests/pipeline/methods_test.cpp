@@ -52,6 +52,14 @@ TEST_SUITE("methods") {
     CHECK(raster::methodLabel(set) == "math=fast,half=rne");
     CHECK(raster::methodLabel(raster::presetMethods("precise")) == "precise");
     CHECK(raster::methodName(set, "half") == "rne");
+    // The vertex stage's view: fast-fragment reads as llvmpipe's math there, every other
+    // step and every other math method as set.
+    const raster::MethodSet fast = raster::presetMethods("fast");
+    CHECK(fast.math == raster::MathMethod::FastFragment);
+    raster::MethodSet vertexFast = fast;
+    vertexFast.math = raster::MathMethod::Llvmpipe;
+    CHECK(raster::vertexStageSet(fast) == vertexFast);
+    CHECK(raster::vertexStageSet(set) == set);
     // Every catalog entry round-trips through its name.
     for (const raster::StepInfo& step : raster::methodCatalog())
       for (const raster::MethodInfo& method : step.methods) {

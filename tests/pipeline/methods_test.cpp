@@ -21,11 +21,16 @@ namespace {
 using testing_support::renderScene;
 using testing_support::renderWithLlvmpipe;
 
-compare::TargetStats finalAgainstLlvmpipe(const std::string& scene, const raster::MethodSet& methods,
-                                          const std::vector<scenes::Target>& gl, int w, int h) {
+// Every target of this pipeline's frame at t = 1 under `methods`.
+std::vector<scenes::Target> renderWithMethods(const std::string& scene, const raster::MethodSet& methods, int w, int h) {
   const raster::ScopedMethods scoped(methods);
   auto ours = scenes::makeRasterBackend(0);
-  const auto mine = renderScene(*ours, scene, 1.0f, w, h);
+  return renderScene(*ours, scene, 1.0f, w, h);
+}
+
+compare::TargetStats finalAgainstLlvmpipe(const std::string& scene, const raster::MethodSet& methods,
+                                          const std::vector<scenes::Target>& gl, int w, int h) {
+  const auto mine = renderWithMethods(scene, methods, w, h);
   const compare::TargetStats stats = compare::compareImages("final", mine.back().image, gl.back().image);
   MESSAGE(scene << " " << raster::methodLabel(methods) << ": " << compare::formatStatsLine(stats));
   return stats;
@@ -94,9 +99,7 @@ TEST_SUITE("methods") {
     const auto gl = renderWithLlvmpipe("hdr", 1.0f, w, h);
     raster::MethodSet fragmentOnly;
     fragmentOnly.math = raster::MathMethod::FastFragment;
-    const raster::ScopedMethods scoped(fragmentOnly);
-    auto ours = scenes::makeRasterBackend(0);
-    const auto mine = renderScene(*ours, "hdr", 1.0f, w, h);
+    const auto mine = renderWithMethods("hdr", fragmentOnly, w, h);
     REQUIRE(mine.size() == gl.size());
     for (size_t i = 0; i < mine.size(); ++i) {
       const compare::TargetStats stats = compare::compareImages(mine[i].name, mine[i].image, gl[i].image);

@@ -43,7 +43,7 @@ if [ "${RASTER_PGO:-0}" = 1 ] && "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version";
     cmake -S . -B build-pgo/instrumented -DCMAKE_BUILD_TYPE=Release -DRASTER_PGO_GENERATE="$profile" > /dev/null
     cmake --build build-pgo/instrumented -j"$(nproc)" --target raster_cli
     rm -rf "$profile" build-pgo/train && mkdir -p build-pgo/train
-    for scene in shadow deferred hdr; do
+    for scene in $(build-pgo/instrumented/raster scenes); do
       for size in 640x480 1920x1080; do
         for time in 1 7.3; do
           build-pgo/instrumented/raster render "$scene" --size "$size" --time "$time" --threads 2 --quiet \
@@ -54,7 +54,7 @@ if [ "${RASTER_PGO:-0}" = 1 ] && "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version";
       done
     done
     # The objects that take the profile are compiled again, by the new counts.
-    find build/CMakeFiles/raster.dir build/CMakeFiles/scenes.dir build/CMakeFiles/raster_cli.dir \
+    find build/CMakeFiles/raster.dir build/CMakeFiles/scenes.dir build/CMakeFiles/cli.dir build/CMakeFiles/raster_cli.dir \
       -name '*.o' -delete 2>/dev/null || true
     renewed=1
   fi

@@ -28,7 +28,7 @@
 #include "apps/pass_timer.h"
 #include "raster/util/cycles.h"
 #include "scenes/backends.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

@@ -13,7 +13,7 @@
 #include <tuple>
 
 #include "scenes/memory_budget.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

@@ -30,6 +30,7 @@
 #include "compare/metrics.h"
 #include "compare/output_file.h"
 #include "scenes/backends.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

@@ -16,6 +16,7 @@
 #include "compare/target_dump.h"
 #include "scenes/backends.h"
 #include "scenes/memory_budget.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace fs = std::filesystem;

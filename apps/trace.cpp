@@ -21,6 +21,7 @@
 #include "raster/pixel_history.h"
 #include "raster/texture/format.h"
 #include "scenes/backends.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

@@ -30,7 +30,7 @@
 #include "raster/methods.h"
 #include "scenes/backends.h"
 #include "scenes/memory_budget.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

@@ -19,7 +19,7 @@
 #include "raster/view_recorder.h"
 #include "scenes/backends.h"
 #include "scenes/memory_budget.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace cli {
 namespace {

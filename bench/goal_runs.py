@@ -17,8 +17,9 @@ existing goals.json without running anything. Exit status: 0 when every configur
 the goal, 1 when one does not, 2 for bad arguments or a failed run.
 
 Usage: bench/goal_runs.py [--runs 3] [--frames 9] [--threads 2] [--sizes 640x480,1920x1080]
-                          [--presets gl,fast] [--scenes shadow,deferred,hdr] [--passes]
-                          [--raster build/raster] [--out bench/results] [--replot]
+                          [--presets gl,fast] [--scenes NAME,...] [--passes]
+                          [--raster build/raster] [--out bench/results] [--replot] [--dry-run]
+(--scenes: every scene of `raster scenes` by default; --dry-run prints the runs and runs none)
 (Debian's /usr/bin/python3, which has python3-matplotlib from ./setup.sh.)
 """
 import argparse
@@ -32,9 +33,9 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
+from raster_scenes import scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENES = ("shadow", "deferred", "hdr")
 PRESETS = ("gl", "precise", "fast")
 
 
@@ -56,7 +57,7 @@ def parse_args(argv):
     parser.add_argument("--threads", type=int, default=2, help="threads for both backends (default 2)")
     parser.add_argument("--sizes", default="640x480,1920x1080", help="comma-separated WxH list")
     parser.add_argument("--presets", default="gl,fast", help="comma-separated: gl, precise, fast")
-    parser.add_argument("--scenes", default=",".join(SCENES), help="comma-separated: shadow, deferred, hdr")
+    parser.add_argument("--scenes", help="comma-separated scene names (default: every scene of `raster scenes`)")
     parser.add_argument("--goal", type=float, default=3.0, help="median ratio a configuration needs (default 3.0)")
     parser.add_argument("--floor", type=float, default=2.7, help="lowest ratio any run may read (default 2.7)")
     parser.add_argument("--passes", action="store_true", help="also time each pass and list those below --pass-goal")
@@ -64,6 +65,7 @@ def parse_args(argv):
     parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results"), help="folder for goals.json, .md and .png")
     parser.add_argument("--replot", action="store_true", help="no runs: rewrite goals.md and goals.png from OUT/goals.json")
+    parser.add_argument("--dry-run", action="store_true", help="print the `raster bench` command lines, run none")
     args = parser.parse_args(argv)
     try:   # the chart needs it; found missing only after minutes of runs would lose them
         import matplotlib  # noqa: F401
@@ -71,19 +73,21 @@ def parse_args(argv):
         parser.error(f"matplotlib is missing from {sys.executable}: run ./setup.sh, or use /usr/bin/python3")
     if args.replot:
         return args
+    if not os.access(args.raster, os.X_OK):
+        parser.error(f"--raster: {args.raster} is not an executable (run ./setup.sh first)")
+    known_scenes = scene_names(args.raster)
     # A name given twice is measured once.
-    args.sizes, args.presets, args.scenes = (list(dict.fromkeys(v.split(","))) for v in (args.sizes, args.presets, args.scenes))
+    args.sizes, args.presets = (list(dict.fromkeys(v.split(","))) for v in (args.sizes, args.presets))
+    args.scenes = list(dict.fromkeys(args.scenes.split(","))) if args.scenes else known_scenes
     for size in args.sizes:
         if not re.fullmatch(r"[1-9]\d*x[1-9]\d*", size):
             parser.error(f"--sizes: '{size}' is not WxH (e.g. 640x480)")
-    for name, given, valid in (("--presets", args.presets, PRESETS), ("--scenes", args.scenes, SCENES)):
+    for name, given, valid in (("--presets", args.presets, PRESETS), ("--scenes", args.scenes, known_scenes)):
         for value in given:
             if value not in valid:
                 parser.error(f"{name}: unknown '{value}' (valid: {', '.join(valid)})")
     if args.runs < 1 or args.frames < 1 or args.threads < 1:
         parser.error("--runs, --frames and --threads must be at least 1")
-    if not os.access(args.raster, os.X_OK):
-        parser.error(f"--raster: {args.raster} is not an executable (run ./setup.sh first)")
     try:   # before any rendering: a run of many minutes must not end on an unwritable folder
         os.makedirs(args.out, exist_ok=True)
         with tempfile.TemporaryFile(dir=args.out):
@@ -93,14 +97,17 @@ def parse_args(argv):
     return args
 
 
+def bench_command(args, scene, size, preset, json_path):
+    cmd = [args.raster, "bench", scene, "--size", size, "--threads", str(args.threads), "--frames",
+           str(args.frames), "--preset", preset, "--quiet", "--json", json_path]
+    return cmd + ["--passes"] if args.passes else cmd
+
+
 def run_once(args, scene, size, preset):
     """One `raster bench` run; returns its JSON record."""
     with tempfile.TemporaryDirectory() as folder:
         json_path = os.path.join(folder, "bench.json")
-        cmd = [args.raster, "bench", scene, "--size", size, "--threads", str(args.threads), "--frames",
-               str(args.frames), "--preset", preset, "--quiet", "--json", json_path]
-        if args.passes:
-            cmd.append("--passes")
+        cmd = bench_command(args, scene, size, preset, json_path)
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             sys.stderr.write(f"goal_runs: {' '.join(cmd)} exited {done.returncode}:\n{done.stderr[-2000:]}")
@@ -218,6 +225,11 @@ def main(argv):
     if args.replot:
         return replot(args)
     configs = [(size, preset, scene) for size in args.sizes for preset in args.presets for scene in args.scenes]
+    if args.dry_run:
+        for run in range(args.runs):
+            for size, preset, scene in configs:
+                print(" ".join(bench_command(args, scene, size, preset, "RUN.json")))
+        return 0
     runs, started, total = [], time.time(), args.runs * len(configs)
     for run in range(args.runs):
         for size, preset, scene in configs:

@@ -8,7 +8,8 @@ separate processes, and writes:
   bench/results/results.json   every figure
   bench/results/results.md     the table
   bench/results/frame_time.png frame time against pixel count, a line per backend, per scene
-Usage: bench/run_benchmarks.py [--quick] [--frames N] [--scenes shadow,deferred,hdr] [--replot]
+Usage: bench/run_benchmarks.py [--quick] [--frames N] [--scenes NAME,...] [--raster build/raster] [--replot] [--dry-run]
+(--scenes: every scene of `raster scenes` by default; --dry-run prints the runs and runs none)
 (Debian's /usr/bin/python3, which has python3-matplotlib from ./setup.sh.)
 """
 import argparse
@@ -19,6 +20,8 @@ import subprocess
 import sys
 import time
 
+from raster_scenes import scene_names
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RASTER = os.path.join(ROOT, "build", "raster")
 OUT = os.path.join(ROOT, "bench", "results")
@@ -26,19 +29,23 @@ SIZES = ["640x480", "1280x720", "1920x1080", "3840x2160"]
 LINE = re.compile(r"scene=(\S+) backend=(\S+) threads=(\d+) size=(\S+) median_ms=([\d.]+)")
 
 
-def run_bench(scene, size, threads, frames, driver="llvmpipe", extra=()):
+def bench_command(raster, scene, size, threads, frames, driver="llvmpipe"):
+    return [raster, "bench", scene, "--size", size, "--threads", str(threads), "--frames", str(frames),
+            "--warmup", "2", "--gl-driver", driver]
+
+
+def run_bench(raster, scene, size, threads, frames, driver="llvmpipe"):
     """One `raster bench` run; returns {backend: median_ms} and the breakdown text."""
-    cmd = [RASTER, "bench", scene, "--size", size, "--threads", str(threads), "--frames", str(frames),
-           "--warmup", "2", "--gl-driver", driver, *extra]
+    cmd = bench_command(raster, scene, size, threads, frames, driver)
     result = subprocess.run(cmd, capture_output=True, text=True, check=True)
     medians = {m.group(2): float(m.group(5)) for m in LINE.finditer(result.stdout)}
     breakdown = "\n".join(l for l in result.stdout.splitlines() if l.startswith("  ") or l.startswith("per frame"))
     return medians, breakdown
 
 
-def peak_memory_mb(scene, size, backend):
+def peak_memory_mb(raster, scene, size, backend):
     """Peak resident memory of one `raster render` process (this pipeline or GL)."""
-    cmd = [RASTER, "render", scene, "--size", size, "--backend", backend, "--out", os.devnull + ".png"]
+    cmd = [raster, "render", scene, "--size", size, "--backend", backend, "--out", os.devnull + ".png"]
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     _, status, usage = os.wait4(proc.pid, 0)
     return usage.ru_maxrss / 1024.0   # ru_maxrss is in KiB on Linux
@@ -48,37 +55,50 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="640x480 and 1920x1080 only, fewer frames")
     parser.add_argument("--frames", type=int, default=15, help="timed frames per backend and configuration")
-    parser.add_argument("--scenes", default="shadow,deferred,hdr")
+    parser.add_argument("--scenes", help="comma-separated scene names (default: every scene of `raster scenes`)")
+    parser.add_argument("--raster", default=RASTER, help="the raster binary (default: build/raster)")
     parser.add_argument("--replot", action="store_true", help="only rewrite the table and chart from results.json")
+    parser.add_argument("--dry-run", action="store_true", help="print the `raster bench` command lines, run none")
     args = parser.parse_args()
     if args.replot:
         with open(os.path.join(OUT, "results.json")) as f:
             results = json.load(f)
         write_table(results)
-        write_chart(results, sorted({r["scene"] for r in results["runs"]}, key=["shadow", "deferred", "hdr"].index))
+        # The scenes in the order the runs first name them.
+        write_chart(results, list(dict.fromkeys(r["scene"] for r in results["runs"])))
         return
-    if not os.path.exists(RASTER):
-        sys.exit("run_benchmarks: build/raster is missing; run ./setup.sh first")
+    if not os.access(args.raster, os.X_OK):
+        sys.exit(f"run_benchmarks: {args.raster} is missing; run ./setup.sh first")
     sizes = ["640x480", "1920x1080"] if args.quick else SIZES
     frames = max(3, args.frames // 2) if args.quick else args.frames
-    scenes = args.scenes.split(",")
+    known = scene_names(args.raster)
+    scenes = args.scenes.split(",") if args.scenes else known
+    for scene in scenes:
+        if scene not in known:
+            parser.error(f"--scenes: unknown '{scene}' (valid: {', '.join(known)})")
+    jobs = [(s, size, t) for s in scenes for size in sizes for t in (1, 2)]
+    if args.dry_run:
+        for scene, size, threads in jobs:
+            print(" ".join(bench_command(args.raster, scene, size, threads, frames)))
+        for scene in scenes:
+            print(" ".join(bench_command(args.raster, scene, "640x480", 2, max(3, frames // 3), "softpipe")))
+        return
     os.makedirs(OUT, exist_ok=True)
 
     results = {"frames": frames, "machine": os.uname().machine, "cores": os.cpu_count(), "runs": [], "memory_mb": {}}
-    jobs = [(s, size, t) for s in scenes for size in sizes for t in (1, 2)]
     started = time.time()
     for i, (scene, size, threads) in enumerate(jobs, 1):
         print(f"[{i}/{len(jobs)}] {scene} {size} threads={threads} ({time.time() - started:.0f} s)", flush=True)
-        medians, breakdown = run_bench(scene, size, threads, frames)
+        medians, breakdown = run_bench(args.raster, scene, size, threads, frames)
         results["runs"].append({"scene": scene, "size": size, "threads": threads, "medians_ms": medians,
                                 "breakdown": breakdown})
     for scene in scenes:   # softpipe for scale, at 640x480
         print(f"softpipe {scene} 640x480", flush=True)
-        medians, _ = run_bench(scene, "640x480", 2, max(3, frames // 3), driver="softpipe")
+        medians, _ = run_bench(args.raster, scene, "640x480", 2, max(3, frames // 3), driver="softpipe")
         results["runs"].append({"scene": scene, "size": "640x480", "threads": 2, "medians_ms": medians,
                                 "driver": "softpipe"})
         for backend in ("raster", "gl"):
-            results["memory_mb"].setdefault(scene, {})[backend] = peak_memory_mb(scene, "1920x1080", backend)
+            results["memory_mb"].setdefault(scene, {})[backend] = peak_memory_mb(args.raster, scene, "1920x1080", backend)
 
     with open(os.path.join(OUT, "results.json"), "w") as f:
         json.dump(results, f, indent=1)

@@ -29,7 +29,8 @@ namespace scenes {
   X(glDeleteProgram) X(glDeleteShader) X(glDepthFunc) X(glDepthMask) X(glDisable) X(glDrawBuffer)       \
   X(glDrawBuffers) X(glDrawElements) X(glDrawElementsInstanced) X(glEnable)                             \
   X(glEnableVertexAttribArray) X(glFinish) X(glFramebufferTexture2D) X(glFrontFace) X(glGenBuffers)     \
-  X(glGenFramebuffers) X(glGenTextures) X(glGenVertexArrays) X(glGetError) X(glGetIntegerv)             \
+  X(glGenFramebuffers) X(glGenTextures) X(glGenVertexArrays) X(glGetActiveUniform) X(glGetError)        \
+  X(glGetIntegerv)                                                                                      \
   X(glGetProgramInfoLog) X(glGetProgramiv) X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetString)        \
   X(glGetUniformLocation) X(glLinkProgram) X(glPolygonOffset) X(glReadBuffer) X(glReadPixels)           \
   X(glShaderSource) X(glTexImage2D) X(glTexParameteri) X(glUniform1f) X(glUniform1i) X(glUniform2fv)    \

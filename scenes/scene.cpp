@@ -1,9 +1,8 @@
-// The scene names and the asset folder lookup (the factory is scene_factory.cpp).
+// What every scene shares: the --float-final target, and the asset folder lookup.
 #include "scenes/scene.h"
 
 #include <algorithm>
 #include <cstdlib>
-
 
 namespace scenes {
 
@@ -16,8 +15,6 @@ void Scene::createFinalTarget(Backend& backend, const SceneOptions& options, boo
   const Handle depthBuffer = depth ? backend.createTexture({w, h, TexelFormat::Depth24, nearest}) : 0;
   final_ = backend.createFramebuffer({{color}, depthBuffer});
 }
-
-std::vector<std::string> sceneNames() { return {"shadow", "deferred", "hdr"}; }
 
 std::string assetDirectory(const SceneOptions& options) {
   if (!options.assetDir.empty()) return options.assetDir;

@@ -61,10 +61,6 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::vector<std::string> sceneNames();
-// Throws SceneError for an unknown name.
-std::unique_ptr<Scene> makeScene(const std::string& name, const SceneOptions& options);
-
 // The asset folder: options.assetDir, else $RASTER_ASSETS, else the repository's assets/
 // (checked against its SHA256SUMS: asset_manifest.h).
 std::string assetDirectory(const SceneOptions& options);

@@ -5,49 +5,39 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace scenes {
-namespace {
+#include "scenes/registry.h"
 
-ParamSpec timeParam() {
+namespace scenes {
+namespace param {
+
+ParamSpec time() {
   return {"time", 0, 1e30, false, "s", "1",
           "time of the frame; large values lose float precision in every angle the scene derives from it"};
 }
-ParamSpec sizeParam() {
+ParamSpec size() {
   return {"size", 1, 16384, true, "px", "640x480",
           "final image WxH, or a width at 4:3; 1x1 to 16384 (GL_MAX_TEXTURE_SIZE of llvmpipe)"};
 }
-ParamSpec nearParam() {
+ParamSpec nearPlane() {
   return {"near", 1e-7, 10, false, "", "0.1",
           "camera near plane; toward 0 the depth buffer's precision collapses (z-fighting)"};
 }
-ParamSpec worldOffsetParam() {
+ParamSpec worldOffset() {
   return {"world_offset", -1e20, 1e20, false, "", "0",
           "scene and camera moved by (d, d, d): float precision far from the origin"};
 }
-ParamSpec lightElevationParam(const char* byDefault) {
+ParamSpec lightElevation(const char* byDefault) {
   return {"light_elevation", 0.01, 89.9, false, "deg", byDefault,
           "sun angle above the ground; toward 0 the light grazes the floor (shadow acne, peter-panning)"};
 }
-ParamSpec offsetScaleParam() {
+ParamSpec offsetScale() {
   return {"offset_scale", 0, 1000, false, "", "1",
           "multiplier on the shadow pass's polygon offset (factor 2, units 4); 0 = none (acne)"};
 }
 
-}  // namespace
+}  // namespace param
 
-std::vector<ParamSpec> sceneParams(const std::string& scene) {
-  if (scene == "shadow")   // light_dir = normalize(cos, 1.4, sin): atan(1.4) above the ground
-    return {timeParam(), sizeParam(), lightElevationParam("54.46"), offsetScaleParam(), nearParam(), worldOffsetParam()};
-  if (scene == "deferred")   // normalize(0.6 cos, 1.05, 0.6 sin): atan(1.05 / 0.6)
-    return {timeParam(), sizeParam(), lightElevationParam("60.26"), offsetScaleParam(), nearParam(), worldOffsetParam()};
-  if (scene == "hdr")
-    return {timeParam(), sizeParam(),
-            {"instances", 1, 200000, true, "", "1000", "cubes in the swarm: many small triangles, deep overdraw"},
-            {"intensity", 0, 1e10, false, "", "1",
-             "scale on every cube's colour; past about 65504 the half-float scene target overflows to inf"},
-            nearParam(), worldOffsetParam()};
-  return {};
-}
+std::vector<ParamSpec> sceneParams(const std::string& scene) { return sceneEntry(scene).params; }
 
 ParamSpec findParam(const std::string& scene, const std::string& name) {
   const std::vector<ParamSpec> specs = sceneParams(scene);
@@ -93,13 +83,9 @@ glm::vec3 lightAtElevation(float yaw, float elevationDegrees) {
 }
 
 void applyParam(SceneParams& params, const std::string& name, double value) {
-  const float v = float(value);
-  if (name == "light_elevation") params.lightElevation = v;
-  else if (name == "offset_scale") params.offsetScale = v;
-  else if (name == "near") params.nearPlane = v;
-  else if (name == "world_offset") params.worldOffset = v;
-  else if (name == "intensity") params.intensity = v;
-  else throw ParamError("parameter '" + name + "' is not a scene setting");
+  if (name == "time" || name == "size" || name == "instances")
+    throw ParamError("parameter '" + name + "' is an option of the frame, not a scene setting");
+  params.set(name, float(value));
 }
 
 }  // namespace scenes

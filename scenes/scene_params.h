@@ -9,22 +9,30 @@
 // same bytes as before parameters existed).
 #pragma once
 
+#include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 namespace scenes {
 
-// What --set changes inside a scene; every field unset (or neutral) by default.
-struct SceneParams {
-  std::optional<float> lightElevation;   // degrees above the ground plane (shadow, deferred)
-  std::optional<float> offsetScale;      // multiplier on the shadow pass's polygon offset
-  std::optional<float> nearPlane;        // the camera's near plane, world units
-  std::optional<float> worldOffset;      // scene and camera moved by (d, d, d)
-  std::optional<float> intensity;        // scale on every cube's colour (hdr)
+// What --set changes inside a scene: the value of each parameter set, by name. A scene
+// reads its own parameters with get(); one never set keeps the scene's own value.
+class SceneParams {
+ public:
+  std::optional<float> get(std::string_view name) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? std::nullopt : std::optional<float>(it->second);
+  }
+  void set(const std::string& name, float value) { values_[name] = value; }
+
+ private:
+  std::map<std::string, float, std::less<>> values_;
 };
 
 struct ParamSpec {
@@ -41,8 +49,9 @@ struct ParamError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// The parameters of a scene, in the order `raster params` lists them. `time`, `size` and
-// `instances` are the frame's own options; the others land in SceneParams.
+// The parameters of a scene (its registry row, scenes/registry.h), in the order `raster
+// params` lists them. `time`, `size` and `instances` are the frame's own options; the
+// others land in SceneParams.
 std::vector<ParamSpec> sceneParams(const std::string& scene);
 ParamSpec findParam(const std::string& scene, const std::string& name);   // ParamError
 
@@ -52,11 +61,22 @@ double parseParamValue(const std::string& scene, const std::string& name, const 
 // `size` as WxH, or a width (the height then keeps the scene's 4:3 aspect, at least 1).
 bool parseSizeValue(const std::string& text, int& width, int& height);
 
+// The parameters several scenes share, for their registry rows; a scene's own are written
+// in its folder.
+namespace param {
+ParamSpec time();
+ParamSpec size();
+ParamSpec nearPlane();     // "near"
+ParamSpec worldOffset();   // "world_offset"
+ParamSpec lightElevation(const char* byDefault);   // "light_elevation", the scene's own angle
+ParamSpec offsetScale();   // "offset_scale"
+}  // namespace param
+
 // The unit direction toward a sun at `yaw` radians around the y axis and `elevationDegrees`
 // above the ground: the form light_elevation gives the scenes' orbiting suns.
 glm::vec3 lightAtElevation(float yaw, float elevationDegrees);
 
-// Sets a SceneParams field (not time, size or instances).
+// Sets a parameter in SceneParams (not time, size or instances, which the frame holds).
 void applyParam(SceneParams& params, const std::string& name, double value);
 
 }  // namespace scenes

@@ -1,3 +1,29 @@
 // The test binary's entry point (doctest). ctest runs it once per test suite.
-#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+//
+// $RASTER_TEST_SCENE_ALIAS=NEW=EXISTING registers one more scene row first: EXISTING's
+// under the name NEW. The registry suite runs the generic suites that way
+// (tests/registry/registry_test.cpp), to see that a new row is all they need.
+#define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+#include "scenes/registry.h"
+
+int main(int argc, char** argv) {
+  if (const char* alias = std::getenv("RASTER_TEST_SCENE_ALIAS"); alias && *alias) {
+    const std::string text = alias;
+    const size_t equals = text.find('=');
+    if (equals == std::string::npos) {
+      std::cerr << "RASTER_TEST_SCENE_ALIAS: '" << text << "' is not NEW=EXISTING\n";
+      return 2;
+    }
+    scenes::SceneEntry row = scenes::sceneEntry(text.substr(equals + 1));
+    row.name = text.substr(0, equals);
+    scenes::registerScene(std::move(row));
+  }
+  doctest::Context context(argc, argv);
+  return context.run();
+}

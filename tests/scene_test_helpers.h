@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -15,9 +16,24 @@
 #include "compare/target_dump.h"
 #include "compare/metrics.h"
 #include "scenes/backends.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace testing_support {
+
+// The scenes the suites that cover every scene run: every row of the registry, or those
+// named in $RASTER_TEST_SCENES (comma-separated), to run a new scene through them alone.
+inline std::vector<std::string> scenesUnderTest() {
+  const char* only = std::getenv("RASTER_TEST_SCENES");
+  if (!only || !*only) return scenes::sceneNames();
+  std::vector<std::string> names;
+  std::string list = only;
+  for (size_t start = 0; start <= list.size();) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    if (comma > start) names.push_back(scenes::sceneEntry(list.substr(start, comma - start)).name);
+    start = comma + 1;
+  }
+  return names;
+}
 
 // Renders one frame of `scene` at time t and size w x h, and reads every target back.
 inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const std::string& scene, float t, int w,

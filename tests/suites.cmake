@@ -1,9 +1,27 @@
 # Each doctest test suite is one ctest test, so `ctest` output names the area that failed.
-set(RASTER_TEST_SUITES format clears simd math_methods methods geometry texture hostile gl_backend raster_vs_gl derivatives shadow_compare shaders scene_shadow scene_deferred determinism cli assets gl_math hdr_features scene_hdr soup sweep stability image_io trace report views)
+# The suites are read from the test sources (every TEST_SUITE("NAME")): a suite that
+# exists, runs. Editing a test source configures again, so a new suite is found at once;
+# the suites_registered test checks the list against the binary's own.
+set(RASTER_TEST_SUITES "")
+foreach(source ${TEST_SOURCES})
+  file(STRINGS ${source} declared REGEX "TEST_SUITE(_BEGIN)?\\(\"[^\"]+\"\\)")
+  foreach(line ${declared})
+    string(REGEX REPLACE ".*TEST_SUITE(_BEGIN)?\\(\"([^\"]+)\"\\).*" "\\2" suite "${line}")
+    list(APPEND RASTER_TEST_SUITES ${suite})
+  endforeach()
+endforeach()
+list(REMOVE_DUPLICATES RASTER_TEST_SUITES)
+list(SORT RASTER_TEST_SUITES)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${TEST_SOURCES})
 foreach(suite ${RASTER_TEST_SUITES})
   add_test(NAME ${suite} COMMAND raster_tests --test-suite=${suite} --no-intro)
   set_tests_properties(${suite} PROPERTIES ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
 endforeach()
+# Every suite the binary holds is one of the list above (a suite declared in a way the
+# scan above does not read would otherwise never run).
+add_test(NAME suites_registered COMMAND ${CMAKE_COMMAND} -DBINARY=$<TARGET_FILE:raster_tests>
+         "-DEXPECTED=${RASTER_TEST_SUITES}" -P ${CMAKE_CURRENT_LIST_DIR}/check_suites.cmake)
+
 # The longest suite (GL comparisons of the deferred scene; about 10 minutes under the
 # sanitizers) starts first, so `ctest -j` runs the others beside it.
 set_tests_properties(scene_deferred PROPERTIES COST 1000)

@@ -13,6 +13,10 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "scenes/assets.h"
+#include "shaders_cpp/deferred/gbuffer.h"
+#include "shaders_cpp/deferred/lighting.h"
+#include "shaders_cpp/deferred/ssao.h"
+#include "shaders_cpp/shadow/shadow.h"
 
 namespace scenes {
 namespace {
@@ -115,21 +119,23 @@ class DeferredScene final : public Scene {
   }
 
   void renderFrame(Backend& b, float t) override {
+    // --set NAME=VALUE (the parameters of this scene's row); unset, the seed's own value.
     const SceneParams& p = options_.params;
+    const std::optional<float> worldOffset = p.get("world_offset"), lightElevation = p.get("light_elevation"), nearPlane = p.get("near"), offsetScale = p.get("offset_scale");
     // world_offset moves every model and both eyes by (d, d, d); unset, nothing is touched.
-    auto moved = [&](glm::vec3 v) { return p.worldOffset ? v + glm::vec3(*p.worldOffset) : v; };
+    auto moved = [&](glm::vec3 v) { return worldOffset ? v + glm::vec3(*worldOffset) : v; };
     const int w = std::max(options_.width, 1), h = std::max(options_.height, 1);
     const float cam_angle = t * 0.3f;
     const glm::vec3 cam = moved(glm::vec3(std::cos(cam_angle) * 4.6f, 2.3f, std::sin(cam_angle) * 4.6f));
     const glm::mat4 u_view = glm::lookAtRH(cam, moved(glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(0, 1, 0));
     const glm::mat4 u_proj =
-        glm::perspectiveRH_NO(50.0f * PI / 180.0f, float(w) / float(h), p.nearPlane.value_or(0.1f), 60.0f);
+        glm::perspectiveRH_NO(50.0f * PI / 180.0f, float(w) / float(h), nearPlane.value_or(0.1f), 60.0f);
     const float sun_yaw = t * 0.25f;
-    const glm::vec3 light_dir = p.lightElevation ? lightAtElevation(sun_yaw, *p.lightElevation)
+    const glm::vec3 light_dir = lightElevation ? lightAtElevation(sun_yaw, *lightElevation)
                                                  : glm::normalize(glm::vec3(std::cos(sun_yaw) * 0.6f, 1.05f, std::sin(sun_yaw) * 0.6f));
     const glm::mat4 u_light_vp = glm::orthoRH_NO(-4.0f, 4.0f, -4.0f, 4.0f, 0.1f, 20.0f) *
                                  glm::lookAtRH(moved(light_dir * 8.0f), moved(glm::vec3(0.0f, 0.8f, 0.0f)), glm::vec3(0, 1, 0));
-    const glm::mat4 model = p.worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*p.worldOffset)) : glm::mat4(1.0f);
+    const glm::mat4 model = worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*worldOffset)) : glm::mat4(1.0f);
 
     // Pass 1: shadow map from the sun's POV, with slope-scaled depth bias.
     ClearOp clearDepth;
@@ -138,8 +144,8 @@ class DeferredScene final : public Scene {
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
-    shadowState.offsetFactor = p.offsetScale ? 2.0f * *p.offsetScale : 2.0f;
-    shadowState.offsetUnits = p.offsetScale ? 4.0f * *p.offsetScale : 4.0f;
+    shadowState.offsetFactor = offsetScale ? 2.0f * *offsetScale : 2.0f;
+    shadowState.offsetUnits = offsetScale ? 4.0f * *offsetScale : 4.0f;
     b.setUniform(prog_shadow_, "u_light_vp", u_light_vp);
     b.setUniform(prog_shadow_, "u_model", model);
     b.draw(prog_shadow_, floor_, shadowState);
@@ -223,6 +229,24 @@ class DeferredScene final : public Scene {
 
 }  // namespace
 
-std::unique_ptr<Scene> makeDeferredScene(const SceneOptions& options) { return std::make_unique<DeferredScene>(options); }
+SceneEntry deferredScene() {
+  return {
+      .name = "deferred",
+      .description = "\"10 - Deferred Shading + MRT\": real assets (OBJ, 2K JPEGs, HDR), MRT G-buffer (RGBA8 + 2 x RGBA16F + Z16), derivative normal mapping, SSAO, 5x5 PCF, point lights, equirectangular IBL",
+      .seed = "000_a9faaef907542225.txt",
+      .make = [](const SceneOptions& options) -> std::unique_ptr<Scene> { return std::make_unique<DeferredScene>(options); },
+      // light_dir = normalize(0.6 cos, 1.05, 0.6 sin): atan(1.05 / 0.6) above the ground
+      .params = {param::time(), param::size(), param::lightElevation("60.26"), param::offsetScale(), param::nearPlane(),
+                 param::worldOffset()},
+      .programs = {programEntry<shaders::shadow::ShadowPass>(), programEntry<shaders::deferred::GBufferPass>(),
+                   programEntry<shaders::deferred::SsaoPass>(), programEntry<shaders::deferred::LightingPass>()},
+      .assets = {CAT_OBJ, CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_AO, BRICK_ROUGH, HDRI},
+      .sweeps = {"light_elevation=1:80:10:log",
+                 "near=0.1:1e-6:11:log",
+                 "world_offset=1:1e6:13:log",
+                 "time=1:1e10:11:log",
+                 "size=1:8192:10:log --no-softpipe"},
+  };
+}
 
 }  // namespace scenes

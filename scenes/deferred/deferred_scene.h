@@ -3,12 +3,11 @@
 // and image-based lighting, and a filmstrip of the G-buffer along the bottom.
 #pragma once
 
-#include <memory>
-
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace scenes {
 
-std::unique_ptr<Scene> makeDeferredScene(const SceneOptions& options);
+// The scene's registry row (scenes/registry.h).
+SceneEntry deferredScene();
 
 }  // namespace scenes

@@ -35,6 +35,12 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
+#include "shaders_cpp/hdr/bright.h"
+#include "shaders_cpp/hdr/composite.h"
+#include "shaders_cpp/hdr/down.h"
+#include "shaders_cpp/hdr/scene.h"
+#include "shaders_cpp/hdr/up.h"
+
 namespace scenes {
 namespace {
 
@@ -82,6 +88,7 @@ MeshData quadMesh() {
 // world_offset adds (d, d, d) to every offset and intensity scales every colour (params,
 // when set; unset, the seed's values are untouched).
 std::vector<float> gen_instances(int n, const SceneParams& params) {
+  const std::optional<float> worldOffset = params.get("world_offset"), intensity = params.get("intensity");
   std::vector<float> result;
   result.reserve(size_t(n) * 8);
   for (int i = 0; i < n; ++i) {
@@ -97,8 +104,8 @@ std::vector<float> gen_instances(int n, const SceneParams& params) {
     const float cg = 0.5f + 0.5f * std::cos(hue + 2.0944f);
     const float cb = 0.5f + 0.5f * std::cos(hue + 4.1888f);
     const float emissive = (i % 9 == 0) ? 1.0f : 0.0f;
-    const float d = params.worldOffset.value_or(0.0f), k = params.intensity.value_or(1.0f);
-    if (params.worldOffset || params.intensity) result.insert(result.end(), {x + d, y + d, z + d, cr * k, cg * k, cb * k, fi, emissive});
+    const float d = worldOffset.value_or(0.0f), k = intensity.value_or(1.0f);
+    if (worldOffset || intensity) result.insert(result.end(), {x + d, y + d, z + d, cr * k, cg * k, cb * k, fi, emissive});
     else result.insert(result.end(), {x, y, z, cr, cg, cb, fi, emissive});
   }
   return result;
@@ -155,11 +162,13 @@ class HdrScene final : public Scene {
     glm::vec3 cam_pos(camera_r * std::cos(camera_angle), std::sin(camera_angle * 2.0f) * 2.0f,
                       camera_r * std::sin(camera_angle));
     glm::vec3 target(0, 0, 0);
+    // --set NAME=VALUE (the parameters of this scene's row); unset, the seed's own value.
     const SceneParams& p = options_.params;
-    if (p.worldOffset) cam_pos += glm::vec3(*p.worldOffset), target += glm::vec3(*p.worldOffset);
+    const std::optional<float> worldOffset = p.get("world_offset"), nearPlane = p.get("near");
+    if (worldOffset) cam_pos += glm::vec3(*worldOffset), target += glm::vec3(*worldOffset);
     const glm::mat4 u_view = glm::lookAtRH(cam_pos, target, glm::vec3(0, 1, 0));
     const glm::mat4 u_proj = glm::perspectiveRH_NO(60.0f * PI / 180.0f, float(HDR_W) / float(HDR_H),
-                                                   p.nearPlane.value_or(0.1f), 60.0f);
+                                                   nearPlane.value_or(0.1f), 60.0f);
 
     // ===== Pass 1: scene into the HDR float target =====
     ClearOp clearScene;
@@ -289,6 +298,28 @@ class HdrScene final : public Scene {
 
 }  // namespace
 
-std::unique_ptr<Scene> makeHdrScene(const SceneOptions& options) { return std::make_unique<HdrScene>(options); }
+SceneEntry hdrScene() {
+  return {
+      .name = "hdr",
+      .description = "\"11 - HDR + Bloom\": 1000 instanced cubes, back-face culling, LEQUAL, RGBA16F targets, a 5-level bloom chain with additive blending, ACES",
+      .seed = "002_2011f151d1707bfd.txt",
+      .make = [](const SceneOptions& options) -> std::unique_ptr<Scene> { return std::make_unique<HdrScene>(options); },
+      .params = {param::time(), param::size(),
+                 {"instances", 1, 200000, true, "", "1000", "cubes in the swarm: many small triangles, deep overdraw"},
+                 {"intensity", 0, 1e10, false, "", "1",
+                  "scale on every cube's colour; past about 65504 the half-float scene target overflows to inf"},
+                 param::nearPlane(), param::worldOffset()},
+      .programs = {programEntry<shaders::hdr::ScenePass>(), programEntry<shaders::hdr::BrightPass>(),
+                   programEntry<shaders::hdr::DownPass>(), programEntry<shaders::hdr::UpPass>(),
+                   programEntry<shaders::hdr::CompositePass>()},
+      .assets = {},
+      .sweeps = {"intensity=1:1e6:13:log",
+                 "instances=1:200000:10:log",
+                 "near=0.1:1e-6:11:log",
+                 "world_offset=1:1e7:15:log",
+                 "time=1:1e10:11:log",
+                 "size=1:8192:10:log --no-softpipe"},
+  };
+}
 
 }  // namespace scenes

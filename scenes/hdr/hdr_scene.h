@@ -4,12 +4,11 @@
 // with gamma to the default framebuffer.
 #pragma once
 
-#include <memory>
-
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace scenes {
 
-std::unique_ptr<Scene> makeHdrScene(const SceneOptions& options);
+// The scene's registry row (scenes/registry.h).
+SceneEntry hdrScene();
 
 }  // namespace scenes

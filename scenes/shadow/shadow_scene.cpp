@@ -10,6 +10,9 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "shaders_cpp/shadow/main.h"
+#include "shaders_cpp/shadow/shadow.h"
+
 namespace scenes {
 namespace {
 
@@ -77,11 +80,13 @@ class ShadowScene final : public Scene {
   }
 
   void renderFrame(Backend& b, float t) override {
+    // --set NAME=VALUE (the parameters of this scene's row); unset, the seed's own value.
     const SceneParams& p = options_.params;
+    const std::optional<float> worldOffset = p.get("world_offset"), lightElevation = p.get("light_elevation"), nearPlane = p.get("near"), offsetScale = p.get("offset_scale");
     // world_offset moves every model and both eyes by (d, d, d); unset, nothing is touched.
-    auto moved = [&](glm::vec3 v) { return p.worldOffset ? v + glm::vec3(*p.worldOffset) : v; };
+    auto moved = [&](glm::vec3 v) { return worldOffset ? v + glm::vec3(*worldOffset) : v; };
     auto placed = [&](const glm::mat4& model) {
-      return p.worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*p.worldOffset)) * model : model;
+      return worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*worldOffset)) * model : model;
     };
     const int display_w = options_.width, display_h = options_.height;
     const int h = std::max(display_h, 1);
@@ -89,7 +94,7 @@ class ShadowScene final : public Scene {
 
     // Directional light orbits in XZ, tilted up, so the cube's shadow sweeps the floor.
     const float sun_yaw = t * 0.6f;
-    const glm::vec3 light_dir = p.lightElevation ? lightAtElevation(sun_yaw, *p.lightElevation)
+    const glm::vec3 light_dir = lightElevation ? lightAtElevation(sun_yaw, *lightElevation)
                                                  : glm::normalize(glm::vec3(std::cos(sun_yaw), 1.4f, std::sin(sun_yaw)));
     const glm::vec3 light_eye = light_dir * 8.0f;
     const glm::mat4 light_view = glm::lookAtRH(moved(light_eye), moved(glm::vec3(0.0f)), glm::vec3(0, 1, 0));
@@ -100,7 +105,7 @@ class ShadowScene final : public Scene {
     const float cam_angle = t * 0.35f;
     const glm::vec3 cam_pos = moved(glm::vec3(std::cos(cam_angle) * 5.0f, 3.2f, std::sin(cam_angle) * 5.0f));
     const glm::mat4 u_view = glm::lookAtRH(cam_pos, moved(glm::vec3(0.0f, CUBE_HOVER * 0.5f, 0.0f)), glm::vec3(0, 1, 0));
-    const glm::mat4 u_proj = glm::perspectiveRH_NO(50.0f * PI / 180.0f, aspect, p.nearPlane.value_or(0.1f), 50.0f);
+    const glm::mat4 u_proj = glm::perspectiveRH_NO(50.0f * PI / 180.0f, aspect, nearPlane.value_or(0.1f), 50.0f);
 
     // Pass 1: shadow map from the light's point of view, with slope-scaled depth bias.
     ClearOp clearDepth;
@@ -109,8 +114,8 @@ class ShadowScene final : public Scene {
     b.beginPass(shadow_fbo_, {0, 0, SHADOW_DIM, SHADOW_DIM}, clearDepth);
     DrawState shadowState;
     shadowState.polygonOffset = true;
-    shadowState.offsetFactor = p.offsetScale ? 2.0f * *p.offsetScale : 2.0f;
-    shadowState.offsetUnits = p.offsetScale ? 4.0f * *p.offsetScale : 4.0f;
+    shadowState.offsetFactor = offsetScale ? 2.0f * *offsetScale : 2.0f;
+    shadowState.offsetUnits = offsetScale ? 4.0f * *offsetScale : 4.0f;
     b.setUniform(prog_shadow_, "u_light_vp", u_light_vp);
     b.setUniform(prog_shadow_, "u_model", placed(cube_model(t)));
     b.draw(prog_shadow_, cube_, shadowState);
@@ -157,6 +162,24 @@ class ShadowScene final : public Scene {
 
 }  // namespace
 
-std::unique_ptr<Scene> makeShadowScene(const SceneOptions& options) { return std::make_unique<ShadowScene>(options); }
+SceneEntry shadowScene() {
+  return {
+      .name = "shadow",
+      .description = "\"08 - The Shadow Map\": depth-only pass with polygon offset, 1024x1024 Z24 shadow map, sampler2DShadow 3x3 PCF, clipping",
+      .seed = "001_e52e56bd2ca24dc3.txt",
+      .make = [](const SceneOptions& options) -> std::unique_ptr<Scene> { return std::make_unique<ShadowScene>(options); },
+      // light_dir = normalize(cos, 1.4, sin): atan(1.4) above the ground
+      .params = {param::time(), param::size(), param::lightElevation("54.46"), param::offsetScale(), param::nearPlane(),
+                 param::worldOffset()},
+      .programs = {programEntry<shaders::shadow::ShadowPass>(), programEntry<shaders::shadow::MainPass>()},
+      .assets = {},
+      .sweeps = {"light_elevation=1:80:12:log",
+                 "offset_scale=0:4:9",
+                 "near=0.1:1e-6:11:log",
+                 "world_offset=1:1e7:15:log",
+                 "time=1:1e10:11:log",
+                 "size=1:8192:10:log --no-softpipe"},
+  };
+}
 
 }  // namespace scenes

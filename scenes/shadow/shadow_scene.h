@@ -3,12 +3,11 @@
 // with hardware compare and 3x3 PCF.
 #pragma once
 
-#include <memory>
-
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 
 namespace scenes {
 
-std::unique_ptr<Scene> makeShadowScene(const SceneOptions& options);
+// The scene's registry row (scenes/registry.h).
+SceneEntry shadowScene();
 
 }  // namespace scenes

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "shaders_cpp/test/passthrough.h"
+
 namespace scenes::soup {
 namespace {
 
@@ -242,5 +244,7 @@ Soup shiftedOnePixel(const Soup& soup) {
   }
   return shifted;
 }
+
+std::vector<ProgramEntry> programs() { return {programEntry<shaders::test::Passthrough>()}; }
 
 }  // namespace scenes::soup

@@ -17,9 +17,14 @@
 #include <vector>
 
 #include "scenes/backend.h"
+#include "scenes/program_registry.h"
 #include "scenes/soup/soup.h"
 
 namespace scenes::soup {
+
+// The programs soups draw with (test/passthrough), for the registry's programs outside
+// every scene (scenes/registry.cpp).
+std::vector<ProgramEntry> programs();
 
 struct Rendering {
   std::string backend;

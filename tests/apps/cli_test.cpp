@@ -27,7 +27,7 @@
 #include "compare/target_dump.h"
 #include "compare/metrics.h"
 #include "raster/methods.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/scene_test_helpers.h"
 

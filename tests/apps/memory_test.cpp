@@ -15,6 +15,7 @@
 #include "compare/image_io.h"
 #include "scenes/scene.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/scene_test_helpers.h"
 
 namespace {
 
@@ -110,7 +111,7 @@ TEST_SUITE("hostile") {
 #else
   TEST_CASE("memory: at 1920x1080 no scene's render needs more memory than llvmpipe's") {
     TempFolder temp;
-    for (const std::string scene : {"shadow", "deferred", "hdr"}) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       long peak[2] = {};
       for (int k = 0; k < 2; ++k)
         peak[k] = peakResidentKiB({"render", scene, "--size", "1920x1080", "--threads", "2", "--backend", k == 0 ? "raster" : "gl",

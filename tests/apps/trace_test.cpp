@@ -16,8 +16,9 @@
 
 #include "raster/pixel_history.h"
 #include "scenes/backends.h"
-#include "scenes/scene.h"
+#include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/scene_test_helpers.h"
 
 namespace {
 
@@ -157,7 +158,7 @@ TEST_SUITE("trace") {
   }
 
   TEST_CASE("tracing changes no byte of any target, at any probe") {
-    for (const char* name : {"shadow", "deferred", "hdr"}) {
+    for (const std::string& name : testing_support::scenesUnderTest()) {
       INFO(name);
       scenes::SceneOptions options;
       options.width = 96;

@@ -40,7 +40,7 @@ TEST_SUITE("determinism") {
   // llvmpipe, so all of them match llvmpipe too; CI runs this again in the build without
   // SIMD (tests/configs/simd-off.sh).
   TEST_CASE("every scene: threads 1, 2 and 5, SIMD and scalar lanes, give identical bytes") {
-    for (const char* scene : {"shadow", "deferred", "hdr"}) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       for (const auto& [w, h] : {std::pair{97, 61}, std::pair{640, 480}}) {
         auto one = scenes::makeRasterBackend(1);
         const auto reference = testing_support::renderScene(*one, scene, 1.0f, w, h);
@@ -62,7 +62,7 @@ TEST_SUITE("determinism") {
   // ranges (renderer.cpp, geometry/bin.h): the triangles must reach every tile in API order,
   // with their own varyings, whatever the chunks.
   TEST_CASE("large draws shaded, set up and binned in parallel give the bytes of one thread") {
-    for (const char* scene : {"hdr", "deferred"}) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       auto one = scenes::makeRasterBackend(1);
       const auto reference = testing_support::renderScene(*one, scene, 0.9f, 333, 217);
       for (int threads : {2, 7}) {
@@ -78,7 +78,7 @@ TEST_SUITE("determinism") {
   // (many triangles per tile, overlapping) take that path. It must leave the bytes of
   // shading every fragment in order, with SIMD lanes and with plain ones.
   TEST_CASE("shading only visible fragments gives the bytes of shading every fragment in order") {
-    for (const char* scene : {"hdr", "deferred"}) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       for (const auto& [w, h] : {std::pair{640, 480}, std::pair{333, 217}}) {
         INFO(scene << " at " << w << "x" << h);
         auto inOrder = scenes::makeRasterBackend(2, /*scalarOnly=*/false, /*visibilityFirst=*/false);

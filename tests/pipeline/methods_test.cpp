@@ -82,7 +82,7 @@ TEST_SUITE("methods") {
   }
 
   TEST_CASE("each preset's final image against llvmpipe, every scene, at its threshold") {
-    for (const std::string scene : {"shadow", "deferred", "hdr"}) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       const auto gl = renderWithLlvmpipe(scene, 1.0f, 320, 240);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("gl"), gl, 320, 240).maxAbs == 0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("fast"), gl, 320, 240).psnr >= 40.0);

@@ -25,7 +25,6 @@ using raster::ViewRecorder;
 using Record = ViewRecorder::Record;
 
 constexpr int kWidth = 97, kHeight = 61;   // odd: quads and tiles hang over the edges
-const char* const kScenes[] = {"shadow", "deferred", "hdr"};
 
 struct Recorded {
   std::vector<scenes::Target> targets;
@@ -59,7 +58,7 @@ uint64_t sum(const std::vector<uint32_t>& values) {
 
 TEST_SUITE("views") {
   TEST_CASE("recording any view leaves every target's bytes unchanged") {
-    for (const char* scene : kScenes) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       auto plain = scenes::makeRasterBackend(2);
       const auto expected = testing_support::renderScene(*plain, scene, 1.0f, kWidth, kHeight);
       for (Record what : {Record::Fragments, Record::TileTimes, Record::Triangles}) {
@@ -78,7 +77,7 @@ TEST_SUITE("views") {
   }
 
   TEST_CASE("fragment counts are GL's in-order counts: those of the scalar path without visibility first") {
-    for (const char* scene : kScenes) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       INFO(scene);
       auto inOrder = scenes::makeRasterBackend(2, /*scalarOnly=*/true, /*visibilityFirst=*/false);
       testing_support::renderScene(*inOrder, scene, 1.0f, kWidth, kHeight);
@@ -111,7 +110,7 @@ TEST_SUITE("views") {
   }
 
   TEST_CASE("counts and wireframes do not depend on the thread count") {
-    for (const char* scene : kScenes) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       INFO(scene);
       const Recorded one = renderRecorded(scene, Record::Fragments, 1), two = renderRecorded(scene, Record::Fragments, 2);
       REQUIRE(one.recorder->passes().size() == two.recorder->passes().size());
@@ -174,7 +173,7 @@ TEST_SUITE("views") {
   TEST_CASE("raster render --view: the image's bytes stay, the sidecar's totals are the counters'") {
     using namespace cli_test;
     TempFolder temp;
-    for (const char* scene : kScenes) {
+    for (const std::string& scene : testing_support::scenesUnderTest()) {
       const std::string plain = std::string(scene) + "-plain.png";
       const RunResult base = runCli(temp.path, std::string("render ") + scene + " --size 64x48 --threads 2 --quiet --out " + plain);
       REQUIRE(base.status == 0);

@@ -16,6 +16,8 @@
 #include <unistd.h>
 
 #include "scenes/backends.h"
+#include "scenes/registry.h"
+#include "shaders_cpp/test/passthrough.h"
 
 namespace {
 
@@ -241,6 +243,35 @@ TEST_SUITE("gl_backend") {
     std::string broken = errorOf([&] { backend->createProgram("test/broken"); });
     CHECK(broken.find("test/broken.frag") != std::string::npos);
     CHECK(broken.find("undeclared") != std::string::npos);  // the GL info log
+  }
+
+  // A port's uniforms must be the GLSL's: test/flat's GLSL has `color`; one port spells
+  // it `colour` (a name the GLSL lacks, and `color` never set), one adds `gain`.
+  TEST_CASE("a program whose C++ port's uniform names differ from its GLSL's is refused, naming both") {
+    TempShaderRoot shaders;
+    auto writeFlat = [](const std::string& name) {
+      const fs::path folder = fs::path(std::getenv("RASTER_SOURCE_DIR")) / "shaders_cpp/test";
+      std::ofstream(folder / (name + ".vert")) << kFlatVert;
+      std::ofstream(folder / (name + ".frag")) << kFlatFrag;
+    };
+    writeFlat("flat_misspelt");
+    writeFlat("flat_extra");
+    scenes::ProgramEntry misspelt = scenes::programEntry<shaders::test::Passthrough>();
+    misspelt.name = "test/flat_misspelt";
+    misspelt.uniforms = {"colour"};
+    scenes::registerProgram(misspelt);
+    scenes::ProgramEntry extra = misspelt;
+    extra.name = "test/flat_extra";
+    extra.uniforms = {"color", "gain"};
+    scenes::registerProgram(extra);
+    auto backend = makeGlBackend();
+    const std::string notInPort = errorOf([&] { backend->createProgram("test/flat_misspelt"); });
+    CHECK(notInPort.find("program test/flat_misspelt") != std::string::npos);
+    CHECK(notInPort.find("uniform 'color' is active in the GLSL, but the C++ port has no uniform of that name (its uniforms: colour)") !=
+          std::string::npos);
+    const std::string notInGlsl = errorOf([&] { backend->createProgram("test/flat_extra"); });
+    CHECK(notInGlsl.find("the C++ port's uniform 'gain' is not a uniform of the GLSL") != std::string::npos);
+    CHECK(notInGlsl.find("flat_extra.frag") != std::string::npos);
   }
 
   TEST_CASE("a second live GlBackend is refused") {

@@ -277,8 +277,8 @@ bool Renderer::visibilityFirst() const {
 // tile's bands in the order of their first rows. The other passes keep rows of tiles: their
 // reads and writes run on along a texel row from one tile into the next, which the hardware
 // prefetchers and the row prefetches of lookups and stores (prefetchFootprintRows,
-// merge::prefetchBlockRowsForWrite) count on. BENCHMARKS.md has both orders' times ("Tiles
-// in Hilbert order for SSAO").
+// merge::prefetchBlockRowsForWrite) count on. docs/notes/2026-11-30-hilbert-order-ssao.md
+// has both orders' times.
 void Renderer::orderAlongHilbertCurve() {
   const int tilesX = bins_.tilesX(), tilesY = bins_.tilesY();
   const uint32_t side = hilbertSide(uint32_t(std::max(tilesX, tilesY)));
@@ -303,7 +303,8 @@ void Renderer::flush() {
     job.visibilityFirst = visibilityFirst();
     // Streaming stores skip the read for ownership but leave nothing in cache, and wait to
     // reach memory: targets that fit the threads' caches stay there until the next frame's
-    // clear (BENCHMARKS.md, "streaming clears only where the targets outgrow the caches").
+    // clear (docs/notes/2026-11-21-what-made-it-faster.md, "streaming clears only where
+    // the targets outgrow the caches").
     const auto bytes = [](const Texture& t) { return textureStorageBytes(t.width, t.height, t.format); };
     uint64_t targetBytes = framebuffer_.depth ? bytes(*framebuffer_.depth) : 0;
     for (const Texture* target : framebuffer_.colors) targetBytes += bytes(*target);
@@ -314,7 +315,8 @@ void Renderer::flush() {
     // walk skips triangles beside the band, walk.h; a tile of many triangles stays whole, as
     // each band would walk them all). Every pixel is owned by one band and none depends on
     // another, so the bytes are the same; stage views and pixel history time or trace whole
-    // tiles, and keep them. BENCHMARKS.md has the passes' times before and after.
+    // tiles, and keep them. docs/notes/2026-11-29-two-threads-wait.md has the passes' times
+    // before and after.
     constexpr size_t kBandedTileMaxTriangles = 16;
     const int tiles = bins_.tileCount();
     const bool fewTiles = pool_.threads() > 1 && tiles < 8 * pool_.threads() && !viewRecorder_ && !history_;

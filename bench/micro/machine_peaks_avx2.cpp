@@ -1,4 +1,5 @@
-// The machine's own peaks, the yardsticks BENCHMARKS.md holds each lookup against:
+// The machine's own peaks, the yardsticks docs/notes/2026-11-25-microbenchmarks.md holds
+// each lookup against:
 //   peak/gather_dword/KIB   _mm256_i32gather_ps: 8 random 4-byte elements a gather
 //   peak/gather_qword/KIB   _mm256_i32gather_epi64: 4 random 8-byte elements a gather, the
 //                           samplers' texel-pair and half-float fetch

@@ -1,8 +1,9 @@
 // Prefetches for lines that loads or stores will reach soon. A tile's rows, and the rows a
 // fullscreen pass reads or stores a 4x4 block at a time, are short runs a whole target row
 // apart, which the hardware prefetchers do not fetch far enough ahead: each load waited on
-// its line, each plain store on its line's read for ownership (BENCHMARKS.md, "What made it
-// faster"). Callers prefetch a few rows, or a kilobyte, ahead.
+// its line, each plain store on its line's read for ownership
+// (docs/notes/2026-11-21-what-made-it-faster.md). Callers prefetch a few rows, or a
+// kilobyte, ahead.
 //
 // `asm volatile`, not __builtin_prefetch or _mm_prefetch: GCC 12 at -O3 deleted those from an
 // inlined helper that picked the texel array by format (every prefetch gone, no warning).

@@ -11,14 +11,14 @@
 //   touches one line, or two where its columns straddle a block (x % 4 == 3): 1.25 lines
 //   on average, against 2.1 for rows of the row-major layout. Minified without mipmaps, as
 //   the G-buffer samples its 1K and 2K material maps, almost every footprint misses the
-//   cache, and the lines are the time (BENCHMARKS.md, "Footprint strips").
+//   cache, and the lines are the time (docs/notes/2026-11-30-footprint-strips.md).
 // The strips are 4/3 of the texture and hold every texel, so an uploaded texture keeps
 // them instead of its rows (releaseRows): every reader of a texel then finds it through
 // rgba8Texel below (the reference sampler, pixel history) or the same unit arithmetic in
 // vector form (sample_color_avx2.cpp, sample_rgba8_avx512.h). The copy is made at upload,
 // and the rows come back (restoreRows) when the texture becomes a render target
 // (scenes/raster_backend.cpp), whose writers write rows. Keeping both had put the deferred
-// scene's peak memory at 1920x1080 above llvmpipe's (BENCHMARKS.md, "Peak memory").
+// scene's peak memory at 1920x1080 above llvmpipe's (docs/notes/2026-12-01-peak-memory.md).
 #pragma once
 
 #include <algorithm>

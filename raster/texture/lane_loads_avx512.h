@@ -1,7 +1,7 @@
 // Per-lane scalar loads for the 16-lane lookups (sample_half_avx512.h, sample_rgba8_avx512.h):
 // each lane's index stored once, then one 8-byte load a lane, two lanes to a 16-byte
-// register. On the AMD EPYC Zen 4 host these beat 8-element 64-bit gathers (BENCHMARKS.md,
-// "What made it faster so far"); the values are the gathers' exactly.
+// register. On the AMD EPYC Zen 4 host these beat 8-element 64-bit gathers
+// (docs/notes/2026-11-21-what-made-it-faster.md); the values are the gathers' exactly.
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -14,7 +14,7 @@ namespace raster::sampling {
 // scalar load at a time, as four 16-byte stores. Left to itself the compiler pulls each out
 // of a vector register, three instructions per texel load (composite -2%); and a 4-byte load
 // from the middle of one 64-byte store waited for it on the Intel Xeon host, where from a
-// 16-byte store it is forwarded (BENCHMARKS.md, "Window starts stored in quarters").
+// 16-byte store it is forwarded (docs/notes/2026-11-29-window-starts-in-quarters.md).
 [[gnu::always_inline]] inline void storeLaneIndices16(__m512i index, int (&out)[16]) {
   _mm_store_si128(reinterpret_cast<__m128i*>(out), _mm512_castsi512_si128(index));
   _mm_store_si128(reinterpret_cast<__m128i*>(out + 4), _mm512_extracti32x4_epi32(index, 1));

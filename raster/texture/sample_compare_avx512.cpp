@@ -48,7 +48,7 @@ void columnsOfFourLanes(const __m512i (&v)[4], int first, __m512i (&codes)[Cols]
 // A window of up to four rows (the 3x3 grid's) is read four lanes at a time down all its
 // rows, with four row pointers live: read a row at a time, the sixteen lanes' pointers did
 // not fit the general registers, and GCC moved them in and out of vector registers on every
-// row (BENCHMARKS.md, "The 3x3 PCF window read lane by lane"). Taller windows (the 5x5
+// row (docs/notes/2026-11-29-pcf-window-lane-by-lane.md). Taller windows (the 5x5
 // grid's six rows, 24 registers of rows) measured slower that way than a row at a time.
 template <int Rows, int Cols>
 [[gnu::always_inline]] inline void windowCodes16(const Texture& depth, const int (&start)[16],
@@ -107,7 +107,8 @@ template <int Rows, int Cols>
 // rows to that value). A code reads as a float through a rounded product, which keeps
 // their order, so comparing with the window's least and greatest codes is comparing with
 // every code. In the shadow scene about 99% of the pairs' windows are uniform: the compare
-// changes only along a shadow's edge (BENCHMARKS.md, "PCF windows that pass or fail whole").
+// changes only along a shadow's edge (docs/notes/2026-11-21-what-made-it-faster.md,
+// "PCF windows that pass or fail whole").
 // True, with the `tapCount` taps written (1 where the lane's window passes, +0 where it
 // fails), when every lane's window is uniform; false, with nothing written, otherwise.
 [[gnu::always_inline]] inline bool uniformTaps16(const Texture& depth, __m512i least, __m512i greatest, __m512 ref,
@@ -140,7 +141,7 @@ template <int Rows, int Cols>
 // register (lanes k and k + 4, or k + 8 and k + 12), and the rows are reduced there, so
 // only the reduced rows are joined into 512-bit registers and transposed. Joining every row
 // first, as windowCodes16 must, took three times the shuffles; those all run on one port
-// (BENCHMARKS.md, "The 3x3 PCF's uniform test before the transpose").
+// (docs/notes/2026-11-29-pcf-uniform-test-before-transpose.md).
 [[gnu::always_inline]] inline void windowBounds4x4(const Texture& depth, const int (&start)[16], __m512i& least,
                                                    __m512i& greatest) {
   const uint32_t* texels = depth.depth.data();
@@ -255,7 +256,8 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
   __m512i codes[texels][texels];   // codes[r][c]: texel (r, c) of the lane's neighbourhood
   windowCodes16(depth, start, codes);
   // The 5x5 grid takes its bounds from the codes: read first, a 6x6 window's bounds cost more
-  // than they saved (BENCHMARKS.md, "Tried and not kept").
+  // than they saved (docs/notes/2026-11-25-tried-and-not-kept.md, "The bounds-first uniform
+  // test for the 5x5 grid too").
   if constexpr (texels != 4)
     if (uniformTaps16(depth, codes, ref, count * count, taps)) return true;
   __mmask16 passes[texels][texels];   // passes[r][c]: ref <= texel (r, c) of the lane's neighbourhood

@@ -71,8 +71,8 @@ namespace raster::sampling {
 // instead of its own. SSAO's stored-normal reads (textureWhere) are where this counts: only
 // 12-13% of their lanes are live, a third to two fifths of the lookups have none, and over
 // half their halves (640x480 and 1920x1080). The deferred frame read 3.6% faster at
-// 1920x1080, where the G-buffer targets outgrow the cache, and 0.4% at 640x480 (BENCHMARKS.md,
-// "Dead lanes of SSAO's normal reads").
+// 1920x1080, where the G-buffer targets outgrow the cache, and 0.4% at 640x480
+// (docs/notes/2026-11-30-dead-lanes-ssao-normals.md).
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          __mmask16 live, simd::Float8x2 out[4]) {
   if (!live) {

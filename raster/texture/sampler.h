@@ -144,7 +144,7 @@ template <class F>
 // lookup reads and returns at once, changing no value. A shader that makes several lookups
 // at one uv, each with arithmetic between (the G-buffer's material maps), otherwise waits
 // on their cache misses one lookup after another: the out-of-order window holds about one
-// lookup. Kept where it measured faster (BENCHMARKS.md).
+// lookup. Kept where it measured faster (docs/notes/2026-11-26-texel-traffic-gbuffer.md).
 template <class F>
 [[gnu::always_inline]] inline void texturePrefetch(const Sampler2D& sampler, glsl::vec2<F> uv) {
   sampling::prefetchColor(*sampler.texture, uv);

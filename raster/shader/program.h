@@ -14,17 +14,10 @@
 // pipeline interpolates it as an array of N floats, every one perspective-correct.
 // Shaders never see depth, blending or the framebuffer.
 //
-// A port computes what Mesa's compiler makes of the GLSL, not the GLSL read naively;
-// every rule below was measured against llvmpipe and makes a difference in the bits:
-//   - M * N * v (matrix, matrix, vector) is evaluated M * (N * v);
-//   - dot(vec3) adds x + (y + z) (glsl.h); mat * vec adds column by column;
-//   - pow(x, 1.0 / 2.0 / 4.0) with a literal exponent is folded to x, x * x,
-//     (x * x) * (x * x): write pow<2.0f>(x); any other pow is llvmpipe's exp2(log2);
-//   - a * b + a * c may become a * (b + c), and some sums are regrouped
-//     ((a + b) + (c + d)); constant sub-expressions are folded in float32 with the C
-//     library (e.g. cos(fi * 2.5) of an unrolled loop counter);
-//   - sin, cos, exp2, log2, atan, acos are llvmpipe's polynomials (simd/gl_math.h).
-// The ports in shaders_cpp/ say in their headers which of these they rely on.
+// A port computes what Mesa's compiler makes of the GLSL, not the GLSL read naively:
+// docs/porting.md lists the rewrites (one row each, with the Mesa pass that makes it), how
+// to find the next one, and the checklist for a new port. The ports in shaders_cpp/ say in
+// their headers which rows they follow.
 #pragma once
 
 #include <cstring>

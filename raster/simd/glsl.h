@@ -1,32 +1,16 @@
 // GLSL-like vector math over a lane type F, so shader ports read like their GLSL.
 //
 // vec2/vec3/vec4<F> hold one value per lane per component (structure of arrays).
-// Functions carry GLSL names and the operation order llvmpipe's compiler produces from
-// the GLSL (NIR with ffma lowered: plain multiply and add, no fusion):
-//   dot(a, b)      = a.x*b.x + (a.y*b.y + a.z*b.z)   (measured against llvmpipe)
-//   normalize(v)   = v * (1 / sqrt(dot(v, v)))          (GLSL IR: v * rsq(dot); rsq = 1/sqrt)
-//   mix(a, b, t)   = a + t * (b - a)                    (nir_lower_flrp, fast form; t not constant)
-//   mat4 * vec4    = ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w   (column by column)
-// Uniform matrices are glm::mat4 (host math); they multiply lane vectors.
+// Functions carry GLSL names and the operation order llvmpipe's compiler produces from the
+// GLSL; the comment above each names its row of docs/porting.md (section 1: the rewrite, the
+// Mesa pass that makes it). Uniform matrices are glm::mat4 (host math); they multiply lane
+// vectors.
 //
-// Beyond single functions, Mesa's compiler rewrites whole expressions, and a port must write
-// them in the rewritten order to stay bit-exact (found with raster trace and --float-final,
-// STABILITY.md "Where gl is not bit-identical"):
-//   - a tree of one operation alone (+ or *, one type, at most one constant, temporaries used
-//     once grafted in) of four or more leaves is balanced by GLSL IR's do_rebalance_tree:
-//     a * ((b * c) * d) becomes (a * b) * (c * d)      (shadow/main.h, hdr/down.h, up.h);
-//   - x + (a * b + c * d), the inner sum used once and x no product, becomes
-//     (a * b + x) + c * d (nir_opt_algebraic "Reassociate add chains")   (deferred/ssao.h);
-//   - a * b + a * c becomes a * (b + c) (nir_opt_algebraic);
-//   - #k * (x * y) with the product used once becomes (x * #k) * y (nir_opt_algebraic)
-//                                                                   (deferred/lighting.h);
-//   - #a + (x + #c) becomes (#a + #c) + x, the constants folded in float ("Reassociate
-//     constants in add chains"): every PCF tap's (0.5 + off) + ndc * 0.5 (sampler.h);
-//   - mix(x, y, t) with a constant t is x * (1 - t) + y * t (nir_lower_flrp.c), not the
-//     a + t * (b - a) above                                       (deferred/lighting.h).
-// An 8-bit target hides most such slips; `raster compare --float-final` draws the final
-// pass into RGBA32F on both backends and shows them as one-float-step differences (the
-// scene tests check it bit for bit).
+// Mesa's compiler also rewrites whole expressions, which no function here can follow (rows
+// graft, rebalance, add-chain, factor, const-up-mul, const-add-chain, const-reassoc-ir,
+// mix-const-t, const-fold): a port writes those in the rewritten order itself.
+// docs/porting.md section 2 says how the next one is found (`raster compare --float-final`,
+// `raster trace`, the extra-use bisection).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -107,12 +91,14 @@ template <class F> vec3<F> operator*(glm::vec3 a, vec3<F> b) { return vec3<F>(a)
 template <class F> vec2<F> operator+(vec2<F> a, glm::vec2 b) { return a + vec2<F>(b); }
 template <class F> vec2<F> operator*(vec2<F> a, glm::vec2 b) { return a * vec2<F>(b); }
 
+// dot adds from the last component: a.x*b.x + (a.y*b.y + a.z*b.z) (row dot).
 template <class F> F dot(vec2<F> a, vec2<F> b) { return a.x * b.x + a.y * b.y; }
 template <class F> F dot(vec3<F> a, vec3<F> b) { return a.x * b.x + (a.y * b.y + a.z * b.z); }
 template <class F> F dot(vec4<F> a, vec4<F> b) { return a.x * b.x + (a.y * b.y + (a.z * b.z + a.w * b.w)); }
 template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
 // inversesqrt and normalize take the `div` step of the method set (methods.h): exact is
 // llvmpipe's 1 / sqrt(x) (GLSL IR's rsq), approx is inversesqrtApprox (div_approx.h).
+// normalize(v) is v * inversesqrt(dot(v, v)) (row normalize).
 template <class F> F inversesqrt(F x) {
   if (methods::active().div == DivMethod::Approx) return inversesqrtApprox(x);
   return F(1.0f) / sqrt(x);
@@ -127,6 +113,8 @@ template <class F> vec3<F> normalizeUniform(glm::vec3 v) {
   return {F(n.x), F(n.y), F(n.z)};
 }
 
+// mix(a, b, t) = a + t * (b - a), nir_lower_flrp's form for a t that is not constant (row
+// mix); with a constant t the port writes a * (1 - t) + b * t itself (row mix-const-t).
 template <class F> F mix(F a, F b, F t) { return a + t * (b - a); }
 template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.x, b.x, t.x), mix(a.y, b.y, t.y), mix(a.z, b.z, t.z)}; }
 template <class F> F clamp(F x, F lo, F hi) { return min(max(x, lo), hi); }
@@ -168,9 +156,10 @@ void storePlanes(const vec4<F>& v, float (*planes)[F::kCount]) {
   v.w.store(planes[3]);
 }
 
-// mat4 * vec4, column by column in GLSL order. Always inlined: shaders often keep one
-// component ((m * v).z) or repeat a product, and only inlined code lets the compiler drop
-// the unused rows and share the repeats, as Mesa's optimizer does.
+// mat4 * vec4, column by column in GLSL order: ((c0*v.x + c1*v.y) + c2*v.z) + c3*v.w (row
+// mat-vec); GLSL's M * N * v is written M * (N * v) (row mat-mat-vec). Always inlined:
+// shaders often keep one component ((m * v).z) or repeat a product, and only inlined code
+// lets the compiler drop the unused rows and share the repeats, as Mesa's optimizer does.
 template <class F>
 [[gnu::always_inline]] inline vec4<F> operator*(const glm::mat4& m, const vec4<F>& v) {
   auto column = [&](int row) { return ((F(m[0][row]) * v.x + F(m[1][row]) * v.y) + F(m[2][row]) * v.z) + F(m[3][row]) * v.w; };

@@ -1,7 +1,13 @@
 // C++ port of main.vert / main.frag (08 - The Shadow Map, main pass), line by line.
 // Differences forced by C++: uniform branches are plain `if`s on uniforms; per-lane
-// branches and ternaries are select(); GLSL's left-to-right matrix chain
-// u_proj * u_view * world is (u_proj * u_view) * world, as written.
+// branches and ternaries are select().
+// Differences forced by Mesa's compiler (docs/porting.md, the rows named):
+//   - GLSL's u_proj * u_view * world is (u_proj * u_view) * world; GLSL IR rewrites a
+//     matrix product times a vector as u_proj * (u_view * world), and vertex() computes
+//     that (mat-mat-vec);
+//   - each PCF tap's uv + off is (0.5 + off) + ndc.xy * 0.5 (const-add-chain, pcf_shadow);
+//   - albedo * diffuse is (albedo * sun) * (ndotl * lit) (graft + rebalance, fragment());
+//   - pow(x, 48.0) has a literal exponent: pow<48.0f> (pow-literal).
 #pragma once
 
 #include "raster/shader/program.h"

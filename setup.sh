@@ -32,8 +32,8 @@ fi
 # with the `fast` method set (whose paths, never run in training, had been laid out as cold
 # code), and the release build is compiled by those counts. The profile is made again only
 # when a source it was made from has changed. Not the default: on the AMD EPYC Zen 4 host
-# the plain build ran every scene as fast or faster (BENCHMARKS.md, "The profile-guided
-# build, measured again": shadow and deferred 4-7% faster without it at 640x480).
+# the plain build ran every scene as fast or faster (shadow and deferred 4-7% faster
+# without it at 640x480: docs/notes/2026-11-30-profile-guided-build.md).
 pgo=(-DRASTER_PGO_USE=) renewed=0
 if [ "${RASTER_PGO:-0}" = 1 ] && "${CXX:-c++}" -v 2>&1 | grep -q "^gcc version"; then
   profile="$PWD/build-pgo/profile"

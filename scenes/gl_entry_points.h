@@ -4,7 +4,7 @@
 // Why: linking libOSMesa makes every process of the program map and relocate Mesa and the
 // LLVM it compiles shaders with, about 42 MiB of resident memory (libLLVM-15 alone) and
 // their start-up time, even when it only renders with this pipeline. Loaded on demand, a
-// run that never makes a GL backend never touches them (BENCHMARKS.md, "Peak memory").
+// run that never makes a GL backend never touches them (docs/notes/2026-12-01-peak-memory.md).
 //
 // How: each entry point is a function pointer in namespace scenes, named exactly as the
 // GL/osmesa.h function it stands for and of that function's type. Inside namespace scenes

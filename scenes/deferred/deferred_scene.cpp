@@ -84,7 +84,7 @@ class DeferredScene final : public Scene {
       b.labelTexture(textures_[i], std::filesystem::path(images[i]).filename().string());
       // Both backends copy what they are given: each decoded image goes as soon as it is
       // uploaded, so the 52 MiB of them never sit beside all the textures made from them
-      // (BENCHMARKS.md, "Peak memory at 1920x1080 against llvmpipe").
+      // (docs/notes/2026-12-01-peak-memory.md).
       loaded[i] = ImageRgba8{};
     }
     // load_hdr_texture: RGB16F, REPEAT on s, CLAMP_TO_EDGE on t, LINEAR.

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <array>
-#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -17,6 +16,7 @@
 
 #include "raster/program_instance.h"
 #include "scenes/backend.h"
+#include "scenes/program_entry.h"
 
 namespace scenes {
 
@@ -32,12 +32,6 @@ class BoundProgram {
   virtual void setUniform(const std::string& name, const UniformValue& value) = 0;
   // Throws when a sampler's unit has no texture bound.
   virtual std::unique_ptr<raster::ShaderInstance> instantiate(const TextureUnits& units) const = 0;
-};
-
-struct ProgramEntry {
-  std::string name;                    // shaders_cpp/ path: "shadow/main", "hdr/post+bright"
-  std::vector<std::string> uniforms;   // the port's uniform names, as its GLSL spells them
-  std::function<std::unique_ptr<BoundProgram>()> make;
 };
 
 // Throws std::runtime_error for a name with no C++ port in the registry.

@@ -1,34 +1,30 @@
-// The scene registry (registry.h): one line per built-in scene, each row written in the
-// scene's own folder; and the rows and programs added at run time.
+// The scene registry (registry.h): the built-in rows (builtin_scenes.cpp), the rows and
+// programs added at run time, and the lookups.
 #include "scenes/registry.h"
 
 #include <algorithm>
 #include <deque>
+#include <iterator>
 #include <stdexcept>
 
-#include "scenes/deferred/deferred_scene.h"
-#include "scenes/hdr/hdr_scene.h"
-#include "scenes/shadow/shadow_scene.h"
-#include "scenes/soup/soup_check.h"
 
 namespace scenes {
 namespace {
 
 // A deque: a row registered later leaves the references to the others valid.
 std::deque<SceneEntry>& rows() {
-  static std::deque<SceneEntry> table = {
-      shadowScene(),     // scenes/shadow/
-      deferredScene(),   // scenes/deferred/
-      hdrScene(),        // scenes/hdr/
-  };
+  static std::deque<SceneEntry> table = [] {
+    std::vector<SceneEntry> builtin = builtinScenes();
+    return std::deque<SceneEntry>(std::make_move_iterator(builtin.begin()), std::make_move_iterator(builtin.end()));
+  }();
   return table;
 }
 
 // Programs outside every scene: `raster soup`'s, then any registered at run time.
 std::deque<ProgramEntry>& standalonePrograms() {
   static std::deque<ProgramEntry> programs = [] {
-    const std::vector<ProgramEntry> soup = soup::programs();
-    return std::deque<ProgramEntry>(soup.begin(), soup.end());
+    std::vector<ProgramEntry> builtin = builtinPrograms();
+    return std::deque<ProgramEntry>(std::make_move_iterator(builtin.begin()), std::make_move_iterator(builtin.end()));
   }();
   return programs;
 }

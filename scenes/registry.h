@@ -1,8 +1,8 @@
 // The scene registry: one row per scene, the only list of scenes in the project.
 //
 // A scene is its folder in scenes/ (host code, parameters, this row) and its folder in
-// shaders_cpp/ (each GLSL file beside its C++ port); registry.cpp holds one line per scene
-// that adds its row. Everything generic takes the scene list from here: `raster scenes`
+// shaders_cpp/ (each GLSL file beside its C++ port); builtin_scenes.cpp holds one line per
+// scene that adds its row. Everything generic takes the scene list from here: `raster scenes`
 // (and `--json`, which the bench/ runners, setup.sh's profile training and
 // bench/stability_sweeps.sh read), every command, every test that covers every scene, the
 // report. CONTRIBUTING.md walks through adding one.
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/program_registry.h"
+#include "scenes/program_entry.h"
 #include "scenes/scene.h"
 #include "scenes/scene_params.h"
 
@@ -54,5 +54,11 @@ void registerScene(SceneEntry entry);
 void registerProgram(ProgramEntry entry);
 // Every program: each scene's, then those registered on their own.
 std::vector<const ProgramEntry*> programRegistry();
+
+// The built-in rows, one line per scene, and the programs outside every scene (`raster
+// soup`'s): scenes/builtin_scenes.cpp. (The fuzz targets, which cannot compile the shader
+// ports, link a row of their own instead: fuzz/fuzz_scenes.cpp.)
+std::vector<SceneEntry> builtinScenes();
+std::vector<ProgramEntry> builtinPrograms();
 
 }  // namespace scenes

@@ -13,6 +13,7 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "scenes/assets.h"
+#include "scenes/program_registry.h"
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/deferred/lighting.h"
 #include "shaders_cpp/deferred/ssao.h"

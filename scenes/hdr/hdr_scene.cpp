@@ -35,6 +35,7 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
+#include "scenes/program_registry.h"
 #include "shaders_cpp/hdr/bright.h"
 #include "shaders_cpp/hdr/composite.h"
 #include "shaders_cpp/hdr/down.h"

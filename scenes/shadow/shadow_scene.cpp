@@ -10,6 +10,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scenes/program_registry.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 

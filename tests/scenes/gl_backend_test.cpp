@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include "scenes/program_registry.h"
 #include "scenes/backends.h"
 #include "scenes/registry.h"
 #include "shaders_cpp/test/passthrough.h"

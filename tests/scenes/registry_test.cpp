@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenes/program_registry.h"
 #include "scenes/backend.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"

@@ -1,6 +1,7 @@
 // The tests' probe programs (shaders_cpp/test/): registered here, in the test binary, so
 // the production registry holds only the scenes' programs and `raster soup`'s
 // (test/passthrough, registered by scenes/soup/soup_check.cpp).
+#include "scenes/program_registry.h"
 #include "scenes/registry.h"
 #include "shaders_cpp/test/color_lookup.h"
 #include "shaders_cpp/test/derivatives.h"

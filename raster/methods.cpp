@@ -7,33 +7,135 @@
 namespace raster {
 namespace {
 
-// One step's names, in the order of its enum (the first is llvmpipe's), and where the
-// step's value lives in a MethodSet.
-struct StepBinding {
-  const char* step;
-  std::array<const char*, 4> names;   // unused slots are nullptr
-  uint8_t (*get)(const MethodSet&);   // the enum's value, an index into names
-  void (*set)(MethodSet&, uint8_t);
+// ---- the table: one row per method -------------------------------------------------------------
+// Each step's rows are a switch over its enum with no default, so under -Werror=switch
+// (CMakeLists.txt) an enumerator without its row does not compile. A step's methods are
+// its enum's values 0, 1, ... up to the first without a row, in enum order (the first is
+// llvmpipe's, the default); stepRow below checks at compile time that no value past that
+// has a row (the enumerators run without gaps) and that the names are distinct, and
+// stepsAreTheMembers that kSteps names every member of MethodSet once.
+
+struct MethodRow {
+  std::string_view name;    // as typed: `fast`, `8bit`, `rne`; empty: not an enumerator
+  std::string_view trade;   // one line: what it gives and what it costs
+};
+
+constexpr MethodRow rowOf(MathMethod m) {
+  switch (m) {
+    case MathMethod::Llvmpipe: return {"llvmpipe", "llvmpipe's polynomials, bit for bit (relative error up to ~1e-4 in pow; 2-3 ulp in sin)"};
+    case MathMethod::Libm: return {"libm", "the C library in double, rounded once: correctly rounded float; 5-20x slower per call"};
+    case MathMethod::Fast: return {"fast", "low-degree polynomials, documented bounds in fast_math.h; fewer operations than llvmpipe's"};
+    case MathMethod::FastFragment:
+      return {"fast-fragment", "fast in fragment shaders, llvmpipe's in vertex shaders: the same speed, and every vertex (so coverage) is GL's"};
+  }
+  return {};
+}
+constexpr MethodRow rowOf(FilterMethod m) {
+  switch (m) {
+    case FilterMethod::Unorm8: return {"8bit", "llvmpipe's AoS path: 8-bit weights, every lerp rounded to 8 bits"};
+    case FilterMethod::Float: return {"float", "float32 weights and lerps, as softpipe: off by up to ~1 of 255 from 8bit"};
+  }
+  return {};
+}
+constexpr MethodRow rowOf(HalfMethod m) {
+  switch (m) {
+    case HalfMethod::TowardZero: return {"rtz", "llvmpipe's truncation toward zero: up to 1 half ulp low, biased"};
+    case HalfMethod::NearestEven: return {"rne", "IEEE round to nearest even: half an ulp, unbiased; the same cost with F16C"};
+  }
+  return {};
+}
+constexpr MethodRow rowOf(DivMethod m) {
+  switch (m) {
+    case DivMethod::Exact: return {"exact", "correctly rounded division and square root"};
+    case DivMethod::Approx:
+      return {"approx", "bit-pattern seed and Newton steps: 1/x within 7e-8, 1/sqrt within 5e-6; no divider or sqrt unit"};
+  }
+  return {};
+}
+constexpr MethodRow rowOf(InterpMethod m) {
+  switch (m) {
+    case InterpMethod::Perspective: return {"perspective", "GL: perspective-correct, one reciprocal per pixel"};
+    case InterpMethod::Affine: return {"affine", "screen-linear: no reciprocal, textures swim and bend on triangles at grazing angles"};
+  }
+  return {};
+}
+constexpr MethodRow rowOf(CompareMethod m) {
+  switch (m) {
+    case CompareMethod::Bilinear:
+      return {"bilinear", "llvmpipe: the 2x2 footprint's four compares weighted bilinearly: smooth penumbrae"};
+    case CompareMethod::Nearest:
+      return {"nearest",
+              "one compare, of the texel the coordinate lands in: a 0 or 1 per tap, within 0.75 of bilinear; fewer texels and no blend"};
+  }
+  return {};
+}
+
+// The number of methods of the step whose enum is E.
+template <class E>
+constexpr size_t methodCount() {
+  size_t n = 0;
+  while (n < 256 && !rowOf(E(n)).name.empty()) ++n;
+  return n;
+}
+
+// E's rows are its values 0 .. methodCount - 1 (none after), named, each with its trade,
+// no two with one name.
+template <class E>
+constexpr bool rowsAreWhole() {
+  static_assert(std::is_same_v<std::underlying_type_t<E>, uint8_t>, "a MethodSet member is one byte");
+  const size_t n = methodCount<E>();
+  if (n < 2) return false;   // a step is a choice
+  for (size_t v = n; v < 256; ++v)
+    if (!rowOf(E(v)).name.empty()) return false;
+  for (size_t i = 0; i < n; ++i) {
+    if (rowOf(E(i)).trade.empty()) return false;
+    for (size_t j = 0; j < i; ++j)
+      if (rowOf(E(i)).name == rowOf(E(j)).name) return false;
+  }
+  return true;
+}
+
+// One step: its name, what it covers, its methods' rows, and where it lives in a MethodSet.
+struct StepRow {
+  std::string_view name;   // as typed: `math`, `filter`
+  std::string_view what;   // which operations the step covers
+  size_t count;            // methods: the values 0 .. count - 1 of the step's enum
+  MethodRow (*row)(size_t index);
+  size_t (*get)(const MethodSet&);   // the method's value, an index into the rows
+  void (*set)(MethodSet&, size_t index);
 };
 
 template <auto Field>
-uint8_t getField(const MethodSet& set) { return uint8_t(set.*Field); }
-template <auto Field>
-void setField(MethodSet& set, uint8_t index) { set.*Field = std::remove_reference_t<decltype(set.*Field)>(index); }
-#define RASTER_STEP_FIELD(field) &getField<&MethodSet::field>, &setField<&MethodSet::field>
-
-const std::array<StepBinding, 6>& bindings() {
-  static const std::array<StepBinding, 6> table{{
-      {"math", {"llvmpipe", "libm", "fast", "fast-fragment"}, RASTER_STEP_FIELD(math)},
-      {"filter", {"8bit", "float", nullptr}, RASTER_STEP_FIELD(filter)},
-      {"half", {"rtz", "rne", nullptr}, RASTER_STEP_FIELD(half)},
-      {"div", {"exact", "approx", nullptr}, RASTER_STEP_FIELD(div)},
-      {"interp", {"perspective", "affine", nullptr}, RASTER_STEP_FIELD(interp)},
-      {"compare", {"bilinear", "nearest", nullptr}, RASTER_STEP_FIELD(compare)},
-  }};
-  return table;
+constexpr StepRow stepRow(std::string_view name, std::string_view what) {
+  using E = std::remove_cvref_t<decltype(MethodSet{}.*Field)>;
+  static_assert(rowsAreWhole<E>(), "every enumerator of the step has its row (rowOf), in enum order, with no gaps");
+  return {name, what, methodCount<E>(), [](size_t index) { return rowOf(E(index)); },
+          [](const MethodSet& set) { return size_t(set.*Field); },
+          [](MethodSet& set, size_t index) { set.*Field = E(index); }};
 }
-#undef RASTER_STEP_FIELD
+
+constexpr std::array kSteps{
+    stepRow<&MethodSet::math>("math", "GLSL transcendentals in the shader ports: sin cos exp2 log2 pow atan atan2 asin acos"),
+    stepRow<&MethodSet::filter>("filter", "bilinear weights of RGBA8 colour lookups (shadow compares are float in every method)"),
+    stepRow<&MethodSet::half>("half", "float -> half rounding on writes and clears of RGBA16F targets"),
+    stepRow<&MethodSet::div>("div", "normalize and inversesqrt in the shaders, and the 1/w of perspective-correct interpolation"),
+    stepRow<&MethodSet::interp>("interp", "how varyings are interpolated across a triangle"),
+    stepRow<&MethodSet::compare>(
+        "compare", "how a shadow lookup (sampler2DShadow, LINEAR) filters its texel compares; GL leaves it to the implementation"),
+};
+
+// Every member of MethodSet is one step, each its own: setting a step changes no other.
+constexpr bool stepsAreTheMembers() {
+  if (sizeof(MethodSet) != kSteps.size()) return false;
+  for (size_t i = 0; i < kSteps.size(); ++i) {
+    MethodSet set;
+    kSteps[i].set(set, kSteps[i].count - 1);
+    for (size_t j = 0; j < kSteps.size(); ++j)
+      if ((kSteps[j].get(set) != 0) != (i == j)) return false;
+  }
+  return true;
+}
+static_assert(stepsAreTheMembers(), "kSteps has one row per member of MethodSet");
 
 std::string listOf(const std::vector<std::string>& names) {
   std::string out;
@@ -41,45 +143,28 @@ std::string listOf(const std::vector<std::string>& names) {
   return out;
 }
 
-const StepBinding& bindingOf(std::string_view step) {
-  for (const StepBinding& b : bindings())
-    if (step == b.step) return b;
+const StepRow& stepOf(std::string_view step) {
+  for (const StepRow& s : kSteps)
+    if (step == s.name) return s;
   std::vector<std::string> steps;
-  for (const StepBinding& b : bindings()) steps.emplace_back(b.step);
+  for (const StepRow& s : kSteps) steps.emplace_back(s.name);
   throw MethodError(std::string("unknown step '").append(step).append("' (steps: ").append(listOf(steps)).append(")"));
 }
+
+std::string_view nameIn(const StepRow& step, const MethodSet& set) { return step.row(step.get(set)).name; }
 
 }  // namespace
 
 const std::vector<StepInfo>& methodCatalog() {
-  static const std::vector<StepInfo> catalog{
-      {"math",
-       "GLSL transcendentals in the shader ports: sin cos exp2 log2 pow atan atan2 asin acos",
-       {{"llvmpipe", "llvmpipe's polynomials, bit for bit (relative error up to ~1e-4 in pow; 2-3 ulp in sin)"},
-        {"libm", "the C library in double, rounded once: correctly rounded float; 5-20x slower per call"},
-        {"fast", "low-degree polynomials, documented bounds in fast_math.h; fewer operations than llvmpipe's"},
-        {"fast-fragment", "fast in fragment shaders, llvmpipe's in vertex shaders: the same speed, and every vertex (so coverage) is GL's"}}},
-      {"filter",
-       "bilinear weights of RGBA8 colour lookups (shadow compares are float in every method)",
-       {{"8bit", "llvmpipe's AoS path: 8-bit weights, every lerp rounded to 8 bits"},
-        {"float", "float32 weights and lerps, as softpipe: off by up to ~1 of 255 from 8bit"}}},
-      {"half",
-       "float -> half rounding on writes and clears of RGBA16F targets",
-       {{"rtz", "llvmpipe's truncation toward zero: up to 1 half ulp low, biased"},
-        {"rne", "IEEE round to nearest even: half an ulp, unbiased; the same cost with F16C"}}},
-      {"div",
-       "normalize and inversesqrt in the shaders, and the 1/w of perspective-correct interpolation",
-       {{"exact", "correctly rounded division and square root"},
-        {"approx", "bit-pattern seed and Newton steps: 1/x within 7e-8, 1/sqrt within 5e-6; no divider or sqrt unit"}}},
-      {"interp",
-       "how varyings are interpolated across a triangle",
-       {{"perspective", "GL: perspective-correct, one reciprocal per pixel"},
-        {"affine", "screen-linear: no reciprocal, textures swim and bend on triangles at grazing angles"}}},
-      {"compare",
-       "how a shadow lookup (sampler2DShadow, LINEAR) filters its texel compares; GL leaves it to the implementation",
-       {{"bilinear", "llvmpipe: the 2x2 footprint's four compares weighted bilinearly: smooth penumbrae"},
-        {"nearest", "one compare, of the texel the coordinate lands in: a 0 or 1 per tap, within 0.75 of bilinear; fewer texels and no blend"}}},
-  };
+  static const std::vector<StepInfo> catalog = [] {
+    std::vector<StepInfo> steps;
+    for (const StepRow& s : kSteps) {
+      StepInfo& step = steps.emplace_back(StepInfo{std::string(s.name), std::string(s.what), {}});
+      for (size_t i = 0; i < s.count; ++i)
+        step.methods.push_back(MethodInfo{std::string(s.row(i).name), std::string(s.row(i).trade)});
+    }
+    return steps;
+  }();
   return catalog;
 }
 
@@ -109,14 +194,14 @@ MethodSet presetMethods(std::string_view preset) {
 }
 
 void setMethod(MethodSet& set, std::string_view step, std::string_view method) {
-  const StepBinding& b = bindingOf(step);
+  const StepRow& s = stepOf(step);
   std::vector<std::string> valid;
-  for (size_t i = 0; i < b.names.size() && b.names[i]; ++i) {
-    if (method == b.names[i]) {
-      b.set(set, uint8_t(i));
+  for (size_t i = 0; i < s.count; ++i) {
+    if (method == s.row(i).name) {
+      s.set(set, i);
       return;
     }
-    valid.emplace_back(b.names[i]);
+    valid.emplace_back(s.row(i).name);
   }
   throw MethodError(std::string("unknown method '").append(method).append("' for step ").append(step)
                         .append(" (methods: ").append(listOf(valid)).append(")"));
@@ -136,20 +221,17 @@ void applyMethodOverrides(MethodSet& set, std::string_view overrides) {
   }
 }
 
-std::string methodName(const MethodSet& set, std::string_view step) {
-  const StepBinding& b = bindingOf(step);
-  return b.names[b.get(set)];
-}
+std::string methodName(const MethodSet& set, std::string_view step) { return std::string(nameIn(stepOf(step), set)); }
 
 std::vector<std::pair<std::string, std::string>> methodNames(const MethodSet& set) {
   std::vector<std::pair<std::string, std::string>> names;
-  for (const StepBinding& b : bindings()) names.emplace_back(b.step, b.names[b.get(set)]);
+  for (const StepRow& s : kSteps) names.emplace_back(s.name, nameIn(s, set));
   return names;
 }
 
 MethodSet vertexStageSet(const MethodSet& set) {
   MethodSet vertex = set;
-  if (vertex.math == MathMethod::FastFragment) vertex.math = MathMethod::Llvmpipe;
+  vertex.math = methods::vertexMath(set.math);
   return vertex;
 }
 
@@ -158,9 +240,9 @@ std::string methodLabel(const MethodSet& set) {
     if (presetMethods(preset) == set) return preset;
   const MethodSet gl;
   std::string label;
-  for (const StepBinding& b : bindings()) {
-    if (b.get(set) == b.get(gl)) continue;
-    label.append(label.empty() ? "" : ",").append(b.step).append("=").append(b.names[b.get(set)]);
+  for (const StepRow& s : kSteps) {
+    if (s.get(set) == s.get(gl)) continue;
+    label.append(label.empty() ? "" : ",").append(s.name).append("=").append(nameIn(s, set));
   }
   return label;
 }

@@ -3,10 +3,15 @@
 //
 // Every step has the llvmpipe-exact method as its default, so a default MethodSet renders
 // the bytes llvmpipe renders. `raster methods` lists every step and method with what it
-// trades (methodCatalog() below); the presets are
+// trades (methodCatalog() below, made from methods.cpp's one row per method); the presets are
 //   gl       every step llvmpipe-exact (the default);
 //   precise  the most accurate method of every step;
 //   fast     the fastest set that keeps every scene at >= 40 dB against llvmpipe.
+//
+// Adding a method: its enumerator below (the values run 0, 1, ... in declaration order;
+// none sets its own), its row in methods.cpp, and its answer in the step's picker below.
+// The compiler asks for each: -Werror=switch (CMakeLists.txt) rejects a switch over the
+// enum that leaves an enumerator out, and every read of the set goes through one.
 //
 // Where each step is decided:
 //   math    simd/gl_math.h        the GLSL transcendentals the shader ports call (the
@@ -117,6 +122,71 @@ namespace methods {
 // Read by the hot code of each step; written only by ScopedMethods.
 inline MethodSet activeSet;
 inline const MethodSet& active() { return activeSet; }
+}  // namespace methods
+
+// ---- the pickers -----------------------------------------------------------------------------
+// What the hot code of a step asks of its method, one function per question, each a switch
+// over every enumerator of the step with no default: a new method does not compile until
+// each question has its answer for it (and a method that needs a path of its own turns
+// the question into a switch at the sites that ask it: grep the picker's name). The hot
+// code reads the active set where it always did (once per call, outside its loops) and
+// asks. The value after each switch is never returned (a MethodSet holds enumerators only:
+// setMethod sets rows' values); it is the one that folds the picker into the compare the
+// hot code had before (`m == Approx`: with __builtin_unreachable there GCC tests the whole
+// byte instead, and stopped unswitching a loop for it). The math step's sites switch
+// themselves (simd/gl_math.h).
+namespace methods {
+// filter: llvmpipe's 8-bit fixed-point weights and lerps for RGBA8 lookups (else float).
+constexpr bool fixedPointFilter(FilterMethod m) {
+  switch (m) {
+    case FilterMethod::Unorm8: return true;
+    case FilterMethod::Float: return false;
+  }
+  return false;
+}
+// half: float -> half rounds to nearest even (else toward zero).
+constexpr bool halfNearestEven(HalfMethod m) {
+  switch (m) {
+    case HalfMethod::TowardZero: return false;
+    case HalfMethod::NearestEven: return true;
+  }
+  return false;
+}
+// div: the approximate reciprocal and inverse square root (else true division and sqrt).
+constexpr bool approximateDivide(DivMethod m) {
+  switch (m) {
+    case DivMethod::Exact: return false;
+    case DivMethod::Approx: return true;
+  }
+  return false;
+}
+// interp: varyings perspective-correct (else screen-linear).
+constexpr bool perspectiveVaryings(InterpMethod m) {
+  switch (m) {
+    case InterpMethod::Perspective: return true;
+    case InterpMethod::Affine: return false;
+  }
+  return true;
+}
+// compare: one compare, of the texel a shadow coordinate lands in (else the 2x2 footprint's
+// compares weighted bilinearly).
+constexpr bool nearestCompare(CompareMethod m) {
+  switch (m) {
+    case CompareMethod::Bilinear: return false;
+    case CompareMethod::Nearest: return true;
+  }
+  return false;
+}
+// math: the method the vertex stage runs (vertexStageSet).
+constexpr MathMethod vertexMath(MathMethod m) {
+  switch (m) {
+    case MathMethod::Llvmpipe:
+    case MathMethod::Libm:
+    case MathMethod::Fast: return m;
+    case MathMethod::FastFragment: return MathMethod::Llvmpipe;
+  }
+  return m;
+}
 }  // namespace methods
 
 // Installs a set for its lifetime and restores the previous one after.

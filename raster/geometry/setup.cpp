@@ -133,7 +133,7 @@ void setup_detail::appendVaryingPlanes(const SetupState& state, const PlaneSetup
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
   // The interp=affine method (methods.h) takes the plain values (times 1, exactly): planes
   // that are linear in screen space.
-  const bool perspective = methods::active().interp == InterpMethod::Perspective;
+  const bool perspective = methods::perspectiveVaryings(methods::active().interp);
   const float oow0 = perspective ? v0[kWindow + 3] : 1.0f, oow1 = perspective ? v1[kWindow + 3] : 1.0f,
               oow2 = perspective ? v2[kWindow + 3] : 1.0f;
   // The list grows once per triangle (without zeroing), and the loop, free of push_back's

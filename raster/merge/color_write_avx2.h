@@ -17,12 +17,12 @@ namespace raster::merge {
 // halfFromFloatNearestEven (tests/simd and format hold them equal on every class of input);
 // vcvtph2ps is exact. The rounding is an immediate, so each method is its own instruction.
 inline __m128i halvesOf(__m128 value) {
-  return methods::active().half == HalfMethod::NearestEven ? _mm_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
-                                                           : _mm_cvtps_ph(value, _MM_FROUND_TO_ZERO);
+  return methods::halfNearestEven(methods::active().half) ? _mm_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
+                                                          : _mm_cvtps_ph(value, _MM_FROUND_TO_ZERO);
 }
 inline __m128i halvesOf(__m256 value) {
-  return methods::active().half == HalfMethod::NearestEven ? _mm256_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
-                                                           : _mm256_cvtps_ph(value, _MM_FROUND_TO_ZERO);
+  return methods::halfNearestEven(methods::active().half) ? _mm256_cvtps_ph(value, _MM_FROUND_TO_NEAREST_INT)
+                                                          : _mm256_cvtps_ph(value, _MM_FROUND_TO_ZERO);
 }
 
 // Planes -> one RGBA vector per lane: v[k] holds lane k in its low half, lane k + 4 high.

@@ -100,7 +100,7 @@ template <class F> F length(vec3<F> v) { return sqrt(dot(v, v)); }
 // llvmpipe's 1 / sqrt(x) (GLSL IR's rsq), approx is inversesqrtApprox (div_approx.h).
 // normalize(v) is v * inversesqrt(dot(v, v)) (row normalize).
 template <class F> F inversesqrt(F x) {
-  if (methods::active().div == DivMethod::Approx) return inversesqrtApprox(x);
+  if (methods::approximateDivide(methods::active().div)) return inversesqrtApprox(x);
   return F(1.0f) / sqrt(x);
 }
 template <class F> vec3<F> normalize(vec3<F> v) { return v * inversesqrt(dot(v, v)); }

@@ -88,7 +88,7 @@ inline uint16_t halfFromFloatNearestEven(float f) {
 
 // Render-target writes and clears of half targets: the `half` step of the method set.
 inline uint16_t halfFromFloat(float f, HalfMethod method) {
-  return method == HalfMethod::NearestEven ? halfFromFloatNearestEven(f) : halfFromFloatTowardZero(f);
+  return methods::halfNearestEven(method) ? halfFromFloatNearestEven(f) : halfFromFloatTowardZero(f);
 }
 
 inline float floatFromHalf(uint16_t h) {

@@ -197,7 +197,7 @@ void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
 }
 
 void explainColor(const Texture& texture, SampleRecord& record) {
-  const bool fixedPoint = texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8;
+  const bool fixedPoint = texture.format == TexelFormat::RGBA8 && methods::fixedPointFilter(methods::active().filter);
   const float s = record.s, t = record.t;
   if (texture.sampler.filter == Filter::Nearest) {
     record.filter = "nearest";
@@ -224,7 +224,7 @@ void explainColor(const Texture& texture, SampleRecord& record) {
 }
 
 void sampleColor(const Texture& texture, float s, float t, float out[4]) {
-  if (texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Unorm8) sampleRgba8(texture, s, t, out);
+  if (texture.format == TexelFormat::RGBA8 && methods::fixedPointFilter(methods::active().filter)) sampleRgba8(texture, s, t, out);
   else sampleFloat(texture, s, t, out);
 }
 

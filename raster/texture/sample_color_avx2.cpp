@@ -379,7 +379,7 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
                   simd::Float8 (*out)[4]) {
   __m256 sv[N], tv[N];
   for (int h = 0; h < N; ++h) sv[h] = s[h].v, tv[h] = t[h].v;
-  if (texture.format == TexelFormat::RGBA8 && methods::active().filter == FilterMethod::Float) {
+  if (texture.format == TexelFormat::RGBA8 && !methods::fixedPointFilter(methods::active().filter)) {
     sampleRgba8Float<N>(texture, sv, tv, out);
   } else if (texture.format == TexelFormat::RGBA8) {
     sampleRgba8<N>(texture, sv, tv, out);

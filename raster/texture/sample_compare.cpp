@@ -77,15 +77,15 @@ float compareNearestClamp(const Texture& depth, float s, float t, float ref) {
 }
 
 float compareClamp(const Texture& depth, float s, float t, float ref) {
-  return methods::active().compare == CompareMethod::Nearest ? compareNearestClamp(depth, s, t, ref)
-                                                             : compareLinearClamp(depth, s, t, ref);
+  return methods::nearestCompare(methods::active().compare) ? compareNearestClamp(depth, s, t, ref)
+                                                                : compareLinearClamp(depth, s, t, ref);
 }
 
 // The footprint of compareClamp, for pixel history (sample_trace.h).
 void explainCompare(const Texture& depth, SampleRecord& record) {
   const float ref = clampRef(record.ref);
   record.explained[0] = compareClamp(depth, record.s, record.t, record.ref);
-  if (methods::active().compare == CompareMethod::Nearest) {
+  if (methods::nearestCompare(methods::active().compare)) {
     record.filter = "compare (LEQUAL) of the texel the coordinate lands in (compare=nearest)";
     record.texelCount = 1;
     FootprintTexel& texel = record.texels[0];

@@ -42,7 +42,7 @@ __m256i nearestTexel8(__m256 coord, int size) {
   return _mm256_cvttps_epi32(_mm256_min_ps(c, _mm256_set1_ps(float(size - 1))));
 }
 
-bool nearestCompare() { return methods::active().compare == CompareMethod::Nearest; }
+bool nearestCompare() { return methods::nearestCompare(methods::active().compare); }
 
 }  // namespace
 

@@ -232,7 +232,7 @@ bool compareNearestGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2
 template <int R>
 bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, float origin, float step, simd::Float8x2 ref16,
                    simd::Float8x2* taps) {
-  if (methods::active().compare == CompareMethod::Nearest) return compareNearestGrid16<R>(depth, s, t, origin, step, ref16, taps);
+  if (methods::nearestCompare(methods::active().compare)) return compareNearestGrid16<R>(depth, s, t, origin, step, ref16, taps);
   constexpr int count = 2 * R + 1, texels = count + 1;
   LinearTaps16 x[count], y[count];
   compareGridTaps16<R>(depth, s.v, t.v, origin, step, x, y);

@@ -98,7 +98,7 @@ struct StripColumns16 {
 // Whether sampleRgba8Pair is this texture's lookup under the active method set.
 inline bool isRgba8Bilinear(const Texture& t) {
   return t.format == TexelFormat::RGBA8 && t.sampler.filter == Filter::Linear &&
-         methods::active().filter == FilterMethod::Unorm8;
+         methods::fixedPointFilter(methods::active().filter);
 }
 
 // The bilinear RGBA8 lookup of 16 lanes (isRgba8Bilinear). A grey texture is read from

@@ -47,10 +47,10 @@ template <class F>
   const F w = unitW ? F(1.0f) : evaluatePlane(tri.w, px, py);
   const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
   const Plane* planes = job.varyingPlanes.data() + tri.varyingBase;
-  if (methodSet.interp == InterpMethod::Affine || unitW) {
+  if (!methods::perspectiveVaryings(methodSet.interp) || unitW) {
     for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py);
   } else {
-    const F oow = methodSet.div == DivMethod::Approx ? glsl::reciprocalApprox(w) : F(1.0f) / w;
+    const F oow = methods::approximateDivide(methodSet.div) ? glsl::reciprocalApprox(w) : F(1.0f) / w;
     for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py) * oow;
   }
 

@@ -3,6 +3,12 @@
 // SIMD lane type computes exactly what the plain C++ one does.
 #include <doctest/doctest.h>
 
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raster/methods.h"
+#include "tests/method_sets.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {
@@ -51,6 +57,45 @@ TEST_SUITE("determinism") {
             auto backend = scenes::makeRasterBackend(threads, scalar);
             checkSameBytes(reference, testing_support::renderScene(*backend, scene, 1.0f, w, h));
           }
+        }
+      }
+    }
+  }
+
+  // The same under every method of every step (tests/method_sets.h), so each method's SIMD
+  // code is held to its scalar reference and to one thread, not only gl's. Every scene at a
+  // small size (the methods' code paths, not the frame's, are what is new here), set up
+  // once per backend (deferred's assets take longer to load than a frame of it to render)
+  // and drawn under each set in turn: the backends see the same frames in the same order.
+  TEST_CASE("every method of every step, every scene: threads 1 and 3, SIMD and scalar lanes, give identical bytes") {
+    scenes::SceneOptions options;
+    options.width = 97;
+    options.height = 61;
+    struct Run {
+      std::string name;
+      std::unique_ptr<scenes::Backend> backend;
+      std::unique_ptr<scenes::Scene> scene;
+    };
+    for (const std::string& sceneName : scenes::sceneNames()) {
+      std::vector<Run> runs;   // the first, SIMD lanes on one thread, is the reference
+      for (bool scalar : {false, true})
+        for (int threads : {1, 3}) {
+          Run& run = runs.emplace_back(Run{std::to_string(threads) + " threads, " + (scalar ? "scalar" : "SIMD") + " lanes",
+                                           scenes::makeRasterBackend(threads, scalar), scenes::makeScene(sceneName, options)});
+          run.backend->resizeDefaultFramebuffer(options.width, options.height);
+          run.scene->setup(*run.backend);
+        }
+      for (const raster::MethodSet& set : testing_support::everyMethodSet()) {
+        const raster::ScopedMethods scoped(set);
+        std::vector<std::vector<scenes::Target>> targets;
+        for (Run& run : runs) {
+          run.scene->renderFrame(*run.backend, options.time);
+          targets.push_back(run.scene->readTargets(*run.backend));
+        }
+        for (size_t i = 1; i < runs.size(); ++i) {
+          INFO("methods " << raster::methodLabel(set) << ": " << sceneName << " at " << options.width << "x" << options.height
+                          << ", " << runs[i].name);
+          checkSameBytes(targets[0], targets[i]);
         }
       }
     }

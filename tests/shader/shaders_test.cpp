@@ -8,11 +8,13 @@
 #include <random>
 #include <vector>
 
+#include "raster/methods.h"
 #include "raster/texture/format.h"
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/hdr/scene.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
+#include "tests/method_sets.h"
 
 namespace {
 
@@ -186,35 +188,45 @@ glm::mat4 randomMatrix(std::mt19937& rng) {
 }  // namespace
 
 TEST_SUITE("shaders") {
+  // Under every method set (tests/method_sets.h): each method's SIMD code is held to its
+  // plain-lane reference, not only gl's.
   TEST_CASE("shadow/shadow: SIMD and plain lanes agree bit for bit") {
-    std::mt19937 rng(11);
-    for (int round = 0; round < 200; ++round) {
-      shaders::shadow::ShadowPass::Uniforms u;
-      u.u_light_vp = randomMatrix(rng);
-      u.u_model = randomMatrix(rng);
-      checkVertexAgrees<shaders::shadow::ShadowPass>(u, rng);
-      checkFragmentAgrees<shaders::shadow::ShadowPass>(u, rng, -1.0f, 1.0f);
+    for (const raster::MethodSet& set : testing_support::everyMethodSet()) {
+      const raster::ScopedMethods scoped(set);
+      INFO("methods " << raster::methodLabel(set));
+      std::mt19937 rng(11);
+      for (int round = 0; round < 200; ++round) {
+        shaders::shadow::ShadowPass::Uniforms u;
+        u.u_light_vp = randomMatrix(rng);
+        u.u_model = randomMatrix(rng);
+        checkVertexAgrees<shaders::shadow::ShadowPass>(u, rng);
+        checkFragmentAgrees<shaders::shadow::ShadowPass>(u, rng, -1.0f, 1.0f);
+      }
     }
   }
 
   TEST_CASE("shadow/main: SIMD and plain lanes agree bit for bit") {
-    std::mt19937 rng(12);
-    raster::Texture shadowMap(64, 64, raster::TexelFormat::Depth24);
-    std::uniform_int_distribution<uint32_t> code(0, raster::format::kDepth24Max);
-    for (uint32_t& texel : shadowMap.depth) texel = code(rng);
-    std::uniform_real_distribution<float> value(-3.0f, 3.0f);
-    for (int round = 0; round < 400; ++round) {
-      shaders::shadow::MainPass::Uniforms u;
-      u.u_light_vp = randomMatrix(rng);
-      u.u_model = randomMatrix(rng);
-      u.u_view = randomMatrix(rng);
-      u.u_proj = randomMatrix(rng);
-      u.u_light_dir = {value(rng), value(rng), value(rng)};
-      u.u_cam_pos = {value(rng), value(rng), value(rng)};
-      u.u_is_floor = float(round % 2);
-      u.shadow_map.texture = &shadowMap;
-      checkVertexAgrees<shaders::shadow::MainPass>(u, rng);
-      checkFragmentAgrees<shaders::shadow::MainPass>(u, rng, -2.0f, 2.0f);
+    for (const raster::MethodSet& set : testing_support::everyMethodSet()) {
+      const raster::ScopedMethods scoped(set);
+      INFO("methods " << raster::methodLabel(set));
+      std::mt19937 rng(12);
+      raster::Texture shadowMap(64, 64, raster::TexelFormat::Depth24);
+      std::uniform_int_distribution<uint32_t> code(0, raster::format::kDepth24Max);
+      for (uint32_t& texel : shadowMap.depth) texel = code(rng);
+      std::uniform_real_distribution<float> value(-3.0f, 3.0f);
+      for (int round = 0; round < 400; ++round) {
+        shaders::shadow::MainPass::Uniforms u;
+        u.u_light_vp = randomMatrix(rng);
+        u.u_model = randomMatrix(rng);
+        u.u_view = randomMatrix(rng);
+        u.u_proj = randomMatrix(rng);
+        u.u_light_dir = {value(rng), value(rng), value(rng)};
+        u.u_cam_pos = {value(rng), value(rng), value(rng)};
+        u.u_is_floor = float(round % 2);
+        u.shadow_map.texture = &shadowMap;
+        checkVertexAgrees<shaders::shadow::MainPass>(u, rng);
+        checkFragmentAgrees<shaders::shadow::MainPass>(u, rng, -2.0f, 2.0f);
+      }
     }
   }
 

@@ -76,7 +76,7 @@ TEST_SUITE("determinism") {
       std::unique_ptr<scenes::Backend> backend;
       std::unique_ptr<scenes::Scene> scene;
     };
-    for (const std::string& sceneName : scenes::sceneNames()) {
+    for (const std::string& sceneName : testing_support::scenesUnderTest()) {
       std::vector<Run> runs;   // the first, SIMD lanes on one thread, is the reference
       for (bool scalar : {false, true})
         for (int threads : {1, 3}) {

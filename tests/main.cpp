@@ -20,9 +20,14 @@ int main(int argc, char** argv) {
       std::cerr << "RASTER_TEST_SCENE_ALIAS: '" << text << "' is not NEW=EXISTING\n";
       return 2;
     }
-    scenes::SceneEntry row = scenes::sceneEntry(text.substr(equals + 1));
-    row.name = text.substr(0, equals);
-    scenes::registerScene(std::move(row));
+    try {
+      scenes::SceneEntry row = scenes::sceneEntry(text.substr(equals + 1));
+      row.name = text.substr(0, equals);
+      scenes::registerScene(std::move(row));
+    } catch (const scenes::SceneError& e) {
+      std::cerr << "RASTER_TEST_SCENE_ALIAS: " << e.what() << "\n";
+      return 2;
+    }
   }
   doctest::Context context(argc, argv);
   return context.run();

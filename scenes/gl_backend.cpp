@@ -16,7 +16,6 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -422,35 +421,21 @@ class GlBackend : public Backend {
     return log;
   }
 
-  // The program's C++ port (scenes/registry.h) must set what GL sets: every uniform GL
-  // reports active is one of the port's, and every uniform of the port is declared in the
-  // GLSL. A misspelt name would otherwise show up as an image difference, not an error.
-  // Programs without a port (the GL backend's own tests) are not checked.
+  // The program's C++ port must declare what its GLSL does (checkPortUniforms,
+  // scenes/registry.h): given the uniforms GL reports active and the GLSL source.
   static void checkPortUniforms(const std::string& program, const ProgramFiles& files, GLuint id) {
-    const ProgramEntry* port = nullptr;
-    for (const ProgramEntry* entry : programRegistry())
-      if (entry->name == program) port = entry;
-    if (!port) return;
-    std::string portNames;
-    for (const std::string& name : port->uniforms) portNames += (portNames.empty() ? "" : ", ") + name;
-    const std::string where = "program " + program + " (" + files.vertex + ", " + files.fragment + ")";
     GLint count = 0;
     glGetProgramiv(id, GL_ACTIVE_UNIFORMS, &count);
+    std::vector<std::string> active;
     for (GLint i = 0; i < count; ++i) {
       char name[256];
       GLsizei length = 0;
       GLint size = 0;
       GLenum type = 0;
       glGetActiveUniform(id, GLuint(i), sizeof name, &length, &size, &type, name);
-      std::string active(name, size_t(std::max(length, 0)));
-      if (const size_t bracket = active.find('['); bracket != std::string::npos) active.resize(bracket);   // arrays
-      if (std::find(port->uniforms.begin(), port->uniforms.end(), active) == port->uniforms.end())
-        throw std::runtime_error(where + ": uniform '" + active + "' is active in the GLSL, but the C++ port has no uniform of that name (its uniforms: " + portNames + ")");
+      active.emplace_back(name, size_t(std::max(length, 0)));
     }
-    const std::string source = readFile(files.vertex) + "\n" + readFile(files.fragment);
-    for (const std::string& name : port->uniforms)
-      if (!std::regex_search(source, std::regex("\\buniform\\s[^;]*\\b" + name + "\\b")))
-        throw std::runtime_error(where + ": the C++ port's uniform '" + name + "' is not a uniform of the GLSL");
+    scenes::checkPortUniforms(program, files, active, readFile(files.vertex) + "\n" + readFile(files.fragment));
   }
 
   static GLuint compileShader(GLenum stage, const std::string& path) {

@@ -48,8 +48,7 @@ void resolve(raster::Sampler2DShadow& s, const TextureUnits& units) { resolveSam
 }  // namespace program_detail
 
 std::unique_ptr<BoundProgram> makeBoundProgram(const std::string& name) {
-  for (const ProgramEntry* entry : programRegistry())
-    if (entry->name == name) return entry->make();
+  if (const ProgramEntry* entry = findProgram(name)) return entry->make();
   throw std::runtime_error("no C++ port of shader program " + name);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <deque>
 #include <iterator>
+#include <regex>
 #include <stdexcept>
 
 
@@ -89,6 +90,31 @@ std::vector<const ProgramEntry*> programRegistry() {
     for (const ProgramEntry& p : row.programs) add(p);
   for (const ProgramEntry& p : standalonePrograms()) add(p);
   return all;
+}
+
+const ProgramEntry* findProgram(const std::string& name) {
+  for (const ProgramEntry* entry : programRegistry())
+    if (entry->name == name) return entry;
+  return nullptr;
+}
+
+void checkPortUniforms(const std::string& program, const ProgramFiles& files, const std::vector<std::string>& active,
+                       const std::string& glslSource) {
+  const ProgramEntry* port = findProgram(program);
+  if (!port) return;
+  const std::string where = "program " + program + " (" + files.vertex + ", " + files.fragment + ")";
+  for (std::string name : active) {
+    if (const size_t bracket = name.find('['); bracket != std::string::npos) name.resize(bracket);   // arrays
+    if (std::find(port->uniforms.begin(), port->uniforms.end(), name) != port->uniforms.end()) continue;
+    std::string portNames;
+    for (const std::string& n : port->uniforms) portNames += (portNames.empty() ? "" : ", ") + n;
+    throw std::runtime_error(where + ": uniform '" + name +
+                             "' is active in the GLSL, but the C++ port has no uniform of that name (its uniforms: " +
+                             portNames + ")");
+  }
+  for (const std::string& name : port->uniforms)
+    if (!std::regex_search(glslSource, std::regex("\\buniform\\s[^;]*\\b" + name + "\\b")))
+      throw std::runtime_error(where + ": the C++ port's uniform '" + name + "' is not a uniform of the GLSL");
 }
 
 }  // namespace scenes

@@ -54,6 +54,16 @@ void registerScene(SceneEntry entry);
 void registerProgram(ProgramEntry entry);
 // Every program: each scene's, then those registered on their own.
 std::vector<const ProgramEntry*> programRegistry();
+// The program of that name, or null.
+const ProgramEntry* findProgram(const std::string& name);
+
+// A port's uniforms must be its GLSL's: every uniform GL reports active (`active`, array
+// names with or without "[0]") is one of the port's, and every uniform of the port is
+// declared in `glslSource` (both stages' text). Otherwise std::runtime_error naming the
+// program, its files and the name: a misspelt name is an error, not an image difference.
+// A program with no port in the registry (the GL backend's own tests) is not checked.
+void checkPortUniforms(const std::string& program, const ProgramFiles& files, const std::vector<std::string>& active,
+                       const std::string& glslSource);
 
 // The built-in rows, one line per scene, and the programs outside every scene (`raster
 // soup`'s): scenes/builtin_scenes.cpp. (The fuzz targets, which cannot compile the shader

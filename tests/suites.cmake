@@ -2,16 +2,37 @@
 # The suites are read from the test sources (every TEST_SUITE("NAME")): a suite that
 # exists, runs. Editing a test source configures again, so a new suite is found at once;
 # the suites_registered test checks the list against the binary's own.
+# With RASTER_TEST_SUITES_ONLY, TEST_SOURCES keeps only the sources declaring one of those
+# suites and those declaring none (main, shared helpers), and only those suites register.
 set(RASTER_TEST_SUITES "")
+set(kept_sources "")
 foreach(source ${TEST_SOURCES})
   file(STRINGS ${source} declared REGEX "TEST_SUITE(_BEGIN)?\\(\"[^\"]+\"\\)")
+  set(keep TRUE)
+  if(RASTER_TEST_SUITES_ONLY AND declared)
+    set(keep FALSE)
+  endif()
+  set(source_suites "")
   foreach(line ${declared})
     string(REGEX REPLACE ".*TEST_SUITE(_BEGIN)?\\(\"([^\"]+)\"\\).*" "\\2" suite "${line}")
-    list(APPEND RASTER_TEST_SUITES ${suite})
+    list(APPEND source_suites ${suite})
+    if(suite IN_LIST RASTER_TEST_SUITES_ONLY)
+      set(keep TRUE)
+    endif()
   endforeach()
+  if(keep)
+    list(APPEND kept_sources ${source})
+    list(APPEND RASTER_TEST_SUITES ${source_suites})
+  endif()
 endforeach()
+set(TEST_SOURCES ${kept_sources})
 list(REMOVE_DUPLICATES RASTER_TEST_SUITES)
 list(SORT RASTER_TEST_SUITES)
+foreach(wanted ${RASTER_TEST_SUITES_ONLY})
+  if(NOT wanted IN_LIST RASTER_TEST_SUITES)
+    message(FATAL_ERROR "RASTER_TEST_SUITES_ONLY names ${wanted}, which no test source declares")
+  endif()
+endforeach()
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${TEST_SOURCES})
 foreach(suite ${RASTER_TEST_SUITES})
   add_test(NAME ${suite} COMMAND raster_tests --test-suite=${suite} --no-intro)
@@ -21,6 +42,9 @@ endforeach()
 # scan above does not read would otherwise never run).
 add_test(NAME suites_registered COMMAND ${CMAKE_COMMAND} -DBINARY=$<TARGET_FILE:raster_tests>
          "-DEXPECTED=${RASTER_TEST_SUITES}" -P ${CMAKE_CURRENT_LIST_DIR}/check_suites.cmake)
+if(RASTER_TEST_SUITES_ONLY)
+  return()   # the tests below run the command line, the microbenchmarks and Python
+endif()
 
 # The longest suite (GL comparisons of the deferred scene; about 10 minutes under the
 # sanitizers) starts first, so `ctest -j` runs the others beside it.

@@ -13,7 +13,6 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "scenes/assets.h"
-#include "scenes/program_registry.h"
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/deferred/lighting.h"
 #include "shaders_cpp/deferred/ssao.h"
@@ -239,8 +238,8 @@ SceneEntry deferredScene() {
       // light_dir = normalize(0.6 cos, 1.05, 0.6 sin): atan(1.05 / 0.6) above the ground
       .params = {param::time(), param::size(), param::lightElevation("60.26"), param::offsetScale(), param::nearPlane(),
                  param::worldOffset()},
-      .programs = {programEntry<shaders::shadow::ShadowPass>(), programEntry<shaders::deferred::GBufferPass>(),
-                   programEntry<shaders::deferred::SsaoPass>(), programEntry<shaders::deferred::LightingPass>()},
+      .programs = {shaders::shadow::shadowProgram(), shaders::deferred::gbufferProgram(),
+                   shaders::deferred::ssaoProgram(), shaders::deferred::lightingProgram()},
       .assets = {CAT_OBJ, CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_AO, BRICK_ROUGH, HDRI},
       .sweeps = {"light_elevation=1:80:10:log",
                  "near=0.1:1e-6:11:log",

@@ -35,7 +35,6 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
-#include "scenes/program_registry.h"
 #include "shaders_cpp/hdr/bright.h"
 #include "shaders_cpp/hdr/composite.h"
 #include "shaders_cpp/hdr/down.h"
@@ -310,9 +309,9 @@ SceneEntry hdrScene() {
                  {"intensity", 0, 1e10, false, "", "1",
                   "scale on every cube's colour; past about 65504 the half-float scene target overflows to inf"},
                  param::nearPlane(), param::worldOffset()},
-      .programs = {programEntry<shaders::hdr::ScenePass>(), programEntry<shaders::hdr::BrightPass>(),
-                   programEntry<shaders::hdr::DownPass>(), programEntry<shaders::hdr::UpPass>(),
-                   programEntry<shaders::hdr::CompositePass>()},
+      .programs = {shaders::hdr::sceneProgram(), shaders::hdr::brightProgram(),
+                   shaders::hdr::downProgram(), shaders::hdr::upProgram(),
+                   shaders::hdr::compositeProgram()},
       .assets = {},
       .sweeps = {"intensity=1:1e6:13:log",
                  "instances=1:200000:10:log",

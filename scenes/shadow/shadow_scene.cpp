@@ -10,7 +10,6 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "scenes/program_registry.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 
@@ -172,7 +171,7 @@ SceneEntry shadowScene() {
       // light_dir = normalize(cos, 1.4, sin): atan(1.4) above the ground
       .params = {param::time(), param::size(), param::lightElevation("54.46"), param::offsetScale(), param::nearPlane(),
                  param::worldOffset()},
-      .programs = {programEntry<shaders::shadow::ShadowPass>(), programEntry<shaders::shadow::MainPass>()},
+      .programs = {shaders::shadow::shadowProgram(), shaders::shadow::mainProgram()},
       .assets = {},
       .sweeps = {"light_elevation=1:80:12:log",
                  "offset_scale=0:4:9",

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 
 namespace shaders::deferred {
 
@@ -109,5 +110,9 @@ struct GBufferPass {
     out.color[2] = vec4<F>(in.gv_world_pos, F(u.u_material));
   }
 };
+
+// This port's row in the program registry. gbuffer.cpp defines it: the pipeline is
+// instantiated over GBufferPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry gbufferProgram();
 
 }  // namespace shaders::deferred

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/deferred/post.h"
 
 namespace shaders::deferred {
@@ -206,5 +207,9 @@ struct LightingPass : PostProgram {
     out.color[0] = vec4<F>(out_col, F(1.0f));
   }
 };
+
+// This port's row in the program registry. lighting.cpp defines it: the pipeline is
+// instantiated over LightingPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry lightingProgram();
 
 }  // namespace shaders::deferred

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/deferred/post.h"
 
 namespace shaders::deferred {
@@ -112,5 +113,9 @@ struct SsaoPass : PostProgram {
     out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));
   }
 };
+
+// This port's row in the program registry. ssao.cpp defines it: the pipeline is
+// instantiated over SsaoPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry ssaoProgram();
 
 }  // namespace shaders::deferred

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {
@@ -35,5 +36,9 @@ struct BrightPass : PostProgram {
     out.color[0] = vec4<F>(hdr * karis_weight * curve, F(1.0f));
   }
 };
+
+// This port's row in the program registry. bright.cpp defines it: the pipeline is
+// instantiated over BrightPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry brightProgram();
 
 }  // namespace shaders::hdr

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {
@@ -58,5 +59,9 @@ struct CompositePass : PostProgram {
     out.color[0] = vec4<F>(encoded, F(1.0f));
   }
 };
+
+// This port's row in the program registry. composite.cpp defines it: the pipeline is
+// instantiated over CompositePass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry compositeProgram();
 
 }  // namespace shaders::hdr

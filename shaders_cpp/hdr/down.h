@@ -7,6 +7,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {
@@ -43,5 +44,9 @@ struct DownPass : PostProgram {
     out.color[0] = vec4<F>(sum, F(1.0f));
   }
 };
+
+// This port's row in the program registry. down.cpp defines it: the pipeline is
+// instantiated over DownPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry downProgram();
 
 }  // namespace shaders::hdr

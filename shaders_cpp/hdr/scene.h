@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 
 namespace shaders::hdr {
 
@@ -108,5 +109,9 @@ struct ScenePass {
     out.color[0] = vec4<F>(lit, F(1.0f));
   }
 };
+
+// This port's row in the program registry. scene.cpp defines it: the pipeline is
+// instantiated over ScenePass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry sceneProgram();
 
 }  // namespace shaders::hdr

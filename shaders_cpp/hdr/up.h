@@ -5,6 +5,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 #include "shaders_cpp/hdr/post.h"
 
 namespace shaders::hdr {
@@ -47,5 +48,9 @@ struct UpPass : PostProgram {
     out.color[0] = vec4<F>(tent, F(1.0f));
   }
 };
+
+// This port's row in the program registry. up.cpp defines it: the pipeline is
+// instantiated over UpPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry upProgram();
 
 }  // namespace shaders::hdr

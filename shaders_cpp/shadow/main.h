@@ -11,6 +11,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 
 namespace shaders::shadow {
 
@@ -130,5 +131,9 @@ struct MainPass {
     out.color[0] = vec4<F>(col, F(1.0f));
   }
 };
+
+// This port's row in the program registry. main.cpp defines it: the pipeline is
+// instantiated over MainPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry mainProgram();
 
 }  // namespace shaders::shadow

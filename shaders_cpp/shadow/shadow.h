@@ -2,6 +2,7 @@
 #pragma once
 
 #include "raster/shader/program.h"
+#include "scenes/program_entry.h"
 
 namespace shaders::shadow {
 
@@ -37,5 +38,9 @@ struct ShadowPass {
     out.color[0] = vec4<F>(F(1.0f), F(1.0f), F(1.0f), F(1.0f));
   }
 };
+
+// This port's row in the program registry. shadow.cpp defines it: the pipeline is
+// instantiated over ShadowPass (SIMD and scalar lanes) there, once, in a file of its own.
+scenes::ProgramEntry shadowProgram();
 
 }  // namespace shaders::shadow

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over the tests that run this pipeline on several threads: determinism
-# (1, 2, 5 and 7 threads, every scene) and the geometry and tile suites. The thread pool
+# and determinism_paths (1, 2, 3, 5 and 7 threads, every scene, every method) and the
+# geometry, simd and format suites. Only their sources are compiled
+# (RASTER_TEST_SUITES_ONLY), and the two determinism suites run side by side. The thread pool
 # runs on std::thread here (-DRASTER_STD_THREADS=ON): oneTBB from Debian is not
 # instrumented, so ThreadSanitizer could not see its synchronisation and would report every
 # hand-off through it. GL is left out: Mesa is not instrumented either.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRASTER_SANITIZE=thread -DRASTER_STD_THREADS=ON > /dev/null
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRASTER_SANITIZE=thread -DRASTER_STD_THREADS=ON \
+  -DRASTER_TEST_SUITES_ONLY="determinism;determinism_paths;geometry;simd;format" > /dev/null
 cmake --build build-tsan -j"$(nproc)" --target raster_tests   # (no raster_cli: these suites do not run it)
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
-ctest --test-dir build-tsan --output-on-failure -R '^(determinism|geometry|simd|format)$'
+ctest --test-dir build-tsan --output-on-failure -j"$(nproc)"

@@ -62,6 +62,18 @@ TEST_SUITE("determinism") {
     }
   }
 
+  TEST_CASE("a backend that already rendered other frames gives the same bytes again") {
+    auto backend = scenes::makeRasterBackend(0);
+    const auto first = testing_support::renderScene(*backend, "shadow", 0.7f, 640, 480);
+    testing_support::renderScene(*backend, "shadow", 5.0f, 320, 200);   // leaves other state behind
+    checkSameBytes(first, testing_support::renderScene(*backend, "shadow", 0.7f, 640, 480));
+  }
+}
+
+// The code paths a frame can take besides the plain one (every method of every step, draws
+// split over threads, visible-first shading) against the plain one's bytes. A suite of its
+// own so ctest runs it beside the one above (these two are the longest under the sanitizers).
+TEST_SUITE("determinism_paths") {
   // The same under every method of every step (tests/method_sets.h), so each method's SIMD
   // code is held to its scalar reference and to one thread, not only gl's. Every scene at a
   // small size (the methods' code paths, not the frame's, are what is new here), set up
@@ -134,12 +146,5 @@ TEST_SUITE("determinism") {
         checkSameBytes(reference, testing_support::renderScene(*scalar, scene, 1.3f, w, h));
       }
     }
-  }
-
-  TEST_CASE("a backend that already rendered other frames gives the same bytes again") {
-    auto backend = scenes::makeRasterBackend(0);
-    const auto first = testing_support::renderScene(*backend, "shadow", 0.7f, 640, 480);
-    testing_support::renderScene(*backend, "shadow", 5.0f, 320, 200);   // leaves other state behind
-    checkSameBytes(first, testing_support::renderScene(*backend, "shadow", 0.7f, 640, 480));
   }
 }

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <string>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace compare {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 #include "scenes/scene_params.h"
 
 namespace scenes {

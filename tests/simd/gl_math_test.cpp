@@ -29,8 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "backends/backends.h"
 #include "raster/simd/glsl.h"
-#include "scenes/backends.h"
 #include "shaders_cpp/test/math_probe.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/simd/gl_math_args.h"

@@ -7,11 +7,11 @@
 // HDR header here, JPEG markers, PNG chunks and HDR scanlines in image_structure.h, which
 // says why stb_image cannot be left to find out); then the size (at most 16384 a side);
 // then stb_image decodes.
-#include "scenes/assets.h"
+#include "io/assets.h"
 
-#include "scenes/asset_manifest.h"
-#include "scenes/image_structure.h"
-#include "scenes/obj_validate.h"
+#include "io/asset_manifest.h"
+#include "io/image_structure.h"
+#include "io/obj_validate.h"
 
 #include "raster/util/parallel.h"
 

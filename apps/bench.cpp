@@ -9,7 +9,7 @@
 
 #include "apps/progress.h"
 
-#include "compare/output_file.h"
+#include "io/output_file.h"
 
 #include <algorithm>
 #include <chrono>
@@ -27,7 +27,7 @@
 
 #include "apps/pass_timer.h"
 #include "raster/util/cycles.h"
-#include "scenes/backends.h"
+#include "backends/backends.h"
 #include "scenes/registry.h"
 
 namespace cli {

@@ -1,7 +1,7 @@
 // The `raster` program's options and their validation (see cli_options.h).
 #include "apps/cli_options.h"
 
-#include "compare/output_file.h"
+#include "io/output_file.h"
 
 #include <unistd.h>
 
@@ -12,7 +12,7 @@
 #include <system_error>
 #include <tuple>
 
-#include "scenes/memory_budget.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 
 namespace cli {

@@ -44,11 +44,11 @@
 #include "apps/views.h"
 #include "apps/cli_options.h"
 #include "apps/command_line.h"
-#include "compare/image_io.h"
+#include "io/image_io.h"
 #include "compare/metrics.h"
-#include "compare/output_file.h"
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
+#include "io/output_file.h"
+#include "backends/backends.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 
 namespace {

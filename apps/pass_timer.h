@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace cli {
 

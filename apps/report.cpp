@@ -25,11 +25,11 @@
 #include "apps/report_trace_panel.h"
 #include "apps/report_views.h"
 #include "apps/sides.h"
-#include "compare/exr_io.h"
-#include "compare/image_io.h"
+#include "io/exr_io.h"
+#include "io/image_io.h"
 #include "compare/metrics.h"
-#include "compare/output_file.h"
-#include "scenes/backends.h"
+#include "io/output_file.h"
+#include "backends/backends.h"
 #include "scenes/registry.h"
 
 namespace cli {

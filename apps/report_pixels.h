@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace report {
 

@@ -13,9 +13,9 @@
 #include <iostream>
 #include <memory>
 
-#include "compare/target_dump.h"
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
+#include "io/target_dump.h"
+#include "backends/backends.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 
 namespace cli {

@@ -12,8 +12,8 @@
 
 #include "apps/cli_options.h"
 #include "apps/soup_file.h"
-#include "compare/output_file.h"
-#include "scenes/backends.h"
+#include "io/output_file.h"
+#include "backends/backends.h"
 #include "scenes/soup/soup_check.h"
 
 namespace cli {

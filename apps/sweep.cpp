@@ -20,7 +20,7 @@
 #include "apps/sides.h"
 #include "apps/sweep_file.h"
 #include "compare/metrics.h"
-#include "compare/output_file.h"
+#include "io/output_file.h"
 #include "scenes/scene_params.h"
 
 namespace cli {

@@ -9,7 +9,7 @@
 #include "apps/charts.h"
 #include "apps/cli_options.h"
 #include "apps/report_values.h"
-#include "compare/output_file.h"
+#include "io/output_file.h"
 
 namespace cli {
 namespace {

@@ -16,11 +16,11 @@
 
 #include "apps/sides.h"
 #include "apps/trace_text.h"
-#include "compare/output_file.h"
+#include "io/output_file.h"
 #include "raster/methods.h"
 #include "raster/pixel_history.h"
 #include "raster/texture/format.h"
-#include "scenes/backends.h"
+#include "backends/backends.h"
 #include "scenes/registry.h"
 
 namespace cli {

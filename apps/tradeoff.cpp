@@ -26,10 +26,10 @@
 #include "apps/child_process.h"
 #include "apps/sides.h"
 #include "compare/metrics.h"
-#include "compare/output_file.h"
+#include "io/output_file.h"
 #include "raster/methods.h"
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
+#include "backends/backends.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 
 namespace cli {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace cli {
 

@@ -14,11 +14,11 @@
 #include "apps/sides.h"
 #include "apps/view_canvas.h"
 #include "apps/view_figures.h"
-#include "compare/image_io.h"
-#include "compare/output_file.h"
+#include "io/image_io.h"
+#include "io/output_file.h"
 #include "raster/view_recorder.h"
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
+#include "backends/backends.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 
 namespace cli {

@@ -8,13 +8,13 @@
 //          integer order of the half bit patterns in which +0 and -0 are one point;
 //   float: float32 ULPs, counted the same way (half ULPs would hide one float step).
 // compareImages() summarises a whole target; pixelDifference() is the per-pixel measure
-// the heat map (image_io.h) draws.
+// the heat map (io/image_io.h) draws.
 #pragma once
 
 #include <cstdint>
 #include <string>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace compare {
 

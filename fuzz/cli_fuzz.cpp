@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "apps/cli_options.h"
-#include "compare/output_file.h"
 #include "fuzz/fuzz_common.h"
+#include "io/output_file.h"
 #include "scenes/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -2,7 +2,7 @@
 // refused from its header (as --max-memory would) instead of exhausting libFuzzer's RSS limit.
 #pragma once
 
-#include "scenes/memory_budget.h"
+#include "io/memory_budget.h"
 
 inline void fuzzSetUpOnce() {
   static const bool done = [] {

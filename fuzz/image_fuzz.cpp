@@ -5,7 +5,7 @@
 #include <string>
 
 #include "fuzz/fuzz_common.h"
-#include "scenes/assets.h"
+#include "io/assets.h"
 #include "scenes/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,11 +1,11 @@
-// Fuzz target: the OBJ loader (scenes/obj_validate.h, then tinyobjloader and the mesh
+// Fuzz target: the OBJ loader (io/obj_validate.h, then tinyobjloader and the mesh
 // build). Any input must load or be refused with a SceneError; nothing else may happen.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "fuzz/fuzz_common.h"
-#include "scenes/assets.h"
+#include "io/assets.h"
 #include "scenes/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

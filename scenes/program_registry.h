@@ -14,8 +14,8 @@
 #include <tuple>
 #include <vector>
 
+#include "backends/backend.h"
 #include "raster/program_instance.h"
-#include "scenes/backend.h"
 #include "scenes/program_entry.h"
 
 namespace scenes {

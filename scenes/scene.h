@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 #include "scenes/scene_params.h"
 
 namespace scenes {
@@ -62,7 +62,7 @@ struct SceneError : std::runtime_error {
 };
 
 // The asset folder: options.assetDir, else $RASTER_ASSETS, else the repository's assets/
-// (checked against its SHA256SUMS: asset_manifest.h).
+// (checked against its SHA256SUMS: io/asset_manifest.h).
 std::string assetDirectory(const SceneOptions& options);
 
 }  // namespace scenes

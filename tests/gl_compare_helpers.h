@@ -3,7 +3,7 @@
 // backends into framebuffer objects (or the default framebuffer), and comparing the
 // read-back images pixel by pixel (coverage, depth codes, RGBA8 steps, exact float bits).
 //
-// Images are read back top row first by both backends (scenes/backend.h), so pixel
+// Images are read back top row first by both backends (backends/backend.h), so pixel
 // (x, row) of one is pixel (x, row) of the other; "window y" below is GL's (y up),
 // row = height - 1 - y.
 #pragma once
@@ -19,7 +19,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scenes/backends.h"
+#include "backends/backends.h"
 
 namespace gltest {
 

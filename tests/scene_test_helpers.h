@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "compare/target_dump.h"
+#include "backends/backends.h"
 #include "compare/metrics.h"
-#include "scenes/backends.h"
+#include "io/target_dump.h"
 #include "scenes/registry.h"
 
 namespace testing_support {
@@ -86,7 +86,7 @@ inline std::vector<compare::TargetStats> compareWithLlvmpipe(const std::string& 
 
 // The same frame rendered by softpipe, for scale. Mesa picks one Gallium driver per
 // process, so softpipe runs in a child (`raster render --backend gl --dump`) and its
-// lossless dump is loaded back (compare/target_dump.h); its targets must be those of `like`.
+// lossless dump is loaded back (io/target_dump.h); its targets must be those of `like`.
 inline std::vector<scenes::Target> renderWithSoftpipe(const std::string& scene, const std::vector<scenes::Target>& like) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("raster-softpipe-" + scene + "-" + std::to_string(getpid()));

@@ -12,7 +12,7 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
-#include "scenes/assets.h"
+#include "io/assets.h"
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/deferred/lighting.h"
 #include "shaders_cpp/deferred/ssao.h"

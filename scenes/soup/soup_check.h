@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 #include "scenes/program_registry.h"
 #include "scenes/soup/soup.h"
 

@@ -3,7 +3,7 @@
 // Bad input must fail fast and cleanly: exit status 2, one "raster: ..." line on stderr, and
 // no file written. These run the built executable (RASTER_CLI_PATH) in an empty temporary
 // folder and look at what it leaves. The metric checks pin down the units the
-// comparison reports (8-bit steps, depth LSBs, half ULPs); tests/compare checks that dumps
+// comparison reports (8-bit steps, depth LSBs, half ULPs); tests/io checks that dumps
 // load back exactly.
 #include <doctest/doctest.h>
 
@@ -23,9 +23,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/image_io.h"
-#include "compare/target_dump.h"
 #include "compare/metrics.h"
+#include "io/image_io.h"
+#include "io/target_dump.h"
 #include "raster/methods.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"

@@ -1,5 +1,5 @@
 // Bounded memory: every image, texture, target and read-back is reserved against
-// --max-memory from its size before it is allocated (scenes/memory_budget.h); past the cap
+// --max-memory from its size before it is allocated (io/memory_budget.h); past the cap
 // the program exits 2 naming what it was allocating, having allocated at most the cap.
 #include <doctest/doctest.h>
 
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compare/image_io.h"
+#include "io/image_io.h"
 #include "scenes/scene.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/scene_test_helpers.h"
@@ -103,7 +103,7 @@ TEST_SUITE("hostile") {
   // Issue 26 asks that this pipeline's peak memory at 1920x1080 stay at or below llvmpipe's.
   // It had not for deferred, whose material maps were kept twice (rows and strips: 350
   // against 299 MiB): they are kept in strips alone now (footprint_strips.h), and a run that
-  // makes no GL backend never loads Mesa (scenes/gl_entry_points.h). Each scene is rendered
+  // makes no GL backend never loads Mesa (backends/gl_entry_points.h). Each scene is rendered
   // once with each backend, each a process of its own. Sanitizer builds are left out: their
   // allocators' redzones and shadow memory weigh on the two sides unevenly.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)

@@ -1,4 +1,4 @@
-// Every file the program writes goes through one writer (compare/output_file.h): it never
+// Every file the program writes goes through one writer (io/output_file.h): it never
 // replaces anything but a regular file, writes whole or not at all, reports a full disk or
 // a file-size limit as an error naming the path, and leaves no temporary file behind when a
 // signal ends the process mid-write.

@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backends/backends.h"
 #include "raster/pixel_history.h"
-#include "scenes/backends.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/scene_test_helpers.h"

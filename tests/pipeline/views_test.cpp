@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/image_io.h"
-#include "compare/target_dump.h"
+#include "io/image_io.h"
+#include "io/target_dump.h"
 #include "raster/geometry/setup.h"
 #include "raster/view_recorder.h"
 #include "tests/apps/cli_test_helpers.h"

@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backends/backend.h"
 #include "scenes/program_registry.h"
-#include "scenes/backend.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/scene_test_helpers.h"

@@ -21,7 +21,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <random>
@@ -29,8 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "backends/backends.h"
 #include "raster/simd/glsl.h"
-#include "scenes/backends.h"
 #include "shaders_cpp/test/math_probe.h"
 #include "tests/apps/cli_test_helpers.h"
 #include "tests/simd/gl_math_args.h"
@@ -103,6 +102,112 @@ float nearMultipleOfHalfPi(std::mt19937& rng) {
 }
 
 
+// Typical arguments of each function, drawn from its usual ranges, around its edge cases,
+// and from any bit pattern.
+Args exp2Args(std::mt19937& rng) {
+  switch (rng() % 4u) {
+    case 0: return {uniformIn(rng, -130.0f, 130.0f), 0.0f};
+    case 1: return {magnitude(rng, -30, 7), 0.0f};
+    case 2: return {float(int(rng() % 260u) - 130) + ((rng() & 1u) ? 1e-6f : 0.0f), 0.0f};
+    default: return {anyBits(rng), 0.0f};
+  }
+}
+
+Args log2Args(std::mt19937& rng) {
+  switch (rng() % 4u) {
+    case 0: return {std::fabs(magnitude(rng, -126, 127)), 0.0f};
+    case 1: return {uniformIn(rng, 0.0f, 2.0f), 0.0f};
+    case 2: return {fromBits(bits(1.0f) + (rng() % 64u) - 32u), 0.0f};
+    default: return {anyBits(rng), 0.0f};
+  }
+}
+
+Args powArgs(std::mt19937& rng) {
+  static const float exponents[] = {2.0f, 4.0f, 48.0f, 2.2f, 0.4545f, 0.0f, 1.0f, -1.0f, 0.5f, 32.0f, 64.0f, 16.0f};
+  switch (rng() % 5u) {
+    case 0: return {uniformIn(rng, 0.0f, 1.0f), uniformIn(rng, 0.0f, 128.0f)};
+    case 1: return {uniformIn(rng, 0.0f, 1.0f), exponents[rng() % 12u]};
+    case 2: return {std::fabs(magnitude(rng, -40, 40)), magnitude(rng, -8, 8)};
+    case 3: return {uniformIn(rng, -2.0f, 4.0f), float(int(rng() % 65u))};
+    default: return {anyBits(rng), anyBits(rng)};
+  }
+}
+
+// The pow forms of a literal exponent (pow48, pow2_2, ...) and powVec3Const.
+Args constantPowArgs(std::mt19937& rng) {
+  switch (rng() % 4u) {
+    case 0: return {uniformIn(rng, 0.0f, 1.0f), uniformIn(rng, 0.0f, 1.0f)};
+    case 1: return {uniformIn(rng, 0.0f, 4.0f), uniformIn(rng, 0.0f, 4.0f)};
+    case 2: return {magnitude(rng, -30, 30), magnitude(rng, -30, 30)};
+    default: return {anyBits(rng), anyBits(rng)};
+  }
+}
+
+Args sinCosArgs(std::mt19937& rng) {
+  switch (rng() % 6u) {
+    case 0: return {uniformIn(rng, -1e6f, 1e6f), 0.0f};
+    case 1: return {uniformIn(rng, -10.0f, 10.0f), 0.0f};
+    case 2: return {nearMultipleOfHalfPi(rng), 0.0f};
+    case 3: return {magnitude(rng, -30, 30), 0.0f};
+    case 4: {  // the SSAO hash: dot(p * 1024, vec2(127.1, 311.7)), p in [0, 1]^2
+      const float px = uniformIn(rng, 0.0f, 1.0f) * 1024.0f, py = uniformIn(rng, 0.0f, 1.0f) * 1024.0f;
+      return {px * 127.1f + py * 311.7f, 0.0f};
+    }
+    default: return {anyBits(rng), 0.0f};
+  }
+}
+
+Args atan2Args(std::mt19937& rng) {
+  switch (rng() % 5u) {
+    case 0: return {uniformIn(rng, -1.0f, 1.0f), uniformIn(rng, -1.0f, 1.0f)};
+    case 1: return {magnitude(rng, -40, 40), magnitude(rng, -40, 40)};
+    case 2: {  // |y| == |x|, and near it
+      const float a = magnitude(rng, -20, 20);
+      return {a, (rng() & 1u) ? -a : std::nextafter(a, kInf)};
+    }
+    case 3: return {magnitude(rng, -10, 10), magnitude(rng, 58, 70)};   // |t| >= 1e18
+    default: return {anyBits(rng), anyBits(rng)};
+  }
+}
+
+Args acosAsinArgs(std::mt19937& rng) {
+  switch (rng() % 4u) {
+    case 0: return {uniformIn(rng, -1.1f, 1.1f), 0.0f};
+    case 1: return {fromBits(bits(1.0f) - (rng() % 4096u)) * ((rng() & 1u) ? 1.0f : -1.0f), 0.0f};
+    case 2: return {magnitude(rng, -30, 0), 0.0f};
+    default: return {anyBits(rng), 0.0f};
+  }
+}
+
+Args atanArgs(std::mt19937& rng) {   // atan(y_over_x)
+  switch (rng() % 3u) {
+    case 0: return {uniformIn(rng, -2.0f, 2.0f), 0.0f};
+    case 1: return {magnitude(rng, -40, 40), 0.0f};
+    default: return {anyBits(rng), 0.0f};
+  }
+}
+
+Args typicalArgs(int func, std::mt19937& rng) {
+  switch (func) {
+    case MathProbe::kExp2: return exp2Args(rng);
+    case MathProbe::kLog2: return log2Args(rng);
+    case MathProbe::kPow:
+    case MathProbe::kPowVec3: return powArgs(rng);
+    case MathProbe::kPow48:
+    case MathProbe::kPow2_2:
+    case MathProbe::kPow0_4545:
+    case MathProbe::kPow2:
+    case MathProbe::kPow4:
+    case MathProbe::kPowVec3Const: return constantPowArgs(rng);
+    case MathProbe::kSin:
+    case MathProbe::kCos: return sinCosArgs(rng);
+    case MathProbe::kAtan2: return atan2Args(rng);
+    case MathProbe::kAcos:
+    case MathProbe::kAsin: return acosAsinArgs(rng);
+    default: return atanArgs(rng);
+  }
+}
+
 // Arguments for one function: the special values (and, for two-argument functions, every
 // pair of them), then `count` in all from the function's typical ranges.
 std::vector<Args> argumentsFor(int func, size_t count, uint32_t seed) {
@@ -117,108 +222,7 @@ std::vector<Args> argumentsFor(int func, size_t count, uint32_t seed) {
   } else {
     for (float a : special) args.push_back({a, 0.0f});
   }
-  std::function<Args()> typical;
-  switch (func) {
-    case MathProbe::kExp2:
-      typical = [&]() -> Args {
-        switch (rng() % 4u) {
-          case 0: return {uniformIn(rng, -130.0f, 130.0f), 0.0f};
-          case 1: return {magnitude(rng, -30, 7), 0.0f};
-          case 2: return {float(int(rng() % 260u) - 130) + ((rng() & 1u) ? 1e-6f : 0.0f), 0.0f};
-          default: return {anyBits(rng), 0.0f};
-        }
-      };
-      break;
-    case MathProbe::kLog2:
-      typical = [&]() -> Args {
-        switch (rng() % 4u) {
-          case 0: return {std::fabs(magnitude(rng, -126, 127)), 0.0f};
-          case 1: return {uniformIn(rng, 0.0f, 2.0f), 0.0f};
-          case 2: return {fromBits(bits(1.0f) + (rng() % 64u) - 32u), 0.0f};
-          default: return {anyBits(rng), 0.0f};
-        }
-      };
-      break;
-    case MathProbe::kPow:
-    case MathProbe::kPowVec3:
-      typical = [&]() -> Args {
-        static const float exponents[] = {2.0f, 4.0f, 48.0f, 2.2f, 0.4545f, 0.0f, 1.0f, -1.0f, 0.5f, 32.0f, 64.0f, 16.0f};
-        switch (rng() % 5u) {
-          case 0: return {uniformIn(rng, 0.0f, 1.0f), uniformIn(rng, 0.0f, 128.0f)};
-          case 1: return {uniformIn(rng, 0.0f, 1.0f), exponents[rng() % 12u]};
-          case 2: return {std::fabs(magnitude(rng, -40, 40)), magnitude(rng, -8, 8)};
-          case 3: return {uniformIn(rng, -2.0f, 4.0f), float(int(rng() % 65u))};
-          default: return {anyBits(rng), anyBits(rng)};
-        }
-      };
-      break;
-    case MathProbe::kPow48:
-    case MathProbe::kPow2_2:
-    case MathProbe::kPow0_4545:
-    case MathProbe::kPow2:
-    case MathProbe::kPow4:
-    case MathProbe::kPowVec3Const:
-      typical = [&]() -> Args {
-        switch (rng() % 4u) {
-          case 0: return {uniformIn(rng, 0.0f, 1.0f), uniformIn(rng, 0.0f, 1.0f)};
-          case 1: return {uniformIn(rng, 0.0f, 4.0f), uniformIn(rng, 0.0f, 4.0f)};
-          case 2: return {magnitude(rng, -30, 30), magnitude(rng, -30, 30)};
-          default: return {anyBits(rng), anyBits(rng)};
-        }
-      };
-      break;
-    case MathProbe::kSin:
-    case MathProbe::kCos:
-      typical = [&]() -> Args {
-        switch (rng() % 6u) {
-          case 0: return {uniformIn(rng, -1e6f, 1e6f), 0.0f};
-          case 1: return {uniformIn(rng, -10.0f, 10.0f), 0.0f};
-          case 2: return {nearMultipleOfHalfPi(rng), 0.0f};
-          case 3: return {magnitude(rng, -30, 30), 0.0f};
-          case 4: {  // the SSAO hash: dot(p * 1024, vec2(127.1, 311.7)), p in [0, 1]^2
-            const float px = uniformIn(rng, 0.0f, 1.0f) * 1024.0f, py = uniformIn(rng, 0.0f, 1.0f) * 1024.0f;
-            return {px * 127.1f + py * 311.7f, 0.0f};
-          }
-          default: return {anyBits(rng), 0.0f};
-        }
-      };
-      break;
-    case MathProbe::kAtan2:
-      typical = [&]() -> Args {
-        switch (rng() % 5u) {
-          case 0: return {uniformIn(rng, -1.0f, 1.0f), uniformIn(rng, -1.0f, 1.0f)};
-          case 1: return {magnitude(rng, -40, 40), magnitude(rng, -40, 40)};
-          case 2: {  // |y| == |x|, and near it
-            const float a = magnitude(rng, -20, 20);
-            return {a, (rng() & 1u) ? -a : std::nextafter(a, kInf)};
-          }
-          case 3: return {magnitude(rng, -10, 10), magnitude(rng, 58, 70)};   // |t| >= 1e18
-          default: return {anyBits(rng), anyBits(rng)};
-        }
-      };
-      break;
-    case MathProbe::kAcos:
-    case MathProbe::kAsin:
-      typical = [&]() -> Args {
-        switch (rng() % 4u) {
-          case 0: return {uniformIn(rng, -1.1f, 1.1f), 0.0f};
-          case 1: return {fromBits(bits(1.0f) - (rng() % 4096u)) * ((rng() & 1u) ? 1.0f : -1.0f), 0.0f};
-          case 2: return {magnitude(rng, -30, 0), 0.0f};
-          default: return {anyBits(rng), 0.0f};
-        }
-      };
-      break;
-    default:  // atan(y_over_x)
-      typical = [&]() -> Args {
-        switch (rng() % 3u) {
-          case 0: return {uniformIn(rng, -2.0f, 2.0f), 0.0f};
-          case 1: return {magnitude(rng, -40, 40), 0.0f};
-          default: return {anyBits(rng), 0.0f};
-        }
-      };
-      break;
-  }
-  while (args.size() < count) args.push_back(typical());
+  while (args.size() < count) args.push_back(typicalArgs(func, rng));
   args.resize(count);
   return args;
 }

@@ -1,15 +1,15 @@
 // Reading and writing read-back images as PNG: previews, RGBA8 targets, difference heat maps.
 //
-// A target is saved twice when dumped (compare/target_dump.h): a PNG anyone can look at, and
+// A target is saved twice when dumped (io/target_dump.h): a PNG anyone can look at, and
 // (for depth and float targets) a lossless OpenEXR file another process can load back bit
-// for bit (compare/exr_io.h); RGBA8 targets are already lossless as PNG. Every file goes
-// through compare/output_file.h: whole or not at all, never over anything but a regular
+// for bit (io/exr_io.h); RGBA8 targets are already lossless as PNG. Every file goes
+// through io/output_file.h: whole or not at all, never over anything but a regular
 // file, and no temporary file left behind.
 #pragma once
 
 #include <string>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace compare {
 

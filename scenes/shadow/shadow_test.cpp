@@ -17,8 +17,8 @@
 #include <filesystem>
 #include <string>
 
-#include "compare/image_io.h"
 #include "compare/metrics.h"
+#include "io/image_io.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {

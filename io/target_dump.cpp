@@ -1,14 +1,14 @@
 // A frame's targets as a folder of files, and back (see target_dump.h).
-#include "compare/target_dump.h"
+#include "io/target_dump.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "compare/exr_io.h"
-#include "compare/image_io.h"
-#include "compare/output_file.h"
+#include "io/exr_io.h"
+#include "io/image_io.h"
+#include "io/output_file.h"
 
 namespace compare {
 namespace {

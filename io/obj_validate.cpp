@@ -1,5 +1,5 @@
 // The OBJ checks (see obj_validate.h).
-#include "scenes/obj_validate.h"
+#include "io/obj_validate.h"
 
 #include <charconv>
 #include <initializer_list>
@@ -42,7 +42,7 @@ class LineChecker {
     if (end == text.c_str() || *end != '\0') fail(message({what, " '", text, "' is not a number"}));
     if (!std::isfinite(value) || !std::isfinite(float(value))) fail(message({what, " '", text, "' is not a finite float"}));
     if (std::fabs(value) > kMaxObjCoordinate)
-      fail(message({what, " ", text, " is beyond the limit of 1e6 (scenes/obj_validate.h says why)"}));
+      fail(message({what, " ", text, " is beyond the limit of 1e6 (io/obj_validate.h says why)"}));
   }
 
   // One corner index: non-zero, and (negative) relative to the elements defined so far.

@@ -1,8 +1,8 @@
 // PNG files (stb_image_write, stb_image): previews, RGBA8 images, heat maps.
 // See image_io.h for the formats and conventions.
-#include "compare/image_io.h"
+#include "io/image_io.h"
 
-#include "compare/output_file.h"
+#include "io/output_file.h"
 
 #include <algorithm>
 #include <array>

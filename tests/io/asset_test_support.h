@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/assets.h"
+#include "io/assets.h"
 #include "scenes/scene.h"
 #include "tests/temp_folder.h"
 

@@ -1,5 +1,5 @@
 // Lossless OpenEXR dumps of depth and float targets (OpenEXR 3, Debian libopenexr-dev), and
-// their loaders. Another process loads a dump back bit for bit (compare/target_dump.h), and
+// their loaders. Another process loads a dump back bit for bit (io/target_dump.h), and
 // any OpenEXR tool (exrheader, exrdisplay, an image editor) can open it.
 //
 // The files, all ZIP-compressed (lossless), one part, scan lines, data window at (0,0):
@@ -18,11 +18,11 @@
 #include <optional>
 #include <string>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 namespace compare {
 
-// Writes a depth or float image as above, through compare/output_file.h (whole or not at
+// Writes a depth or float image as above, through io/output_file.h (whole or not at
 // all). Throws std::invalid_argument for RGBA8 images (dumped as PNG), depth of more than
 // 24 bits, and a half image holding a value that is not a half.
 void writeExr(const std::string& path, const scenes::ImageData& image);

@@ -1,5 +1,5 @@
-// The lossless dumps: OpenEXR files of depth and float images (compare/exr_io.h) and the
-// folder of a frame's targets (compare/target_dump.h). What is written must load back with
+// The lossless dumps: OpenEXR files of depth and float images (io/exr_io.h) and the
+// folder of a frame's targets (io/target_dump.h). What is written must load back with
 // the same bits, every depth code and every half included; a file that is not such a dump
 // must be refused with an error naming it, never read as something else.
 #include <doctest/doctest.h>
@@ -23,11 +23,11 @@
 #include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
 
-#include "compare/exr_io.h"
-#include "compare/image_io.h"
-#include "compare/target_dump.h"
+#include "backends/backends.h"
+#include "io/exr_io.h"
+#include "io/image_io.h"
+#include "io/target_dump.h"
 #include "raster/texture/format.h"
-#include "scenes/backends.h"
 #include "tests/scene_test_helpers.h"
 #include "tests/temp_folder.h"
 

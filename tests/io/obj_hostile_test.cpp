@@ -1,12 +1,12 @@
 // Hostile OBJ files: every one is refused with "asset PATH:LINE: PROBLEM" (a SceneError, exit 2
-// from the program), never read as something else. Before scenes/obj_validate.h each of
+// from the program), never read as something else. Before io/obj_validate.h each of
 // these crashed, over-read, or rendered a silently wrong mesh (in brackets).
 #include <doctest/doctest.h>
 
 #include <fstream>
 #include <string>
 
-#include "scenes/assets.h"
+#include "io/assets.h"
 #include "scenes/scene.h"
 #include "tests/apps/cli_test_helpers.h"
 

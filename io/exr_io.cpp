@@ -1,5 +1,5 @@
 // OpenEXR dumps and their loaders (see exr_io.h for the files and their guarantees).
-#include "compare/exr_io.h"
+#include "io/exr_io.h"
 
 #include <algorithm>
 #include <bit>
@@ -24,9 +24,9 @@
 #include <ImfVersion.h>
 #include <Iex.h>
 
-#include "compare/output_file.h"
+#include "io/memory_budget.h"
+#include "io/output_file.h"
 #include "raster/texture/format.h"
-#include "scenes/memory_budget.h"
 
 namespace compare {
 namespace {

@@ -1,5 +1,5 @@
 // Asset manifests (asset_manifest.h).
-#include "scenes/asset_manifest.h"
+#include "io/asset_manifest.h"
 
 #include <openssl/evp.h>
 

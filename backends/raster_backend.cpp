@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "backends/backends.h"
+#include "io/memory_budget.h"
+#include "raster/renderer.h"
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/format.h"
-#include "raster/renderer.h"
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
 #include "scenes/program_registry.h"
 
 namespace scenes {
@@ -303,7 +303,7 @@ class RasterBackend final : public Backend {
 
   raster::Renderer renderer_;
   raster::Texture defaultColor_, defaultDepth_;
-  uint64_t reserved_ = 0;   // this backend's share of the run's memory (scenes/memory_budget.h)
+  uint64_t reserved_ = 0;   // this backend's share of the run's memory (io/memory_budget.h)
   std::vector<std::unique_ptr<raster::Texture>> textures_;
   std::vector<raster::Framebuffer> framebuffers_;
   std::vector<std::unique_ptr<Mesh>> meshes_;

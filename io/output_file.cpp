@@ -1,6 +1,6 @@
 // Whole-or-nothing file writes, and the signal handlers that clean up after them (see
 // output_file.h).
-#include "compare/output_file.h"
+#include "io/output_file.h"
 
 #include <fcntl.h>
 #include <limits.h>

@@ -2,8 +2,8 @@
 // frame rendered in a child process (softpipe, another Gallium driver) reaches this one.
 //
 // DIR holds, per target in the scene's order:
-//   NAME.png   every target, to look at (compare/image_io.h's preview); lossless for RGBA8
-//   NAME.exr   depth and float targets, lossless (compare/exr_io.h)
+//   NAME.png   every target, to look at (io/image_io.h's preview); lossless for RGBA8
+//   NAME.exr   depth and float targets, lossless (io/exr_io.h)
 // and DIR/targets.txt, one "NAME KIND" line per target, KIND one of rgba8, half (RGBA16F),
 // float (RGBA32F), depth16, depth24. Loading gives the targets back bit for bit: the same
 // formats, sizes, channels, depth bits and payload bytes.

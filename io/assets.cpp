@@ -7,11 +7,11 @@
 // HDR header here, JPEG markers, PNG chunks and HDR scanlines in image_structure.h, which
 // says why stb_image cannot be left to find out); then the size (at most 16384 a side);
 // then stb_image decodes.
-#include "scenes/assets.h"
+#include "io/assets.h"
 
-#include "scenes/asset_manifest.h"
-#include "scenes/image_structure.h"
-#include "scenes/obj_validate.h"
+#include "io/asset_manifest.h"
+#include "io/image_structure.h"
+#include "io/obj_validate.h"
 
 #include "raster/util/parallel.h"
 
@@ -172,26 +172,37 @@ void checkFinite(const std::string& path, const std::vector<tinyobj::real_t>& va
 
 // ---- the cat mesh ---------------------------------------------------------------------------------
 
-MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) { return parseCatMesh(path, readAssetFile(path), infoOut); }
+namespace {
 
-MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadInfo* infoOut) {
-  validateObj(path, text);   // every line checked first: tinyobjloader only sees what it handles right
-  std::istringstream in(text);
+// What tinyobjloader reads of an OBJ file: the element arrays and the faces of each shape.
+struct ObjFile {
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
+};
+
+// Every line checked first (validateObj): tinyobjloader only sees what it handles right.
+ObjFile readObj(const std::string& path, const std::string& text) {
+  validateObj(path, text);
+  std::istringstream in(text);
+  ObjFile obj;
   std::vector<tinyobj::material_t> materials;
   std::string warn, err;
   // No triangulation by the loader (it would reorder quads by edge length and read vertex
-  // data through unchecked indices): faces are fanned below, in file order.
-  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, /*triangulate=*/false,
+  // data through unchecked indices): faces are fanned by interleaveAndFan, in file order.
+  if (!tinyobj::LoadObj(&obj.attrib, &obj.shapes, &materials, &warn, &err, &in, nullptr, /*triangulate=*/false,
                         /*default_vcols_fallback=*/false))
     fail(path, "not a readable OBJ file (tinyobjloader: " + oneLine(err) + ")");
+  return obj;
+}
 
+// The element and face counts, refused unless the file has positions, normals, texture
+// coordinates and triangles, every coordinate finite.
+ObjLoadInfo countElements(const std::string& path, const ObjFile& obj) {
   ObjLoadInfo info;
-  info.positions = attrib.vertices.size() / 3;
-  info.texcoords = attrib.texcoords.size() / 2;
-  info.normals = attrib.normals.size() / 3;
-  for (const tinyobj::shape_t& shape : shapes) {
+  info.positions = obj.attrib.vertices.size() / 3;
+  info.texcoords = obj.attrib.texcoords.size() / 2;
+  info.normals = obj.attrib.normals.size() / 3;
+  for (const tinyobj::shape_t& shape : obj.shapes) {
     info.faces += shape.mesh.num_face_vertices.size();
     for (unsigned char nv : shape.mesh.num_face_vertices) info.triangles += nv >= 3 ? nv - 2 : 0;
   }
@@ -202,11 +213,16 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
   if (N == 0) fail(path, "no normals ('vn' lines); the scene needs a position, normal and uv per vertex");
   if (T == 0) fail(path, "no texture coordinates ('vt' lines); the scene needs a position, normal and uv per vertex");
   if (P > UINT32_MAX / 2) fail(path, "too many vertices (" + std::to_string(P) + ")");
-  checkFinite(path, attrib.vertices, 3, "vertex");
-  checkFinite(path, attrib.normals, 3, "normal");
-  checkFinite(path, attrib.texcoords, 2, "texture coordinate");
+  checkFinite(path, obj.attrib.vertices, 3, "vertex");
+  checkFinite(path, obj.attrib.normals, 3, "normal");
+  checkFinite(path, obj.attrib.texcoords, 2, "texture coordinate");
+  return info;
+}
 
-  // Validate every corner, and find out whether v/vt/vn share one index throughout.
+// Validates every face corner's v, vt and vn index against the counts; returns whether
+// v/vt/vn share one index throughout (ObjLoadInfo::sharedIndices).
+bool checkCorners(const std::string& path, const ObjFile& obj, const ObjLoadInfo& info) {
+  const size_t P = info.positions, T = info.texcoords, N = info.normals;
   bool shared = (P == T && P == N);
   size_t face = 0;
   // tinyobjloader gives -1 for an absent vt or vn index (a v index is never absent).
@@ -219,7 +235,7 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
       fail(path, "face " + std::to_string(face) + " uses " + what + " " + std::to_string(size_t(idx) + 1) +
                      " but the file has " + std::to_string(count) + " " + countWhat);
   };
-  for (const tinyobj::shape_t& shape : shapes) {
+  for (const tinyobj::shape_t& shape : obj.shapes) {
     size_t corner = 0;
     for (unsigned char nv : shape.mesh.num_face_vertices) {
       ++face;
@@ -232,8 +248,14 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
       }
     }
   }
-  info.sharedIndices = shared;
+  return shared;
+}
 
+// Interleaved pos(3) normal(3) uv(2) vertices: with shared indices vertex i is (v i, vt i,
+// vn i), else each (v, vt, vn) triple once, in first-use order. Faces are fanned
+// (0, k, k + 1) in file order.
+MeshData interleaveAndFan(const ObjFile& obj, const ObjLoadInfo& info) {
+  const tinyobj::attrib_t& attrib = obj.attrib;
   MeshData mesh;
   mesh.strideFloats = 8;
   mesh.attributes = {{0, 3, 0}, {1, 3, 3}, {2, 2, 6}};
@@ -251,13 +273,14 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
   };
 
   // Per corner, the output vertex index; then faces are fanned (0, k, k + 1) in file order.
+  const bool shared = info.sharedIndices;
   std::vector<uint32_t> cornerVertex;
   if (shared) {
-    mesh.vertices.reserve(P * 8);
-    for (size_t i = 0; i < P; ++i) pushVertex(int(i), int(i), int(i));
+    mesh.vertices.reserve(info.positions * 8);
+    for (size_t i = 0; i < info.positions; ++i) pushVertex(int(i), int(i), int(i));
   }
   std::unordered_map<std::array<int, 3>, uint32_t, TripleHash> seen;
-  for (const tinyobj::shape_t& shape : shapes) {
+  for (const tinyobj::shape_t& shape : obj.shapes) {
     cornerVertex.clear();
     for (const tinyobj::index_t& ix : shape.mesh.indices) {
       if (shared) {
@@ -279,8 +302,11 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
       corner += nv;
     }
   }
+  return mesh;
+}
 
-  // upload_cat's normalisation, in float: centre x/z, min y at 0, height 2.2.
+// upload_cat's normalisation, in float: centre x/z, min y at 0, height 2.2.
+void normaliseLikeUploadCat(MeshData& mesh) {
   const size_t count = mesh.vertices.size() / 8;
   glm::vec3 bmin(1.0e30f), bmax(-1.0e30f);
   for (size_t i = 0; i < count; ++i) {
@@ -296,7 +322,18 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
     v[1] = (v[1] - bmin.y) * s;
     v[2] = (v[2] - center.z) * s;
   }
+}
 
+}  // namespace
+
+MeshData loadCatMesh(const std::string& path, ObjLoadInfo* infoOut) { return parseCatMesh(path, readAssetFile(path), infoOut); }
+
+MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadInfo* infoOut) {
+  const ObjFile obj = readObj(path, text);
+  ObjLoadInfo info = countElements(path, obj);
+  info.sharedIndices = checkCorners(path, obj, info);
+  MeshData mesh = interleaveAndFan(obj, info);
+  normaliseLikeUploadCat(mesh);
   if (infoOut) *infoOut = info;
   return mesh;
 }

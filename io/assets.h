@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "scenes/backend.h"
-#include "scenes/memory_budget.h"
+#include "backends/backend.h"
+#include "io/memory_budget.h"
 #include "scenes/scene.h"
 
 namespace scenes {
@@ -61,7 +61,7 @@ struct ImageRgba8 {
 // A JPEG or PNG through stb_image with 4 channels requested (the tutorial's loader).
 // Checks that the file is complete (JPEG: the end-of-image marker after the last scan;
 // PNG: the IEND chunk) and at most 16384 texels on a side, and reserves the decoded size
-// (scenes/memory_budget.h) from the header before decoding.
+// (io/memory_budget.h) from the header before decoding.
 ImageRgba8 loadImageRgba8(const std::string& path);
 ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data);   // content already read
 

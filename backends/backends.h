@@ -3,8 +3,8 @@
 
 #include <memory>
 
+#include "backends/backend.h"
 #include "raster/pixel_history.h"
-#include "scenes/backend.h"
 
 namespace raster {
 class ViewRecorder;   // raster/view_recorder.h

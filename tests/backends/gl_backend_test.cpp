@@ -1,4 +1,4 @@
-// Tests of GlBackend (scenes/gl_backend.cpp): the OSMesa context, clears and their
+// Tests of GlBackend (backends/gl_backend.cpp): the OSMesa context, clears and their
 // read-back (bytes, half floats, depth codes), orientation of read-back images, program
 // loading from $RASTER_SOURCE_DIR/shaders_cpp and its errors.
 //
@@ -15,8 +15,8 @@
 
 #include <unistd.h>
 
+#include "backends/backends.h"
 #include "scenes/program_registry.h"
-#include "scenes/backends.h"
 #include "scenes/registry.h"
 #include "shaders_cpp/test/passthrough.h"
 

@@ -1,8 +1,8 @@
 // The backend interface: what a scene may ask of a renderer.
 //
 // Each scene is written once against this interface; two implementations run it:
-//   RasterBackend (scenes/raster_backend.*): this project's pipeline;
-//   GlBackend     (scenes/gl_backend.*):     real OpenGL 3.3 core through OSMesa
+//   RasterBackend (backends/raster_backend.*): this project's pipeline;
+//   GlBackend     (backends/gl_backend.*):     real OpenGL 3.3 core through OSMesa
 //                                            (llvmpipe by default, softpipe via GALLIUM_DRIVER).
 // The interface models only what the scenes use, with GL's meaning: programs are named
 // pairs of GLSL files under shaders_cpp/ (the GL backend compiles them; the raster backend
@@ -22,9 +22,9 @@
 
 #include <glm/glm.hpp>
 
+#include "io/memory_budget.h"
 #include "raster/contract.h"
 #include "raster/texture/texture.h"
-#include "scenes/memory_budget.h"
 
 namespace scenes {
 
@@ -112,7 +112,7 @@ struct ImageData {
   std::vector<float> floats;
   std::vector<uint32_t> depth;
   int depthBits = 0;
-  memory::Reservation reserved;   // the payload's share of --max-memory (scenes/memory_budget.h)
+  memory::Reservation reserved;   // the payload's share of --max-memory (io/memory_budget.h)
 };
 
 // ---- the interface --------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 // The structure walks of image_structure.h: each reads a whole file's bytes and says what is
 // wrong with them, or "" when the decoder can be trusted with them.
-#include "scenes/image_structure.h"
+#include "io/image_structure.h"
 
 #include <cstdint>
 #include <cstdio>

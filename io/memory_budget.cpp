@@ -1,5 +1,5 @@
 // The run's memory cap (see memory_budget.h).
-#include "scenes/memory_budget.h"
+#include "io/memory_budget.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-// The image loaders' refusals (scenes/image_structure.h, scenes/assets.h): a truncated,
+// The image loaders' refusals (io/image_structure.h, io/assets.h): a truncated,
 // corrupt or oversized JPEG, PNG or Radiance HDR fails with one SceneError line that names
 // the file and says what is wrong, before stb_image decodes it.
 #include <doctest/doctest.h>
@@ -10,7 +10,7 @@
 
 #include <stb_image_write.h>
 
-#include "tests/scenes/asset_test_support.h"
+#include "tests/io/asset_test_support.h"
 
 using namespace asset_test;
 

@@ -1,5 +1,5 @@
 // Loading libOSMesa's entry points on demand (gl_entry_points.h).
-#include "scenes/gl_entry_points.h"
+#include "backends/gl_entry_points.h"
 
 #include <dlfcn.h>
 

@@ -1,4 +1,4 @@
-// The asset loaders (scenes/assets.h): the deferred scene's real files load as the tutorial
+// The asset loaders (io/assets.h): the deferred scene's real files load as the tutorial
 // loads them, and a missing, unreadable or bad file (a bad OBJ here; bad images in
 // image_structure_test.cpp) fails with one SceneError line that names the file and says
 // what is wrong. Bad files are written into a fresh temporary folder per test.
@@ -13,7 +13,7 @@
 
 #include <stb_image.h>
 
-#include "tests/scenes/asset_test_support.h"
+#include "tests/io/asset_test_support.h"
 
 using namespace asset_test;
 

@@ -1,4 +1,4 @@
-// GlBackend: the Backend interface (scenes/backend.h) on real OpenGL 3.3 core through
+// GlBackend: the Backend interface (backends/backend.h) on real OpenGL 3.3 core through
 // OSMesa, i.e. Mesa's Gallium software drivers (llvmpipe, or softpipe via GALLIUM_DRIVER).
 //
 // It is the reference the raster backend is compared against, so every call is the plain
@@ -9,7 +9,7 @@
 // current context per thread, and this backend makes its context current only when it is
 // created or resized, never before each call. Backends may be created one after another. Mesa reads GALLIUM_DRIVER and LP_NUM_THREADS when the
 // first context of the process is created.
-#include "scenes/gl_entry_points.h"   // GL and OSMesa, loaded when the first backend is made
+#include "backends/gl_entry_points.h"   // GL and OSMesa, loaded when the first backend is made
 
 #include <algorithm>
 #include <cstdlib>
@@ -26,8 +26,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scenes/backends.h"
-#include "scenes/memory_budget.h"
+#include "backends/backends.h"
+#include "io/memory_budget.h"
 #include "scenes/registry.h"
 #include "scenes/scene.h"
 
@@ -462,7 +462,7 @@ class GlBackend : public Backend {
 
   OSMesaContext context_ = nullptr;
   std::vector<uint8_t> colorBuffer_;  // the default framebuffer's colour, owned here
-  uint64_t reserved_ = 0;             // this backend's share of the run's memory (scenes/memory_budget.h)
+  uint64_t reserved_ = 0;             // this backend's share of the run's memory (io/memory_budget.h)
   uint64_t windowBytes_ = 0;
 
   void reserve(uint64_t bytes, const std::string& what) {

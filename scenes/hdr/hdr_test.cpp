@@ -26,8 +26,8 @@
 #include <random>
 #include <string>
 
-#include "compare/image_io.h"
 #include "compare/metrics.h"
+#include "io/image_io.h"
 #include "raster/texture/format.h"
 #include "tests/gl_compare_helpers.h"
 #include "tests/scene_test_helpers.h"

@@ -23,9 +23,9 @@
 #include <fstream>
 #include <string>
 
-#include "compare/image_io.h"
 #include "compare/metrics.h"
-#include "scenes/asset_manifest.h"
+#include "io/asset_manifest.h"
+#include "io/image_io.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "scenes/backend.h"
+#include "backends/backend.h"
 
 #ifndef RASTER_SOURCE_DIR
 #define RASTER_SOURCE_DIR "."

@@ -1,12 +1,12 @@
 // Fuzz target: the command line of `raster render` and `raster compare` (CLI11 parsing, then
-// every check of apps/cli_options.cpp), with the input split into arguments at newlines. A
+// every check of apps/common/cli_options.cpp), with the input split into arguments at newlines. A
 // command line parses and validates, or is refused as bad input; nothing else may happen.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "apps/cli_options.h"
+#include "apps/common/cli_options.h"
 #include "compare/output_file.h"
 #include "fuzz/fuzz_common.h"
 #include "scenes/scene.h"

@@ -1,4 +1,4 @@
-// What the stage views (`raster render --view`, apps/views.h) record of each pass of a
+// What the stage views (`raster render --view`, apps/views/views.h) record of each pass of a
 // frame. A Renderer given a ViewRecorder (Renderer::setViewRecorder) hands it every pass it
 // flushes; without one (the normal case) the renderer records nothing and its tile loop is
 // the one it always runs.

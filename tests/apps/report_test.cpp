@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/report_html.h"
-#include "apps/report_pixels.h"
-#include "apps/report_results.h"
-#include "apps/report_trace_panel.h"
-#include "apps/report_views.h"
+#include "apps/report/report_html.h"
+#include "apps/report/report_pixels.h"
+#include "apps/report/report_results.h"
+#include "apps/report/report_trace_panel.h"
+#include "apps/report/report_views.h"
 #include "compare/metrics.h"
 
 namespace {

@@ -135,29 +135,27 @@ int pinToCores(int threads) {
   return sched_setaffinity(0, sizeof pinned, &pinned) == 0 ? kept : available;
 }
 
-CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args) {
-  CLI::App* command = app.add_subcommand("bench", "Time this pipeline against a GL driver, frames alternating");
-  command->add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
-  command->add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
-  command->add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
-  command->add_option("--threads", args.threads, "Threads for both (LP_NUM_THREADS for llvmpipe); 0: every core")
+void addBenchOptions(CLI::App& command, BenchArgs& args) {
+  command.add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
+  command.add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
+  command.add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
+  command.add_option("--threads", args.threads, "Threads for both (LP_NUM_THREADS for llvmpipe); 0: every core")
       ->type_name("N")->capture_default_str();
-  command->add_option("--frames", args.frames, "Timed frames per backend (1..10000)")->capture_default_str();
-  command->add_option("--warmup", args.warmup, "Untimed frames per backend first (0..1000)")->capture_default_str();
-  command->add_option("--gl-driver", args.glDriver, "GL driver to race: llvmpipe or softpipe")->capture_default_str();
-  command->add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
-  command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
-  command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE (e.g. 8G)")
+  command.add_option("--frames", args.frames, "Timed frames per backend (1..10000)")->capture_default_str();
+  command.add_option("--warmup", args.warmup, "Untimed frames per backend first (0..1000)")->capture_default_str();
+  command.add_option("--gl-driver", args.glDriver, "GL driver to race: llvmpipe or softpipe")->capture_default_str();
+  command.add_option("--json", args.json, "Also write the results as JSON to FILE")->type_name("FILE");
+  command.add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command.add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE (e.g. 8G)")
       ->type_name("SIZE");
-  command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
-  addMethodOptions(*command, args.preset, args.method);
-  addSetOption(*command, args.sets);
-  addQuietOption(*command, args.quiet);
-  command->add_flag("--no-pin", args.noPin,
+  command.add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  addMethodOptions(command, args.preset, args.method);
+  addSetOption(command, args.sets);
+  addQuietOption(command, args.quiet);
+  command.add_flag("--no-pin", args.noPin,
                     "Do not pin the process to --threads cores (by default both backends share the same N cores)");
-  command->add_flag("--passes", args.passes,
+  command.add_flag("--passes", args.passes,
                     "Then time each pass of both backends, finishing after each (up to 9 more frames each)");
-  return command;
 }
 
 int runBench(const BenchArgs& args) {

@@ -20,7 +20,7 @@ struct BenchArgs : FrameArgs {
   bool noPin = false;              // leave the process free to run on every core
 };
 
-CLI::App* addBenchCommand(CLI::App& app, BenchArgs& args);
+void addBenchOptions(CLI::App& command, BenchArgs& args);
 int runBench(const BenchArgs& args);
 
 // The median of frame times (the mean of the middle two for an even count; 0 for none).

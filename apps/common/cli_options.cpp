@@ -62,15 +62,6 @@ std::optional<uint64_t> parseUnsigned(const std::string& text) {
   return value;
 }
 
-// A finite number, the whole text.
-double parseNumber(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(value))
-    throw UsageError(option + ": '" + text + "' is not a finite number");
-  return value;
-}
-
 bool writableFolder(const fs::path& folder) {
   std::error_code error;
   return fs::is_directory(folder, error) && access(folder.c_str(), W_OK | X_OK) == 0;
@@ -115,49 +106,6 @@ raster::MethodSet validateMethods(const std::string& preset, const std::string& 
   }
 }
 
-CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args) {
-  CLI::App* command = app.add_subcommand("render", "Render one frame of a scene to PNG");
-  addFrameOptions(*command, args);
-  command->add_option("--backend", args.backend, "raster (this pipeline) or gl (OSMesa)")
-      ->type_name("raster|gl")->capture_default_str();
-  command->add_option("--out", args.out, "PNG of the final image (default: SCENE.png)")
-      ->type_name("FILE.png");
-  command->add_option("--dump", args.dump,
-                      "Folder for every target: NAME.png, and a lossless OpenEXR NAME.exr for depth/float targets")
-      ->type_name("DIR");
-  command->add_option("--view", args.view,
-                      "Draw a stage view instead of the image, with its numbers in F.json beside --out F.png: "
-                      "overdraw, depth-kills, helpers, tile-cost, triangles (see README, Stage views)")
-      ->type_name("NAME");
-  command->add_option("--pass", args.pass, "The pass a --view shows (a number from 0; default all, as a contact sheet)")
-      ->type_name("N|all");
-  return command;
-}
-
-CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "compare", "Render a scene with a test and a reference backend and compare every target");
-  addFrameOptions(*command, args);
-  command->add_option("--out", args.out,
-                      "Folder for NAME_ours.png, NAME_gl.png, NAME_diff.png (default: compare-SCENE)")
-      ->type_name("DIR");
-  command->add_option("--reference", args.reference, "Reference GL driver")
-      ->type_name("llvmpipe|softpipe")->capture_default_str();
-  command->add_option("--test", args.test, "Tested side: this pipeline, or softpipe")
-      ->type_name("raster|softpipe")->capture_default_str();
-  command->add_option("--max-rmse", args.maxRmse, "Fail if an RGBA8 target's RMSE (8-bit steps) exceeds X")
-      ->type_name("X");
-  command->add_option("--min-psnr", args.minPsnr, "Fail if an RGBA8 target's PSNR (dB) is below X")
-      ->type_name("X");
-  command->add_option("--max-share-over1", args.maxShareOver1,
-                      "Fail if an RGBA8 target has more than this fraction (0..1) of pixels off by > 1 step")
-      ->type_name("X");
-  command->add_option("--max-depth-lsb", args.maxDepthLsb,
-                      "Fail if a depth target differs anywhere by more than N LSBs")
-      ->type_name("N");
-  return command;
-}
-
 Frame validateFrame(const FrameArgs& args) {
   Frame frame;
   // The scene must be one the library knows.
@@ -172,7 +120,7 @@ Frame validateFrame(const FrameArgs& args) {
   std::tie(frame.width, frame.height) = parseSize("--size", args.size);
 
   // --time: finite, not negative, and still finite as a float.
-  const double time = parseNumber("--time", args.time);
+  const double time = parseFiniteNumber("--time", args.time);
   if (time < 0) throw UsageError("--time: " + args.time + " is negative (0 or more seconds)");
   if (!std::isfinite(float(time)))
     throw UsageError("--time: " + args.time + " overflows a float (scenes take their time as a float: at most 3.4e38 seconds)");
@@ -242,24 +190,12 @@ std::pair<int, int> parseSize(const std::string& option, const std::string& text
 
 std::optional<uint64_t> parseWholeNumber(const std::string& text) { return parseUnsigned(text); }
 
-Thresholds validateThresholds(const CompareArgs& args) {
-  Thresholds limits;
-  if (!args.maxRmse.empty()) {
-    limits.maxRmse = parseNumber("--max-rmse", args.maxRmse);
-    if (*limits.maxRmse < 0) throw UsageError("--max-rmse: must be 0 or more");
-  }
-  if (!args.minPsnr.empty()) limits.minPsnr = parseNumber("--min-psnr", args.minPsnr);
-  if (!args.maxShareOver1.empty()) {
-    limits.maxShareOver1 = parseNumber("--max-share-over1", args.maxShareOver1);
-    if (*limits.maxShareOver1 < 0 || *limits.maxShareOver1 > 1)
-      throw UsageError("--max-share-over1: must be a fraction between 0 and 1");
-  }
-  if (!args.maxDepthLsb.empty()) {
-    limits.maxDepthLsb = parseUnsigned(args.maxDepthLsb);
-    if (!limits.maxDepthLsb)
-      throw UsageError("--max-depth-lsb: '" + args.maxDepthLsb + "' is not a whole number >= 0");
-  }
-  return limits;
+double parseFiniteNumber(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value))
+    throw UsageError(option + ": '" + text + "' is not a finite number");
+  return value;
 }
 
 void checkOutputFile(const std::string& option, const std::string& path) {

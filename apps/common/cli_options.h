@@ -1,5 +1,6 @@
-// The `raster` program's options: what each subcommand accepts, and the checks that turn
-// raw text into validated values before any work starts.
+// The options the `raster` commands share (a frame: scene, size, time, threads, methods,
+// --set ...), and the checks that turn raw text into validated values before any work
+// starts. Each command's own options live in its folder (apps/NAME/).
 //
 // Every check throws UsageError with one line naming the option and the problem; main()
 // prints it as "raster: <line>" and exits with status 2. Output locations are checked here
@@ -26,7 +27,7 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Options shared by `render` and `compare`, as typed on the command line.
+// Options of the commands that render a frame, as typed on the command line.
 struct FrameArgs {
   std::string scene;
   std::string time = "1";
@@ -41,21 +42,6 @@ struct FrameArgs {
   std::vector<std::string> sets;   // --set NAME=VALUE, in order (scenes/scene_params.h)
   bool quiet = false;          // no progress or announcements on stderr
   bool floatFinal = false;     // the final pass into RGBA32F (scenes::SceneOptions::floatFinal)
-};
-
-struct RenderArgs : FrameArgs {
-  std::string backend = "raster";
-  std::string out;             // empty: SCENE.png
-  std::string dump;            // empty: no dump
-  std::string view;            // empty: the image; else a stage view (apps/views/views.h)
-  std::string pass;            // the view's pass: a number, or empty / "all" for every pass
-};
-
-struct CompareArgs : FrameArgs {
-  std::string out;             // empty: compare-SCENE
-  std::string reference = "llvmpipe";
-  std::string test = "raster";
-  std::string maxRmse, minPsnr, maxShareOver1, maxDepthLsb;   // empty: no threshold
 };
 
 // The validated frame: what to render, where, and when.
@@ -77,30 +63,21 @@ struct Frame {
 // The scene options of a validated frame.
 scenes::SceneOptions sceneOptions(const Frame& frame);
 
-// Limits the compare thresholds set; absent ones are not checked.
-struct Thresholds {
-  std::optional<double> maxRmse, minPsnr, maxShareOver1;
-  std::optional<uint64_t> maxDepthLsb;
-};
-
 // Adds the options every frame command shares (the scene, --time, --size, --threads,
 // --preset, --set, ...) to a command.
 void addFrameOptions(CLI::App& command, FrameArgs& args);
-
-// Adds the subcommands to app, bound to args (parsed by app.parse()).
-CLI::App* addRenderCommand(CLI::App& app, RenderArgs& args);
-CLI::App* addCompareCommand(CLI::App& app, CompareArgs& args);
 
 // Checks the shared options: a known scene, WxH within 1..16384, a finite time >= 0,
 // threads within 0..1024, an existing asset folder, a memory cap (which it sets: the run
 // allocates nothing before this).
 Frame validateFrame(const FrameArgs& args);
-Thresholds validateThresholds(const CompareArgs& args);
 
 // WxH with each side 1..16384; UsageError naming the option otherwise.
 std::pair<int, int> parseSize(const std::string& option, const std::string& text);
 // A non-negative decimal integer, the whole text, that fits in 64 bits; nullopt otherwise.
 std::optional<uint64_t> parseWholeNumber(const std::string& text);
+// A finite number, the whole text; UsageError naming the option otherwise.
+double parseFiniteNumber(const std::string& option, const std::string& text);
 
 // The method set of --preset and --method; UsageError naming the valid names otherwise.
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides);

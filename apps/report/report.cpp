@@ -336,33 +336,29 @@ std::string tracesHtml(const SceneWork& scene, const std::vector<report::ChosenP
 
 }  // namespace
 
-CLI::App* addReportCommand(CLI::App& app, ReportArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "report", "An HTML report: per scene and target ours, GL and the difference with metrics, stage views, "
-                "pixel histories, tradeoff and sweep charts");
+void addReportOptions(CLI::App& command, ReportArgs& args) {
   std::string names;
   for (const auto& name : scenes::sceneNames()) names += (names.empty() ? "" : ", ") + name;
-  command->add_option("scenes", args.scenes, "Scenes (" + names + "), or all")->required()->type_name("SCENE...");
-  command->add_option("--out", args.out, "Folder for index.html and its files (replaced as a whole)")
+  command.add_option("scenes", args.scenes, "Scenes (" + names + "), or all")->required()->type_name("SCENE...");
+  command.add_option("--out", args.out, "Folder for index.html and its files (replaced as a whole)")
       ->required()->type_name("DIR");
-  command->add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
-  command->add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
-  command->add_option("--threads", args.threads, "Threads of this pipeline and llvmpipe; 0: every core")
+  command.add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
+  command.add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
+  command.add_option("--threads", args.threads, "Threads of this pipeline and llvmpipe; 0: every core")
       ->type_name("N")->capture_default_str();
-  command->add_option("--pixels", args.pixels,
+  command.add_option("--pixels", args.pixels,
                       "Pixels traced per scene (0.." + std::to_string(kMaxPixels) + "): the worst differing first")
       ->type_name("N")->capture_default_str();
-  command->add_option("--include", args.include,
+  command.add_option("--include", args.include,
                       "Folder searched for tradeoff.json and sweep.json (repeatable; default: the repository's docs/)")
       ->type_name("DIR")->take_all()->allow_extra_args(false);
-  command->add_flag("--no-default-include", args.noDefaultInclude, "Do not search the repository's docs/");
-  command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
-  command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")
+  command.add_flag("--no-default-include", args.noDefaultInclude, "Do not search the repository's docs/");
+  command.add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command.add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")
       ->type_name("SIZE");
-  addMethodOptions(*command, args.preset, args.method);
-  addSetOption(*command, args.sets);
-  addQuietOption(*command, args.quiet);
-  return command;
+  addMethodOptions(command, args.preset, args.method);
+  addSetOption(command, args.sets);
+  addQuietOption(command, args.quiet);
 }
 
 int runReport(const ReportArgs& args) {

@@ -39,7 +39,7 @@ struct ReportArgs : FrameArgs {
   int pixels = 3;
 };
 
-CLI::App* addReportCommand(CLI::App& app, ReportArgs& args);
+void addReportOptions(CLI::App& command, ReportArgs& args);
 int runReport(const ReportArgs& args);
 
 }  // namespace cli

@@ -109,22 +109,19 @@ bool report(const Soup& soup, const Verdict& v, const std::string& reference, st
 
 }  // namespace
 
-CLI::App* addSoupCommand(CLI::App& app, SoupArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "soup", "Random triangle soups through this pipeline and llvmpipe; coverage and depth compared exactly");
-  command->add_option("--seeds", args.seeds, "Seeds A through B (inclusive), or one seed")->type_name("A:B");
-  command->add_option("--replay", args.replay, "Render a reproducer written by a failing run again")->type_name("FILE");
-  command->add_option("--size", args.size, "Viewport size")->type_name("WxH")->capture_default_str();
-  command->add_option("--triangles", args.triangles, "Random triangles a soup (besides its closed meshes)")
+void addSoupOptions(CLI::App& command, SoupArgs& args) {
+  command.add_option("--seeds", args.seeds, "Seeds A through B (inclusive), or one seed")->type_name("A:B");
+  command.add_option("--replay", args.replay, "Render a reproducer written by a failing run again")->type_name("FILE");
+  command.add_option("--size", args.size, "Viewport size")->type_name("WxH")->capture_default_str();
+  command.add_option("--triangles", args.triangles, "Random triangles a soup (besides its closed meshes)")
       ->type_name("N")->capture_default_str();
-  command->add_option("--out", args.out, "Folder for the reproducers of failing seeds, soup-SEED.json")
+  command.add_option("--out", args.out, "Folder for the reproducers of failing seeds, soup-SEED.json")
       ->type_name("DIR")->capture_default_str();
-  command->add_option("--threads", args.threads, "Threads of this pipeline, 0..1024; 0: every core")
+  command.add_option("--threads", args.threads, "Threads of this pipeline, 0..1024; 0: every core")
       ->type_name("N")->capture_default_str();
-  command->add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
+  command.add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
   // For the tests: proves the check can fail (this pipeline's triangles drawn a pixel right).
-  command->add_flag("--inject-difference", args.injectDifference)->group("");
-  return command;
+  command.add_flag("--inject-difference", args.injectDifference)->group("");
 }
 
 int runSoup(const SoupArgs& args) {

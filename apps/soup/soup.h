@@ -38,7 +38,7 @@ struct SoupArgs {
   bool injectDifference = false;   // hidden: this pipeline's triangles one pixel right
 };
 
-CLI::App* addSoupCommand(CLI::App& app, SoupArgs& args);
+void addSoupOptions(CLI::App& command, SoupArgs& args);
 int runSoup(const SoupArgs& args);
 
 }  // namespace cli

@@ -204,34 +204,31 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
 
 }  // namespace
 
-CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "sweep", "Move one scene parameter toward where methods fail; score every method set and softpipe against llvmpipe");
-  command->add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
-  command->add_option("--param", args.param,
+void addSweepOptions(CLI::App& command, SweepArgs& args) {
+  command.add_option("scene", args.scene, "Scene")->required()->type_name("SCENE");
+  command.add_option("--param", args.param,
                       "The parameter and its values, e.g. near=0.1:0.0001:12:log (raster params SCENE lists them)")
       ->required()->type_name("NAME=FROM:TO:STEPS[:log]");
-  command->add_option("--methods", args.methods,
+  command.add_option("--methods", args.methods,
                       "Method sets of this pipeline: presets, or steps changed from gl (math=fast, math=fast+div=approx)")
       ->type_name("SET[,SET...]")->capture_default_str();
-  command->add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
-  command->add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
-  command->add_option("--threads", args.threads, "Threads of this pipeline and the GL drivers; 0: every core")
+  command.add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
+  command.add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
+  command.add_option("--threads", args.threads, "Threads of this pipeline and the GL drivers; 0: every core")
       ->type_name("N")->capture_default_str();
-  command->add_option("--threshold", args.threshold, "A final image below this PSNR (dB) against llvmpipe fails")
+  command.add_option("--threshold", args.threshold, "A final image below this PSNR (dB) against llvmpipe fails")
       ->type_name("DB")->capture_default_str();
-  command->add_option("--shard", args.shard, "Render only shard K of N (values i with i % N == K - 1); sweep-merge joins them")
+  command.add_option("--shard", args.shard, "Render only shard K of N (values i with i % N == K - 1); sweep-merge joins them")
       ->type_name("K/N");
-  command->add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
-  command->add_flag("--check", args.check,
+  command.add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
+  command.add_flag("--check", args.check,
                     "Check every option and value (exit 2 on bad input), render nothing: for a cluster runner");
-  command->add_option("--out", args.out, "Folder for sweep.json, sweep.md, sweep.png, sweep.svg")->required()->type_name("DIR");
-  command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
-  command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")->type_name("SIZE");
-  command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
-  addSetOption(*command, args.sets);
-  addQuietOption(*command, args.quiet);
-  return command;
+  command.add_option("--out", args.out, "Folder for sweep.json, sweep.md, sweep.png, sweep.svg")->required()->type_name("DIR");
+  command.add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command.add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")->type_name("SIZE");
+  command.add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  addSetOption(command, args.sets);
+  addQuietOption(command, args.quiet);
 }
 
 int runSweep(const SweepArgs& args) {

@@ -54,9 +54,9 @@ struct SweepMergeArgs {
   std::string out;
 };
 
-CLI::App* addSweepCommand(CLI::App& app, SweepArgs& args);
+void addSweepOptions(CLI::App& command, SweepArgs& args);
 int runSweep(const SweepArgs& args);
-CLI::App* addSweepMergeCommand(CLI::App& app, SweepMergeArgs& args);
+void addSweepMergeOptions(CLI::App& command, SweepMergeArgs& args);
 int runSweepMerge(const SweepMergeArgs& args);
 
 }  // namespace cli

@@ -18,12 +18,10 @@ namespace cli {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-CLI::App* addSweepMergeCommand(CLI::App& app, SweepMergeArgs& args) {
-  CLI::App* command = app.add_subcommand("sweep-merge", "Join the shards of a sweep (raster sweep --shard K/N) into one");
-  command->add_option("shards", args.shards, "The shards' --out folders")->required()->type_name("DIR...");
-  command->add_option("--out", args.out, "Folder for the merged sweep.json, sweep.md, sweep.png, sweep.svg")
+void addSweepMergeOptions(CLI::App& command, SweepMergeArgs& args) {
+  command.add_option("shards", args.shards, "The shards' --out folders")->required()->type_name("DIR...");
+  command.add_option("--out", args.out, "Folder for the merged sweep.json, sweep.md, sweep.png, sweep.svg")
       ->required()->type_name("DIR");
-  return command;
 }
 
 int runSweepMerge(const SweepMergeArgs& args) {

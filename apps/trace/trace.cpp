@@ -309,14 +309,11 @@ std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
 
 }  // namespace
 
-CLI::App* addTraceCommand(CLI::App& app, TraceArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "trace", "Pixel history: every fragment that reached one pixel, in every pass that made it, and why it is what it is");
-  addFrameOptions(*command, args);
-  command->add_option("--pixel", args.pixel, "The pixel of the final image, row 0 at the top")->required()->type_name("X,Y");
-  command->add_option("--json", args.json, "Also write the trace as JSON here")->type_name("FILE");
-  command->add_flag("--no-reference", args.noReference, "Leave out GL's values (no llvmpipe render)");
-  return command;
+void addTraceOptions(CLI::App& command, TraceArgs& args) {
+  addFrameOptions(command, args);
+  command.add_option("--pixel", args.pixel, "The pixel of the final image, row 0 at the top")->required()->type_name("X,Y");
+  command.add_option("--json", args.json, "Also write the trace as JSON here")->type_name("FILE");
+  command.add_flag("--no-reference", args.noReference, "Leave out GL's values (no llvmpipe render)");
 }
 
 int runTrace(const TraceArgs& args) {

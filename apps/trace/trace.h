@@ -52,7 +52,7 @@ struct TraceArgs : FrameArgs {
   bool noReference = false;   // leave GL's values out (no llvmpipe render)
 };
 
-CLI::App* addTraceCommand(CLI::App& app, TraceArgs& args);
+void addTraceOptions(CLI::App& command, TraceArgs& args);
 int runTrace(const TraceArgs& args);
 
 }  // namespace cli

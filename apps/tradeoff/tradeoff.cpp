@@ -253,30 +253,27 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
 
 }  // namespace
 
-CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args) {
-  CLI::App* command = app.add_subcommand(
-      "tradeoff", "Race every method set against llvmpipe and softpipe; chart speed against accuracy");
-  command->add_option("scene", args.scene, "Scene, or all (one chart panel per scene)")->required()->type_name("SCENE|all");
-  command->add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
-  command->add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
-  command->add_option("--threads", args.threads, "Threads of this pipeline and llvmpipe; 0: every core")
+void addTradeoffOptions(CLI::App& command, TradeoffArgs& args) {
+  command.add_option("scene", args.scene, "Scene, or all (one chart panel per scene)")->required()->type_name("SCENE|all");
+  command.add_option("--time", args.time, "Time in seconds")->type_name("T")->capture_default_str();
+  command.add_option("--size", args.size, "Image size")->type_name("WxH")->capture_default_str();
+  command.add_option("--threads", args.threads, "Threads of this pipeline and llvmpipe; 0: every core")
       ->type_name("N")->capture_default_str();
-  command->add_option("--frames", args.frames, "Timed rounds (each: every method set once, each after an llvmpipe frame), 1..1000")
+  command.add_option("--frames", args.frames, "Timed rounds (each: every method set once, each after an llvmpipe frame), 1..1000")
       ->capture_default_str();
-  command->add_option("--warmup", args.warmup, "Untimed rounds first (0..100)")->capture_default_str();
-  command->add_option("--softpipe-frames", args.softpipeFrames, "Timed softpipe frames (1..100)")->capture_default_str();
-  command->add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
-  command->add_option("--out", args.out,
+  command.add_option("--warmup", args.warmup, "Untimed rounds first (0..100)")->capture_default_str();
+  command.add_option("--softpipe-frames", args.softpipeFrames, "Timed softpipe frames (1..100)")->capture_default_str();
+  command.add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
+  command.add_option("--out", args.out,
                       "Folder for tradeoff.json (one object per scene; a list of them for several scenes), "
                       "tradeoff.md, tradeoff.png, tradeoff.svg")
       ->required()->type_name("DIR");
-  command->add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
-  command->add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")
+  command.add_option("--assets", args.assets, "Asset folder")->type_name("DIR");
+  command.add_option("--max-memory", args.maxMemory, "Refuse (exit 2) a run that would take more than SIZE")
       ->type_name("SIZE");
-  command->add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
-  addSetOption(*command, args.sets);
-  addQuietOption(*command, args.quiet);
-  return command;
+  command.add_option("--instances", args.instances, "Cubes in the hdr scene (1..200000)")->capture_default_str();
+  addSetOption(command, args.sets);
+  addQuietOption(command, args.quiet);
 }
 
 int runTradeoff(const TradeoffArgs& args) {

@@ -36,7 +36,7 @@ struct TradeoffArgs : FrameArgs {
   std::string out;
 };
 
-CLI::App* addTradeoffCommand(CLI::App& app, TradeoffArgs& args);
+void addTradeoffOptions(CLI::App& command, TradeoffArgs& args);
 int runTradeoff(const TradeoffArgs& args);
 
 }  // namespace cli

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "apps/common/cli_options.h"
+#include "apps/render/render.h"
 
 namespace cli {
 

@@ -59,6 +59,7 @@ const std::vector<Command>& commands() {
       {"params", "List a scene's parameters (--set NAME=VALUE), with range and meaning",
        withArgs<ParamsArgs, addParamsOptions, listParams>},
       {"scenes", "List the scenes, one a line (--json: every registry row)", withArgs<ScenesArgs, addScenesOptions, listScenes>},
+      {"views", "List the stage views of render --view, one a line, with what each shows", withoutArgs<listViews>},
   };
   return table;
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/number_text.h"
+#include "apps/views/stage_views.h"
 #include "raster/methods.h"
 #include "scenes/registry.h"
 
@@ -87,6 +88,16 @@ int listScenes(const ScenesArgs& args) {
                     {"sweeps", row.sweeps}});
   }
   std::cout << rows.dump(2) << "\n";
+  return 0;
+}
+
+// `raster views`: each stage view's name and what it shows, one a line.
+int listViews() {
+  for (const StageView& view : stageViews()) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%-12s ", view.name);
+    std::cout << name << view.shows << "\n";
+  }
   return 0;
 }
 

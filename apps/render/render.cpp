@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "apps/common/sides.h"
-#include "apps/views/views.h"
+#include "apps/views/view_render.h"
 #include "compare/image_io.h"
 #include "scenes/backends.h"
 

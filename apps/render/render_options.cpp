@@ -13,8 +13,8 @@ void addRenderOptions(CLI::App& command, RenderArgs& args) {
                      "Folder for every target: NAME.png, and a lossless OpenEXR NAME.exr for depth/float targets")
       ->type_name("DIR");
   command.add_option("--view", args.view,
-                     "Draw a stage view instead of the image, with its numbers in F.json beside --out F.png: "
-                     "overdraw, depth-kills, helpers, tile-cost, triangles (see README, Stage views)")
+                     "Draw a stage view instead of the image, with its numbers in F.json beside --out F.png "
+                     "(`raster views` lists them; docs/stage-views.md)")
       ->type_name("NAME");
   command.add_option("--pass", args.pass, "The pass a --view shows (a number from 0; default all, as a contact sheet)")
       ->type_name("N|all");

@@ -23,8 +23,8 @@
 #include "apps/report/report_pixels.h"
 #include "apps/report/report_results.h"
 #include "apps/report/report_trace_panel.h"
-#include "apps/report/report_views.h"
 #include "apps/common/sides.h"
+#include "apps/views/stage_views.h"
 #include "compare/exr_io.h"
 #include "compare/image_io.h"
 #include "compare/metrics.h"
@@ -114,31 +114,19 @@ std::vector<std::string> frameOptions(const Frame& frame, const ReportArgs& give
   return args;
 }
 
-// What this build offers: `raster trace`, and `raster render --view` with its list of views.
+// What this build offers: `raster trace`, and the stage views of its registry.
 struct Tools {
   bool trace = false;
-  bool views = false;
   std::vector<std::string> viewNames;
-  std::string viewNote;   // why there are no views, when there are none
 };
 
-Tools probeTools(const std::string& scene, const fs::path& scratch) {
+Tools probeTools(const fs::path& scratch) {
   Tools tools;
   // `raster trace --help` succeeds even without the command (the program's own --help
   // answers): the command is there when its help names its --pixel option.
   const ChildRun traceHelp = runThisProgram({"trace", "--help"}, "raster trace --help", scratch);
   tools.trace = traceHelp.status == 0 && traceHelp.output.find("--pixel") != std::string::npos;
-  const ChildRun renderHelp = runThisProgram({"render", "--help"}, "raster render --help", scratch);
-  if (renderHelp.output.find("--view") == std::string::npos) {
-    tools.viewNote = "Stage views: this build's `raster render` has no --view option, so the report shows none.";
-    return tools;
-  }
-  const ChildRun list = runThisProgram({"render", scene, "--view", "help", "--size", "8x8", "--out",
-                                        (scratch / "view-help.png").string()},
-                                       "raster render --view help", scratch);
-  tools.viewNames = report::parseViewNames(list.status, list.output);
-  tools.views = !tools.viewNames.empty();
-  if (!tools.views) tools.viewNote = "Stage views: cannot read the list of views from `raster render --view help`: " + lastLine(list.output);
+  for (const StageView& view : stageViews()) tools.viewNames.push_back(view.name);
   return tools;
 }
 
@@ -256,8 +244,7 @@ std::string viewsHtml(const SceneWork& scene, json& record) {
   const auto& step = scene.step;
   std::string html;
   html += "<h3>Stage views</h3>\n";
-  if (!tools.views) html += report::note(tools.viewNote);
-  for (const std::string& view : tools.views ? tools.viewNames : std::vector<std::string>{}) {
+  for (const std::string& view : tools.viewNames) {
     step(frame.scene + ": view " + view);
     const std::string png = folder + "/view-" + fileSafe(view) + ".png";
     std::vector<std::string> childArgs = {"render", frame.scene, "--view", view, "--out", (work / png).string(),
@@ -409,9 +396,9 @@ int runReport(const ReportArgs& args) {
   const fs::path scratch = work.path / ".scratch";   // child logs and probes; removed before the rename
   fs::create_directory(scratch);
 
-  const Tools tools = probeTools(sceneList.front(), scratch);
+  const Tools tools = probeTools(scratch);
   const std::vector<ChartResult> charts = findChartResults(includes);
-  const int viewCount = tools.views ? int(tools.viewNames.size()) : 0;
+  const int viewCount = int(tools.viewNames.size());
   const int traceCount = tools.trace ? args.pixels : 0;
   Progress progress("report", int(frames.size()) * (3 + viewCount + traceCount) + int(charts.size()) + 1, args.quiet);
   int done = 0;

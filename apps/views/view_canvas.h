@@ -1,7 +1,7 @@
-// Drawing the stage views' images (apps/views/views.h): an RGB canvas with filled rectangles,
-// clipped lines, text in stb_easy_font's built-in bitmap font (Debian's libstb-dev, already
-// the project's PNG library) and a colour ramp, so a view's PNG carries its own legend with
-// no plotting tool at run time.
+// Drawing the stage views' images (view_sheet.h, view_painters.h): an RGB canvas with
+// filled rectangles, clipped lines, text in stb_easy_font's built-in bitmap font (Debian's
+// libstb-dev, already the project's PNG library) and a colour ramp, so a view's PNG carries
+// its own legend with no plotting tool at run time.
 #pragma once
 
 #include <cstdint>

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/views/stage_views.h"
 #include "tests/apps/cli_test_helpers.h"
 
 namespace {
@@ -68,8 +69,15 @@ TEST_CASE("report: every target's images and metrics; a second run replaces the 
     if (target.at("kind") != "rgba8") CHECK(fs::is_regular_file(out / "shadow" / (name + "_ours.exr")));
     CHECK(page.find("id=\"metrics-shadow-" + name + "\"") != std::string::npos);
   }
-  // Stage views and traces: either shown, or a note says why not.
-  CHECK((page.find("Stage views: this build") != std::string::npos || page.find("<h4>") != std::string::npos));
+  // Every stage view of the registry, in its order, with its image.
+  const nlohmann::json& views = record.at("scenes")[0].at("views");
+  REQUIRE(views.size() == cli::stageViews().size());
+  for (size_t i = 0; i < views.size(); ++i) {
+    CHECK(views[i].at("view") == cli::stageViews()[i].name);
+    CHECK(fs::is_regular_file(out / views[i].at("image").get<std::string>()));
+    CHECK(page.find("<h4>" + std::string(cli::stageViews()[i].name) + "</h4>") != std::string::npos);
+  }
+  // Traces: either shown, or a note says why not.
   CHECK((page.find("this build has no `raster trace`") != std::string::npos || page.find("class=\"trace\"") != std::string::npos));
   CHECK(page.find("No tradeoff.json or sweep.json") != std::string::npos);
 

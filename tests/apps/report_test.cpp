@@ -13,7 +13,6 @@
 #include "apps/report/report_pixels.h"
 #include "apps/report/report_results.h"
 #include "apps/report/report_trace_panel.h"
-#include "apps/report/report_views.h"
 #include "compare/metrics.h"
 
 namespace {
@@ -146,18 +145,6 @@ TEST_CASE("the traced pixels: the worst differing first, ties by position, then 
   CHECK(report::choosePixels(gl, gl, 0).empty());
   // A one-pixel image has one pixel to give.
   CHECK(report::choosePixels(rgba8(1, 1), rgba8(1, 1), 5).size() == 1);
-}
-
-TEST_CASE("the list of views is read from what `render --view help` prints") {
-  using V = std::vector<std::string>;
-  const V all = {"overdraw", "depth-kills", "helpers", "tile-cost", "triangles"};
-  CHECK(report::parseViewNames(0, "overdraw  fragments shaded per pixel\ndepth-kills early and late\nhelpers x\n"
-                                  "tile-cost y\ntriangles z\n") == all);
-  CHECK(report::parseViewNames(2, "raster: --view: 'help' is not a view (valid: overdraw, depth-kills, helpers, tile-cost, triangles)\n") == all);
-  CHECK(report::parseViewNames(2, "raster: unknown view 'help'; valid views: overdraw, depth-kills, helpers, tile-cost, triangles\n") == all);
-  CHECK(report::parseViewNames(2, "raster: unknown view 'help' (overdraw|depth-kills|helpers|tile-cost|triangles)") == all);
-  CHECK(report::parseViewNames(2, "").empty());
-  CHECK(report::parseViewNames(1, "raster: cannot make a context: Error 7").empty());
 }
 
 }  // TEST_SUITE

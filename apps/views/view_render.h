@@ -1,11 +1,6 @@
 // Stage views: `raster render SCENE --view NAME [--pass N] --out F.png`, a picture of where a
-// frame's work goes, with its legend drawn in, and its numbers in the sidecar F.json.
-//
-//   overdraw     fragments shaded per pixel
-//   depth-kills  fragments the depth test rejected per pixel (every test here is early)
-//   helpers      the share of shaded lanes that were helpers, per 2x2 quad
-//   tile-cost    time per 64x64 tile (clear and tile stage), this pipeline's own path
-//   triangles    wireframe of the set-up triangles (after clipping and culling)
+// frame's work goes, with its legend drawn in, and its numbers in the sidecar F.json. The
+// views are the records of stage_views.h (`raster views` lists them).
 //
 // The count views show GL's semantics: every fragment in API order, quad by quad, as
 // llvmpipe shades them (tile/inspect_tile.h), not the fragments this pipeline's fast paths
@@ -18,15 +13,11 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "apps/common/cli_options.h"
 #include "apps/render/render.h"
 
 namespace cli {
-
-// The view names, in the order the help lists them.
-const std::vector<std::string>& viewNames();
 
 // `raster render --view`: renders the frame with the view's recorder, writes the view's PNG
 // and sidecar JSON (and with --dump every target). UsageError (exit 2) for an unknown view

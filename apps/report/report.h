@@ -3,23 +3,20 @@
 //
 // DIR/index.html, self-contained (no script, no network; every image a file beside it):
 //   - per scene and target: this pipeline's image, llvmpipe's and the difference heat map,
-//     with the target's metrics (compare::compareImages, what `raster compare` prints). RGBA8
-//     targets are PNGs as they are; float, half and depth targets get a PNG preview
-//     (compare::writePng: floats clamped to [0,1] and gamma 1/2.2, depth contrast-stretched)
-//     and their lossless OpenEXR files as the data (compare/exr_io.h), linked;
-//   - per scene, the stage views of `raster render --view NAME` (each with its sidecar JSON),
-//     the list of views as that command gives it;
+//     with the target's metrics (compare::compareImages, what `raster compare` prints):
+//     report_targets.h, which also says how each kind of target is previewed;
+//   - per scene, every stage view of `raster render --view NAME` (each with its sidecar
+//     JSON), the views as their registry lists them (apps/views/stage_views.h);
 //   - per scene, the pixel history (`raster trace --json`) of a few pixels: the worst
 //     differing pixels of the final image first (report_pixels.h);
 //   - the tradeoff and sweep charts and their tables, from every tradeoff.json / sweep.json
-//     under the --include folders (default: the repository's docs/).
-// Views and traces come from child processes of this program, as softpipe's frames do; a
-// build without `render --view` or `trace` gets a visible note in their place.
+//     under the --include folders (default: the repository's docs/): report_charts.h.
+// Views and traces come from child processes of this program (report_children.h), as
+// softpipe's frames do; a child that fails leaves a visible note in its place.
 // DIR/report.json holds the numbers the tables show.
 //
-// Nothing is half-written: everything is checked before the first frame, the report is made
-// in a temporary folder beside DIR and renamed onto it at the end (a DIR that exists must be
-// empty or a previous report, which is then replaced).
+// Nothing is half-written: everything is checked before the first frame, and the report is
+// made beside DIR and moved onto it at the end (report_folder.h).
 #pragma once
 
 #include <string>

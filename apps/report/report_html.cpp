@@ -1,6 +1,7 @@
 // HTML building blocks of the report page (report_html.h).
 #include "apps/report/report_html.h"
 
+#include <cctype>
 #include <cstdio>
 
 namespace report {
@@ -71,6 +72,12 @@ std::string details(const std::string& summary, const std::string& body, bool op
 }
 
 std::string note(const std::string& text) { return "<p class=\"note\">" + escape(text) + "</p>\n"; }
+
+std::string fileSafe(const std::string& name) {
+  std::string out;
+  for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+  return out.empty() ? "_" : out;
+}
 
 namespace {
 

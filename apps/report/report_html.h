@@ -42,8 +42,12 @@ std::string figure(const std::string& file, const std::string& caption, const st
 // A collapsible panel (<details>); `summary` and `body` are HTML.
 std::string details(const std::string& summary, const std::string& body, bool open = false);
 
-// A note in a box, for a section that could not be made (a command missing from this build).
+// A note in a box, for what the report could not show (a child that failed, no chart found).
 std::string note(const std::string& text);
+
+// A name that becomes part of a file name and an HTML id: letters, digits, - _ . kept,
+// anything else '_' ("_" for an empty name).
+std::string fileSafe(const std::string& name);
 
 // The whole page: title, inline style, a table of contents of the sections, the body.
 struct Section {

@@ -4,7 +4,8 @@
 // DIR/index.html, self-contained (no script, no network; every image a file beside it):
 //   - per scene and target: this pipeline's image, llvmpipe's and the difference heat map,
 //     with the target's metrics (compare::compareImages, what `raster compare` prints):
-//     report_targets.h, which also says how each kind of target is previewed;
+//     report_targets.h, which also says how each kind of target is previewed (an RGBA8
+//     target opaque, its alpha, which is data, as a grey image of its own);
 //   - per scene, every stage view of `raster render --view NAME` (each with its sidecar
 //     JSON), the views as their registry lists them (apps/views/stage_views.h);
 //   - per scene, the pixel history (`raster trace --json`) of a few pixels: the worst

@@ -1,14 +1,17 @@
 // Fuzz target: the command line of `raster render` and `raster compare` (CLI11 parsing, then
-// every check of apps/cli_options.cpp), with the input split into arguments at newlines. A
-// command line parses and validates, or is refused as bad input; nothing else may happen.
+// every check of apps/common/cli_options.cpp and of compare's thresholds), with the input
+// split into arguments at newlines. A command line parses and validates, or is refused as
+// bad input; nothing else may happen.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "apps/cli_options.h"
-#include "fuzz/fuzz_common.h"
+#include "apps/common/cli_options.h"
+#include "apps/compare/compare.h"
+#include "apps/render/render.h"
 #include "io/output_file.h"
+#include "fuzz/fuzz_common.h"
 #include "scenes/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -32,8 +35,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   app.require_subcommand(1);
   cli::RenderArgs render;
   cli::CompareArgs compare;
-  CLI::App* renderCommand = cli::addRenderCommand(app, render);
-  CLI::App* compareCommand = cli::addCompareCommand(app, compare);
+  CLI::App* renderCommand = app.add_subcommand("render");
+  cli::addRenderOptions(*renderCommand, render);
+  CLI::App* compareCommand = app.add_subcommand("compare");
+  cli::addCompareOptions(*compareCommand, compare);
   try {
     app.parse(int(argv.size()), argv.data());
     if (renderCommand->parsed()) {

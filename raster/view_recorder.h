@@ -1,9 +1,10 @@
-// What the stage views (`raster render --view`, apps/views.h) record of each pass of a
-// frame. A Renderer given a ViewRecorder (Renderer::setViewRecorder) hands it every pass it
-// flushes; without one (the normal case) the renderer records nothing and its tile loop is
-// the one it always runs.
+// What the stage views (`raster render --view`, apps/views/stage_views.h) record of each
+// pass of a frame. A Renderer given a ViewRecorder (Renderer::setViewRecorder) hands it
+// every pass it flushes; without one (the normal case) the renderer records nothing and its
+// tile loop is the one it always runs.
 //
-// Three kinds of record, one per recorder, so a view pays only for what it shows:
+// Three kinds of record, one per recorder, so a view pays only for what it shows (each
+// view's record in apps/views/stage_views.cpp names the kind it needs):
 //   Fragments  each tile runs through the instrumented in-order walk (tile/inspect_tile.h):
 //              per-pixel fragments, depth rejects and helper lanes, with GL's semantics;
 //   TileTimes  each tile runs this pipeline's own path (fast paths included), timed;

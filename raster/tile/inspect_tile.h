@@ -1,5 +1,5 @@
-// The instrumented tile walk behind the stage views (`raster render --view`, apps/views.h):
-// one tile's triangles in API order, every fragment counted per pixel.
+// The instrumented tile walk behind the stage views (`raster render --view`,
+// apps/views/stage_views.h): one tile's triangles in API order, every fragment counted per pixel.
 //
 // It is the in-order walk of rasterize_tile.cpp with the reference lanes (ScalarLanes: one
 // 2x2 quad per lane group, as GL's derivative rules describe), built from the same

@@ -1,5 +1,5 @@
 // Triangle soups: random draws that push coverage, clipping and depth to their edges, for
-// `raster soup` (apps/soup.h), which renders each with this pipeline and with llvmpipe and
+// `raster soup` (apps/soup/soup.h), which renders each with this pipeline and with llvmpipe and
 // compares coverage and depth exactly.
 //
 // A soup is plain data in clip space, so a reproducer file can hold it bit for bit:

@@ -3,7 +3,7 @@
 // Bad input must fail fast and cleanly: exit status 2, one "raster: ..." line on stderr, and
 // no file written. These run the built executable (RASTER_CLI_PATH) in an empty temporary
 // folder and look at what it leaves. The metric checks pin down the units the
-// comparison reports (8-bit steps, depth LSBs, half ULPs); tests/io checks that dumps
+// comparison reports (8-bit steps, depth LSBs, half ULPs); tests/compare checks that dumps
 // load back exactly.
 #include <doctest/doctest.h>
 
@@ -23,9 +23,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare/metrics.h"
+#include "apps/commands.h"
 #include "io/image_io.h"
 #include "io/target_dump.h"
+#include "compare/metrics.h"
 #include "raster/methods.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
@@ -91,6 +92,29 @@ TEST_SUITE("cli") {
     CHECK(runCli(cwd, "compare --help").status == 0);
     CHECK(runCli(cwd, "bench --help").status == 0);
     CHECK(runCli(cwd, "scenes").out == "shadow\ndeferred\nhdr\n");
+    CHECK(fs::is_empty(cwd));
+  }
+
+  TEST_CASE("the commands are the table's: the help lists each with its line, each has its own help") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult top = runCli(cwd, "--help");
+    REQUIRE(top.status == 0);
+    std::string names;
+    for (const cli::Command& command : cli::commands()) {
+      INFO(command.name);
+      CHECK(top.out.find(std::string(command.name) + " ") != std::string::npos);
+      CHECK(top.out.find(command.help) != std::string::npos);
+      const RunResult own = runCli(cwd, std::string(command.name) + " --help");
+      CHECK(own.status == 0);
+      CHECK(own.out.rfind(command.help, 0) == 0);   // CLI11 starts a subcommand's help with its line
+      names += (names.empty() ? "" : ", ") + std::string(command.name);
+    }
+    CHECK(top.out.find("(" + names + ")") != std::string::npos);   // the footer
+    // An unknown command is bad input that names the commands.
+    expectRefused("nosuch", "'nosuch' is not a command (commands: " + names + ")");
+    expectRefused("rendr shadow", "commands: render, ");
     CHECK(fs::is_empty(cwd));
   }
 

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/views/stage_views.h"
+#include "io/image_io.h"
 #include "tests/apps/cli_test_helpers.h"
 
 namespace {
@@ -68,8 +70,15 @@ TEST_CASE("report: every target's images and metrics; a second run replaces the 
     if (target.at("kind") != "rgba8") CHECK(fs::is_regular_file(out / "shadow" / (name + "_ours.exr")));
     CHECK(page.find("id=\"metrics-shadow-" + name + "\"") != std::string::npos);
   }
-  // Stage views and traces: either shown, or a note says why not.
-  CHECK((page.find("Stage views: this build") != std::string::npos || page.find("<h4>") != std::string::npos));
+  // Every stage view of the registry, in its order, with its image.
+  const nlohmann::json& views = record.at("scenes")[0].at("views");
+  REQUIRE(views.size() == cli::stageViews().size());
+  for (size_t i = 0; i < views.size(); ++i) {
+    CHECK(views[i].at("view") == cli::stageViews()[i].name);
+    CHECK(fs::is_regular_file(out / views[i].at("image").get<std::string>()));
+    CHECK(page.find("<h4>" + std::string(cli::stageViews()[i].name) + "</h4>") != std::string::npos);
+  }
+  // Traces: either shown, or a note says why not.
   CHECK((page.find("this build has no `raster trace`") != std::string::npos || page.find("class=\"trace\"") != std::string::npos));
   CHECK(page.find("No tradeoff.json or sweep.json") != std::string::npos);
 
@@ -80,6 +89,53 @@ TEST_CASE("report: every target's images and metrics; a second run replaces the 
   CHECK(!fs::exists(out / "stale.txt"));
   CHECK(hiddenEntries(temp.path) == 0);
   CHECK(hiddenEntries(out) == 0);
+}
+
+TEST_CASE("report: RGBA8 previews are opaque, and each has its alpha beside it as grey") {
+  TempFolder temp;
+  RunResult result = runCli(temp.path, "report deferred --size 32x24 --pixels 0 --threads 2 --no-default-include --quiet --out r");
+  REQUIRE_MESSAGE(result.status == 0, result.err);
+  // The same frame's targets as stored (an RGBA8 dump is the target's bytes, alpha included).
+  result = runCli(temp.path, "render deferred --size 32x24 --threads 2 --quiet --out final.png --dump stored");
+  REQUIRE_MESSAGE(result.status == 0, result.err);
+  const fs::path out = temp.path / "r" / "deferred";
+  std::ifstream in(temp.path / "r" / "report.json");
+  const nlohmann::json record = nlohmann::json::parse(in);
+  const std::string page = readText(temp.path / "r" / "index.html");
+  int rgba8Targets = 0;
+  bool alphaIsData = false;   // some stored alpha is not 255 (the G-buffer's specular intensity)
+  for (const auto& target : record.at("scenes")[0].at("targets")) {
+    const std::string name = target.at("name");
+    INFO(name);
+    if (target.at("kind") != "rgba8") {
+      CHECK(!fs::exists(out / (name + "_ours_alpha.png")));
+      continue;
+    }
+    ++rgba8Targets;
+    const scenes::ImageData stored = compare::readPng((temp.path / "stored" / (name + ".png")).string());
+    for (const char* side : {"ours", "gl"}) {
+      INFO(side);
+      const scenes::ImageData colour = compare::readPng((out / (name + "_" + side + ".png")).string());
+      const scenes::ImageData alpha = compare::readPng((out / (name + "_" + side + "_alpha.png")).string());
+      REQUIRE(colour.rgba8.size() == stored.rgba8.size());
+      REQUIRE(alpha.rgba8.size() == stored.rgba8.size());
+      size_t seeThrough = 0, colourChanged = 0, alphaWrong = 0;
+      for (size_t i = 0; i < stored.rgba8.size(); i += 4) {
+        seeThrough += colour.rgba8[i + 3] != 255 || alpha.rgba8[i + 3] != 255;
+        if (std::string(side) == "ours") {   // GL's side may differ from ours; its own bytes are not dumped here
+          for (size_t c = 0; c < 3; ++c) colourChanged += colour.rgba8[i + c] != stored.rgba8[i + c];
+          for (size_t c = 0; c < 3; ++c) alphaWrong += alpha.rgba8[i + c] != stored.rgba8[i + 3];
+        }
+        alphaIsData |= stored.rgba8[i + 3] != 255;
+      }
+      CHECK(seeThrough == 0);
+      CHECK(colourChanged == 0);
+      CHECK(alphaWrong == 0);
+      CHECK(page.find("deferred/" + name + "_" + side + "_alpha.png") != std::string::npos);
+    }
+  }
+  CHECK(rgba8Targets >= 2);
+  CHECK(alphaIsData);
 }
 
 }  // TEST_SUITE

@@ -1,4 +1,4 @@
-// The report's page writers (apps/report_*.h): escaping, the metrics and sidecar tables, the
+// The report's page writers (apps/report/report_*.h): escaping, the metrics and sidecar tables, the
 // pixel-history panel on a hand-written trace (tests/apps/fixtures/report/), and the choice
 // of pixels to trace. The whole report in a browser is tests/apps/report_chromium_test.py.
 #include <doctest/doctest.h>
@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/report_html.h"
-#include "apps/report_pixels.h"
-#include "apps/report_results.h"
-#include "apps/report_trace_panel.h"
-#include "apps/report_views.h"
+#include "apps/report/report_html.h"
+#include "apps/report/report_pixels.h"
+#include "apps/report/report_results.h"
+#include "apps/report/report_targets.h"
+#include "apps/report/report_trace_panel.h"
 #include "compare/metrics.h"
 
 namespace {
@@ -148,16 +148,23 @@ TEST_CASE("the traced pixels: the worst differing first, ties by position, then 
   CHECK(report::choosePixels(rgba8(1, 1), rgba8(1, 1), 5).size() == 1);
 }
 
-TEST_CASE("the list of views is read from what `render --view help` prints") {
-  using V = std::vector<std::string>;
-  const V all = {"overdraw", "depth-kills", "helpers", "tile-cost", "triangles"};
-  CHECK(report::parseViewNames(0, "overdraw  fragments shaded per pixel\ndepth-kills early and late\nhelpers x\n"
-                                  "tile-cost y\ntriangles z\n") == all);
-  CHECK(report::parseViewNames(2, "raster: --view: 'help' is not a view (valid: overdraw, depth-kills, helpers, tile-cost, triangles)\n") == all);
-  CHECK(report::parseViewNames(2, "raster: unknown view 'help'; valid views: overdraw, depth-kills, helpers, tile-cost, triangles\n") == all);
-  CHECK(report::parseViewNames(2, "raster: unknown view 'help' (overdraw|depth-kills|helpers|tile-cost|triangles)") == all);
-  CHECK(report::parseViewNames(2, "").empty());
-  CHECK(report::parseViewNames(1, "raster: cannot make a context: Error 7").empty());
+TEST_CASE("an RGBA8 preview is opaque, and its alpha, which is data, is a grey image of its own") {
+  scenes::ImageData gbuffer = rgba8(2, 1);
+  gbuffer.rgba8 = {200, 150, 100, 0, 10, 20, 30, 72};   // alpha: specular intensity, not coverage
+  CHECK(report::alphaIsData(gbuffer));
+  const scenes::ImageData colour = report::opaqueColour(gbuffer);
+  CHECK(colour.width == 2);
+  CHECK(colour.rgba8 == std::vector<uint8_t>{200, 150, 100, 255, 10, 20, 30, 255});
+  const scenes::ImageData alpha = report::alphaAsGrey(gbuffer);
+  CHECK(alpha.rgba8 == std::vector<uint8_t>{0, 0, 0, 255, 72, 72, 72, 255});
+  // Float and depth targets have no alpha to show apart (their previews drop it).
+  scenes::ImageData half = gbuffer;
+  half.format = scenes::TexelFormat::RGBA16F;
+  CHECK(!report::alphaIsData(half));
+  scenes::ImageData depth;
+  depth.format = scenes::TexelFormat::Depth24;
+  depth.channels = 1;
+  CHECK(!report::alphaIsData(depth));
 }
 
 }  // TEST_SUITE

@@ -1,4 +1,4 @@
-// `raster soup`: random triangle soups, this pipeline against llvmpipe (apps/soup.h).
+// `raster soup`: random triangle soups, this pipeline against llvmpipe (apps/soup/soup.h).
 //
 // A run of a few hundred seeds must be identical and watertight; the check must be able to
 // fail (a hidden flag moves this pipeline's triangles a pixel, and hand-made closed meshes

@@ -1,4 +1,4 @@
-// The stage views (raster/view_recorder.h, tile/inspect_tile.h, apps/views.h): recording a
+// The stage views (raster/view_recorder.h, tile/inspect_tile.h, apps/views/stage_views.h): recording a
 // view leaves every target's bytes as they are, its counts are GL's in-order counts (those
 // of the scalar path with visibility first off), they do not depend on the thread count, the
 // wireframe's corners are the triangles' own, and the command writes a PNG with a sidecar

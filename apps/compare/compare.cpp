@@ -1,0 +1,88 @@
+// `raster compare` (compare.h).
+#include "apps/compare/compare.h"
+
+#include <filesystem>
+#include <iostream>
+#include <vector>
+
+#include "apps/common/number_text.h"
+#include "apps/common/sides.h"
+#include "io/image_io.h"
+#include "compare/metrics.h"
+#include "backends/backends.h"
+
+namespace cli {
+namespace {
+
+namespace fs = std::filesystem;
+using scenes::Target;
+
+// The thresholds a target exceeds, one message each (colour ones for rgba8, depth for depth).
+std::vector<std::string> exceeded(const compare::TargetStats& s, const Thresholds& limits) {
+  std::vector<std::string> failures;
+  if (s.kind == "rgba8") {
+    if (limits.maxRmse && s.rmse > *limits.maxRmse)
+      failures.push_back(s.name + ": rmse " + sixDigits(s.rmse) + " exceeds --max-rmse " + sixDigits(*limits.maxRmse));
+    if (limits.minPsnr && s.psnr < *limits.minPsnr)
+      failures.push_back(s.name + ": psnr " + sixDigits(s.psnr) + " is below --min-psnr " + sixDigits(*limits.minPsnr));
+    if (limits.maxShareOver1 && s.shareOver1 > *limits.maxShareOver1)
+      failures.push_back(s.name + ": share of pixels off by more than 1 step " + sixDigits(s.shareOver1) +
+                         " exceeds --max-share-over1 " + sixDigits(*limits.maxShareOver1));
+  }
+  if (s.kind == "depth" && limits.maxDepthLsb && s.maxDepthLsb > *limits.maxDepthLsb)
+    failures.push_back(s.name + ": depth differs by up to " + std::to_string(s.maxDepthLsb) +
+                       " LSBs, over --max-depth-lsb " + std::to_string(*limits.maxDepthLsb));
+  return failures;
+}
+
+}  // namespace
+
+int runCompare(const CompareArgs& args) {
+  const Frame frame = validateFrame(args);
+  if (args.test != "raster" && args.test != "softpipe")
+    throw UsageError("--test: '" + args.test + "' is neither raster nor softpipe");
+  if (args.reference != "llvmpipe" && args.reference != "softpipe")
+    throw UsageError("--reference: '" + args.reference + "' is neither llvmpipe nor softpipe");
+  if (args.test != "raster" && !(frame.methods == raster::MethodSet{}))
+    throw UsageError("--preset/--method choose this pipeline's methods; --test " + args.test + " renders with GL's own");
+  const Thresholds limits = validateThresholds(args);
+  const std::string outFolder = args.out.empty() ? "compare-" + frame.scene : args.out;
+  checkOutputFolder("--out", outFolder);
+  scenes::checkGalliumEnvironment();
+
+  // Render both sides; they must expose the same targets in the same order.
+  const Side test = renderSide(frame, args.test);
+  const Side reference = renderSide(frame, args.reference);
+  const auto names = [](const Side& side) {
+    std::string list;
+    for (const Target& t : side.targets) list += (list.empty() ? "" : ",") + t.name;
+    return list;
+  };
+  if (names(test) != names(reference))
+    throw std::runtime_error("the sides expose different targets: " + test.backend + " {" + names(test) +
+                             "}, " + reference.backend + " {" + names(reference) + "}");
+
+  // Per target: three images, one stats line, and the thresholds it exceeds.
+  fs::create_directory(outFolder);
+  std::cout << "test: " << test.backend;
+  if (args.test == "raster") std::cout << " (methods: " << raster::methodLabel(frame.methods) << ")";
+  std::cout << "  reference: " << reference.backend << "  scene: " << frame.scene << " at " << sizeAndTime(frame)
+            << std::endl;
+  std::vector<std::string> failures;
+  for (size_t i = 0; i < test.targets.size(); ++i) {
+    const Target& ours = test.targets[i];
+    const Target& theirs = reference.targets[i];
+    const compare::TargetStats stats = compare::compareImages(ours.name, ours.image, theirs.image);
+    const std::string base = (fs::path(outFolder) / ours.name).string();
+    compare::writePng(base + "_ours.png", ours.image);
+    compare::writePng(base + "_gl.png", theirs.image);
+    compare::writeHeatmapPng(base + "_diff.png", ours.image, theirs.image);
+    std::cout << compare::formatStatsLine(stats) << std::endl;
+    for (const std::string& failure : exceeded(stats, limits)) failures.push_back(failure);
+  }
+  std::cout << "images: " << outFolder << "/NAME_{ours,gl,diff}.png" << std::endl;
+  for (const std::string& failure : failures) std::cerr << "raster: " << failure << std::endl;
+  return failures.empty() ? 0 : 1;
+}
+
+}  // namespace cli

@@ -1,0 +1,36 @@
+// `raster compare SCENE`: one frame with a test and a reference backend; per target a stats
+// line (compare/metrics.h) and the ours / gl / heat-map PNGs, and the thresholds that fail
+// the run (exit 1) when a target exceeds them.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/common/cli_options.h"
+
+namespace cli {
+
+struct CompareArgs : FrameArgs {
+  std::string out;             // empty: compare-SCENE
+  std::string reference = "llvmpipe";
+  std::string test = "raster";
+  std::string maxRmse, minPsnr, maxShareOver1, maxDepthLsb;   // empty: no threshold
+};
+
+// Limits the compare thresholds set; absent ones are not checked.
+struct Thresholds {
+  std::optional<double> maxRmse, minPsnr, maxShareOver1;
+  std::optional<uint64_t> maxDepthLsb;
+};
+
+// compare_options.cpp, apart so that the command-line fuzz target (fuzz/cli_fuzz.cpp) links
+// the options and their checks without what renders.
+void addCompareOptions(CLI::App& command, CompareArgs& args);
+Thresholds validateThresholds(const CompareArgs& args);
+
+int runCompare(const CompareArgs& args);
+
+}  // namespace cli

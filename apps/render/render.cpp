@@ -1,0 +1,33 @@
+// `raster render` (render.h).
+#include "apps/render/render.h"
+
+#include <iostream>
+
+#include "apps/common/sides.h"
+#include "apps/views/view_render.h"
+#include "io/image_io.h"
+#include "backends/backends.h"
+
+namespace cli {
+
+int runRender(const RenderArgs& args) {
+  const Frame frame = validateFrame(args);
+  if (args.backend != "raster" && args.backend != "gl")
+    throw UsageError("--backend: '" + args.backend + "' is neither raster nor gl");
+  if (!args.view.empty()) return runViewRender(args, frame);
+  if (!args.pass.empty()) throw UsageError("--pass chooses the pass of a --view");
+  if (args.backend == "gl" && !(frame.methods == raster::MethodSet{}))
+    throw UsageError("--preset/--method choose this pipeline's methods; --backend gl renders with GL's own");
+  const std::string out = args.out.empty() ? frame.scene + ".png" : args.out;
+  checkOutputFile("--out", out);
+  if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);
+  if (args.backend == "gl") scenes::checkGalliumEnvironment();
+
+  const Side side = renderInProcess(frame, args.backend, /*finalOnly=*/args.dump.empty());
+  compare::writePng(out, side.targets.back().image);
+  std::cout << "wrote " << out << std::endl;
+  if (!args.dump.empty()) dumpTargets(args.dump, side.targets);
+  return 0;
+}
+
+}  // namespace cli

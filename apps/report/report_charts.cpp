@@ -1,0 +1,72 @@
+// The tradeoff and sweep results in the report (report_charts.h).
+#include "apps/report/report_charts.h"
+
+#include <algorithm>
+
+#include "apps/report/report_folder.h"
+#include "apps/report/report_html.h"
+#include "apps/report/report_results.h"
+#include "io/output_file.h"
+
+namespace report {
+
+using nlohmann::json;
+
+std::vector<ChartResult> findChartResults(const std::vector<std::string>& includes) {
+  std::vector<ChartResult> found;
+  for (const std::string& include : includes) {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::recursive_directory_iterator(include, fs::directory_options::skip_permission_denied)) {
+      const std::string name = entry.path().filename().string();
+      if (entry.is_regular_file() && (name == "tradeoff.json" || name == "sweep.json")) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());   // the same order on every machine
+    for (const fs::path& file : files) {
+      const fs::path relative = fs::relative(file.parent_path(), include);
+      const std::string label = (fs::path(include).filename().empty() ? fs::path(include).parent_path().filename()
+                                                                     : fs::path(include).filename()) /
+                                relative;
+      found.push_back({file.stem().string(), file.parent_path(), fs::path(label).lexically_normal().string()});
+    }
+  }
+  return found;
+}
+
+std::string chartSection(const ChartResult& result, const fs::path& reportFolder, int index, json& record) {
+  const std::string base = "charts/" + std::to_string(index) + "-" + fileSafe(result.label);
+  fs::create_directories(reportFolder / base);
+  const std::string jsonFile = result.kind + ".json";
+  const std::string jsonText = readFile(result.folder / jsonFile);
+  json data;
+  try {
+    data = json::parse(jsonText);
+  } catch (const json::exception& e) {
+    throw std::runtime_error("cannot read " + (result.folder / jsonFile).string() + ": " + e.what());
+  }
+  compare::writeOutputFile((reportFolder / base / jsonFile).string(), jsonText);
+  std::string html = "<h3>" + escape(result.kind + ": " + result.label) + "</h3>\n";
+  std::string image;
+  for (const char* extension : {".png", ".svg"}) {
+    const fs::path chart = result.folder / (result.kind + extension);
+    if (!fs::is_regular_file(chart)) continue;
+    image = base + "/" + result.kind + extension;
+    compare::writeOutputFile((reportFolder / image).string(), readFile(chart));
+    break;
+  }
+  if (!image.empty())
+    html += "<figure class=\"chart\"><a href=\"" + escape(image) + "\"><img src=\"" + escape(image) + "\" alt=\"" +
+            escape(result.kind + " chart") + "\"></a><figcaption>" + escape("from " + result.label + "; the data: ") +
+            "<a href=\"" + escape(base + "/" + jsonFile) + "\">" + escape(jsonFile) + "</a></figcaption></figure>\n";
+  else
+    html += note("No chart (" + result.kind + ".png or .svg) beside " + jsonFile + " in " + result.label + ".");
+  const std::string id = result.kind + "-" + std::to_string(index);
+  try {
+    html += result.kind == "tradeoff" ? tradeoffTables(data, id) : sweepTables(data, id);
+  } catch (const json::exception& e) {
+    throw std::runtime_error("cannot read " + (result.folder / jsonFile).string() + ": " + e.what());
+  }
+  record = {{"kind", result.kind}, {"source", result.label}, {"json", base + "/" + jsonFile}, {"image", image}, {"id", id}};
+  return html;
+}
+
+}  // namespace report

@@ -1,0 +1,124 @@
+// sweep.json and its table and chart (sweep_file.h).
+#include "apps/sweep/sweep_file.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "apps/common/charts.h"
+#include "apps/common/cli_options.h"
+#include "apps/common/number_text.h"
+#include "io/output_file.h"
+
+namespace cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int kMaxShards = 10000;   // as many as a sweep may have values
+
+// For each side, the first value (in sweep order) at which it fails, or null.
+json firstFailures(const json& sweep) {
+  json first = json::object();
+  for (const std::string& side : sweepSides(sweep)) {
+    json value = nullptr;
+    for (const json& p : sweep.at("points"))
+      if (p.at("method") == side && p.at("fails").get<bool>()) {
+        value = p.at("value");
+        break;
+      }
+    first.emplace(side, std::move(value));
+  }
+  return first;
+}
+
+std::string markdown(const json& sweep) {
+  std::ostringstream md;
+  const json& r = sweep.at("range");
+  md << "# Sweep of `" << sweep.at("param").get<std::string>() << "` in " << sweep.at("scene").get<std::string>()
+     << "\n\nFrom " << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
+     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << sweep.at("size")[0] << "x" << sweep.at("size")[1]
+     << ", t=" << sixDigits(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
+     << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
+  if (sweep.contains("first_failure")) {
+    md << "| side | first failing value |\n|---|---|\n";
+    for (const auto& [side, value] : sweep.at("first_failure").items())
+      md << "| " << side << " | " << (value.is_null() ? std::string("none") : sixDigits(value.get<double>())) << " |\n";
+    md << "\n";
+  }
+  md << "| value | side | identical | PSNR (dB) | >1 step | max step | non-finite | worst target (dB) | fails |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
+  for (const json& p : sweep.at("points")) {
+    const json& db = p.at("psnr_vs_llvmpipe_db");
+    const json& worst = p.at("worst_target");
+    md << "| " << sixDigits(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
+       << (p.at("identical_to_llvmpipe").get<bool>() ? "yes" : "no") << " | "
+       << (db.is_null() ? std::string("-") : fixedDigits(db.get<double>(), 1)) << " | "
+       << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
+       << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << p.at("nonfinite_pixels").get<uint64_t>() << " | "
+       << (worst.is_null() ? std::string("-")
+                           : worst.get<std::string>() + " (" +
+                                 (p.at("worst_target_psnr_db").is_null() ? std::string("-")
+                                                                         : fixedDigits(p.at("worst_target_psnr_db").get<double>(), 1)) +
+                                 ")")
+       << " | " << (p.at("fails").get<bool>() ? p.at("failure").get<std::string>() : std::string("")) << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace
+
+ShardSpec parseShard(const std::string& text) {
+  ShardSpec shard;
+  if (text.empty()) return shard;
+  std::vector<std::string> parts;   // K and N, when there is exactly one '/'
+  const size_t slash = text.find('/');
+  if (slash != std::string::npos && text.find('/', slash + 1) == std::string::npos) {
+    parts.push_back(text.substr(0, slash));
+    parts.push_back(text.substr(slash + 1));
+  }
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const long k = parts.size() == 2 ? std::strtol(parts[0].c_str(), &end1, 10) : 0;
+  const long n = parts.size() == 2 ? std::strtol(parts[1].c_str(), &end2, 10) : 0;
+  if (parts.size() != 2 || parts[0].empty() || parts[1].empty() || *end1 != '\0' || *end2 != '\0')
+    throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
+  if (n < 1 || n > kMaxShards) throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxShards) + ")");
+  if (k < 1 || k > n) throw UsageError("--shard: K = " + parts[0] + " is outside 1.." + std::to_string(n));
+  shard.index = int(k);
+  shard.count = int(n);
+  shard.sharded = true;
+  return shard;
+}
+
+// The sides of every value, in the order their points are written.
+std::vector<std::string> sweepSides(const json& sweep) {
+  std::vector<std::string> order = {"llvmpipe"};
+  for (const json& m : sweep.at("methods")) order.push_back(m.get<std::string>());
+  if (sweep.at("softpipe").get<bool>()) order.push_back("softpipe");
+  return order;
+}
+
+// Writes sweep.json and sweep.md into `folder`, and the chart unless it is a shard.
+void writeSweep(json sweep, const std::string& folder) {
+  const bool shard = sweep.contains("shard");
+  if (!shard) sweep["first_failure"] = firstFailures(sweep);
+  const std::string jsonPath = (fs::path(folder) / "sweep.json").string();
+  compare::writeOutputFile(jsonPath, sweep.dump(2) + "\n");
+  compare::writeOutputFile((fs::path(folder) / "sweep.md").string(), markdown(sweep));
+  std::vector<std::string> written = {"sweep.json", "sweep.md"};
+  if (!shard) {
+    drawChart(kSweepChartScript, jsonPath, (fs::path(folder) / "sweep").string());
+    written.insert(written.end(), {"sweep.png", "sweep.svg"});
+  }
+  if (sweep.contains("first_failure"))
+    for (const auto& [side, value] : sweep.at("first_failure").items())
+      std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + sixDigits(value.get<double>()))
+                << "\n";
+  for (const std::string& file : written) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
+}
+
+
+}  // namespace cli

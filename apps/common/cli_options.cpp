@@ -20,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxSide = 16384;      // GL_MAX_TEXTURE_SIZE of llvmpipe
-constexpr int kMaxThreads = 1024;    // far above any machine this runs on
 constexpr int kMaxInstances = 200000;
 
 }  // namespace

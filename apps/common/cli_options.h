@@ -22,6 +22,10 @@
 
 namespace cli {
 
+// Limits every command that takes the option checks against.
+constexpr int kMaxSide = 16384;      // --size, each side: GL_MAX_TEXTURE_SIZE of llvmpipe
+constexpr int kMaxThreads = 1024;    // --threads: far above any machine this runs on
+
 // Something the user asked for that cannot be done as asked (exit status 2).
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;

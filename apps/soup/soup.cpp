@@ -24,7 +24,6 @@ using scenes::soup::Soup;
 using scenes::soup::Verdict;
 
 constexpr int kMaxTriangleOption = 1000000;   // a million triangles a soup: far past any use
-constexpr int kMaxThreads = 1024;
 // Backends cannot free meshes (backends/backend.h), so a fresh pair every this many seeds keeps
 // a long run's memory flat.
 constexpr int kSeedsPerBackend = 64;

@@ -21,7 +21,6 @@ using scenes::soup::Soup;
 using scenes::soup::Triangle;
 
 constexpr const char* kFormat = "raster-soup-1";
-constexpr int kMaxSide = 16384;                        // as --size
 constexpr uintmax_t kMaxFileBytes = uintmax_t(1) << 30;  // far above any soup worth replaying
 
 std::string bitsOf(float value) {

@@ -26,7 +26,7 @@
 namespace cli {
 namespace {
 
-using json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;   // keys in the order written
 using raster::FragmentRecord;
 using raster::PassHistory;
 using raster::PixelHistory;
@@ -108,26 +108,26 @@ std::vector<std::string> attachmentNames(const PassHistory& pass, const std::set
 }
 
 // A depth code and the value it stands for, code / (2^bits - 1).
-json depthValue(uint32_t code, int bits) {
-  return json{{"code", code}, {"value", double(code) / double((uint64_t(1) << bits) - 1)}};
+OrderedJson depthValue(uint32_t code, int bits) {
+  return OrderedJson{{"code", code}, {"value", double(code) / double((uint64_t(1) << bits) - 1)}};
 }
 
-json colorValue(const std::array<float, 4>& rgba) { return json::array({rgba[0], rgba[1], rgba[2], rgba[3]}); }
+OrderedJson colorValue(const std::array<float, 4>& rgba) { return OrderedJson::array({rgba[0], rgba[1], rgba[2], rgba[3]}); }
 
-json pixelJson(const PixelValue& value, const PassHistory& pass, const std::vector<std::string>& names) {
-  json out = json::object();
+OrderedJson pixelJson(const PixelValue& value, const PassHistory& pass, const std::vector<std::string>& names) {
+  OrderedJson out = OrderedJson::object();
   for (size_t k = 0; k < value.colors.size(); ++k) out[names[k]] = colorValue(value.colors[k]);
   if (value.hasDepth) out[names.back()] = depthValue(value.depthCode, pass.depth->depthBits());
   return out;
 }
 
 // A target image's value at a pass's probe, in the same form as pixelJson.
-json imageValue(const scenes::ImageData& image, const PassHistory& pass) {
+OrderedJson imageValue(const scenes::ImageData& image, const PassHistory& pass) {
   const int row = pass.flipY ? pass.y : pass.height - 1 - pass.y;   // images are top row first
   if (image.width != pass.width || image.height != pass.height) return nullptr;
   const size_t texel = size_t(row) * size_t(image.width) + size_t(pass.x);
   if (!image.depth.empty()) return depthValue(image.depth[texel], image.depthBits);
-  json rgba = json::array();
+  OrderedJson rgba = OrderedJson::array();
   for (int c = 0; c < 4; ++c) {
     if (!image.rgba8.empty()) rgba.push_back(float(image.rgba8[texel * 4 + size_t(c)]) * float(1.0 / 255.0));
     else rgba.push_back(c < image.channels ? image.floats[texel * size_t(image.channels) + size_t(c)] : 1.0f);
@@ -136,7 +136,7 @@ json imageValue(const scenes::ImageData& image, const PassHistory& pass) {
 }
 
 // Equal values, a NaN equal to a NaN (a NaN pixel is stored and dumped alike).
-bool sameValue(const json& a, const json& b) {
+bool sameValue(const OrderedJson& a, const OrderedJson& b) {
   if (a.is_number_float() || b.is_number_float()) {
     if (!a.is_number() || !b.is_number()) return false;
     const double x = a.get<double>(), y = b.get<double>();
@@ -164,9 +164,9 @@ std::string formatName(raster::TexelFormat format) {
   return "?";
 }
 
-json difference(const json& ours, const json& reference) {
-  if (ours.is_object()) return json::array({double(ours["code"].get<uint64_t>()) - double(reference["code"].get<uint64_t>())});
-  json out = json::array();
+OrderedJson difference(const OrderedJson& ours, const OrderedJson& reference) {
+  if (ours.is_object()) return OrderedJson::array({double(ours["code"].get<uint64_t>()) - double(reference["code"].get<uint64_t>())});
+  OrderedJson out = OrderedJson::array();
   for (size_t c = 0; c < ours.size(); ++c) out.push_back(ours[c].get<double>() - reference[c].get<double>());
   return out;
 }
@@ -206,9 +206,9 @@ ShaderNames shaderNames(const std::string& program, size_t varyingFloats, size_t
 }
 
 // Inputs grouped back into the GLSL's vectors: {"v_uv": [x, y], ...}.
-json inputsJson(const FragmentRecord& fragment, const ShaderNames& names) {
-  json inputs = json::object();
-  inputs["gl_FragCoord"] = json::array({fragment.fragCoord[0], fragment.fragCoord[1], fragment.fragCoord[2], fragment.fragCoord[3]});
+OrderedJson inputsJson(const FragmentRecord& fragment, const ShaderNames& names) {
+  OrderedJson inputs = OrderedJson::object();
+  inputs["gl_FragCoord"] = OrderedJson::array({fragment.fragCoord[0], fragment.fragCoord[1], fragment.fragCoord[2], fragment.fragCoord[3]});
   for (size_t v = 0; v < fragment.varyings.size(); ++v) {
     const std::string& name = names.inputs[v];
     const size_t dot = name.find('.');
@@ -219,43 +219,43 @@ json inputsJson(const FragmentRecord& fragment, const ShaderNames& names) {
   return inputs;
 }
 
-json sampleJson(const raster::sampling::SampleRecord& sample) {
-  json texels = json::array();
+OrderedJson sampleJson(const raster::sampling::SampleRecord& sample) {
+  OrderedJson texels = OrderedJson::array();
   for (int k = 0; k < sample.texelCount; ++k) {
     const auto& texel = sample.texels[k];
-    json t{{"x", texel.x}, {"y", texel.y}};
+    OrderedJson t{{"x", texel.x}, {"y", texel.y}};
     if (sample.compare) t["value"] = texel.value[0];
-    else t["value"] = json::array({texel.value[0], texel.value[1], texel.value[2], texel.value[3]});
+    else t["value"] = OrderedJson::array({texel.value[0], texel.value[1], texel.value[2], texel.value[3]});
     t["weight"] = texel.weight;
     if (sample.compare) t["compare"] = texel.compare == 1;
     texels.push_back(t);
   }
-  json out{{"texture", textureName(sample.texture)},
+  OrderedJson out{{"texture", textureName(sample.texture)},
            {"kind", sample.compare ? "compare" : "color"},
-           {"uv", json::array({sample.s, sample.t})}};
+           {"uv", OrderedJson::array({sample.s, sample.t})}};
   if (sample.compare) out["ref"] = sample.ref;
   out["lod"] = 0;   // no texture of the scenes has mipmaps: every lookup reads level 0
   out["filter"] = sample.filter;
-  out["weights"] = json::array({sample.weightS, sample.weightT});
+  out["weights"] = OrderedJson::array({sample.weightS, sample.weightT});
   out["texels"] = texels;
   if (sample.compare) {
     out["result"] = sample.result[0];
     out["explained"] = sample.explained[0];
   } else {
-    out["result"] = json::array({sample.result[0], sample.result[1], sample.result[2], sample.result[3]});
-    out["explained"] = json::array({sample.explained[0], sample.explained[1], sample.explained[2], sample.explained[3]});
+    out["result"] = OrderedJson::array({sample.result[0], sample.result[1], sample.result[2], sample.result[3]});
+    out["explained"] = OrderedJson::array({sample.explained[0], sample.explained[1], sample.explained[2], sample.explained[3]});
   }
   return out;
 }
 
-json fragmentJson(const FragmentRecord& f, const PassHistory& pass, const std::vector<std::string>& names,
+OrderedJson fragmentJson(const FragmentRecord& f, const PassHistory& pass, const std::vector<std::string>& names,
                   std::map<std::string, ShaderNames>& shaderNameCache) {
   const std::string& program = pass.programs[f.draw];
-  json out{{"draw", f.draw}, {"program", program}, {"instance", f.instance}, {"primitive", f.primitive},
+  OrderedJson out{{"draw", f.draw}, {"program", program}, {"instance", f.instance}, {"primitive", f.primitive},
            {"clipped", f.clipped}, {"front_facing", f.frontFacing},
-           {"barycentrics", json::array({f.barycentric[0], f.barycentric[1], f.barycentric[2]})},
+           {"barycentrics", OrderedJson::array({f.barycentric[0], f.barycentric[1], f.barycentric[2]})},
            {"covered", f.covered}, {"depth", f.z}};
-  out["depth_code"] = pass.depth ? json(f.depthCode) : json(nullptr);
+  out["depth_code"] = pass.depth ? OrderedJson(f.depthCode) : OrderedJson(nullptr);
   out["depth_test"] = !f.depthTested ? "off" : f.depthPassed ? "passed" : "failed";
   out["early"] = f.earlyDepth;
   out["region_fill"] = f.regionFill;
@@ -268,10 +268,10 @@ json fragmentJson(const FragmentRecord& f, const PassHistory& pass, const std::v
     if (cached == shaderNameCache.end())
       cached = shaderNameCache.emplace(program, shaderNames(program, f.varyings.size(), f.outputs.size())).first;
     out["inputs"] = inputsJson(f, cached->second);
-    json outputs = json::object();
+    OrderedJson outputs = OrderedJson::object();
     for (size_t k = 0; k < f.outputs.size(); ++k) outputs[cached->second.outputs[k]] = colorValue(f.outputs[k]);
     out["outputs"] = outputs;
-    json samples = json::array();
+    OrderedJson samples = OrderedJson::array();
     for (const auto& sample : f.samples) samples.push_back(sampleJson(sample));
     out["samples"] = samples;
   }
@@ -280,10 +280,10 @@ json fragmentJson(const FragmentRecord& f, const PassHistory& pass, const std::v
   return out;
 }
 
-json clearJson(const raster::ClearValues& clear) {
+OrderedJson clearJson(const raster::ClearValues& clear) {
   if (!clear.color && !clear.depth) return nullptr;
-  json out = json::object();
-  if (clear.color) out["color"] = json::array({clear.colorValue[0], clear.colorValue[1], clear.colorValue[2], clear.colorValue[3]});
+  OrderedJson out = OrderedJson::object();
+  if (clear.color) out["color"] = OrderedJson::array({clear.colorValue[0], clear.colorValue[1], clear.colorValue[2], clear.colorValue[3]});
   if (clear.depth) out["depth"] = clear.depthValue;
   return out;
 }
@@ -366,30 +366,30 @@ int runTrace(const TraceArgs& args) {
   for (const PassHistory& pass : history.passes)
     for (const std::string& name : attachmentNames(pass, targetNames)) lastWriter[name] = pass.pass;
 
-  json trace{{"scene", frame.scene}, {"pixel", json::array({pixelX, pixelY})},
-             {"size", json::array({frame.width, frame.height})}, {"time", frame.time}};
-  json methodNames = json::object();
+  OrderedJson trace{{"scene", frame.scene}, {"pixel", OrderedJson::array({pixelX, pixelY})},
+             {"size", OrderedJson::array({frame.width, frame.height})}, {"time", frame.time}};
+  OrderedJson methodNames = OrderedJson::object();
   for (const auto& [step, name] : raster::methodNames(frame.methods)) methodNames[step] = name;
   trace["methods"] = methodNames;
   bool allMatch = true;
-  json passes = json::array();
+  OrderedJson passes = OrderedJson::array();
   std::map<std::string, ShaderNames> shaderNameCache;
   for (const PassHistory& pass : history.passes) {
     if (!pass.probed) continue;
     const std::vector<std::string> names = attachmentNames(pass, targetNames);
     const int imageRow = pass.flipY ? pass.y : pass.height - 1 - pass.y;
-    json formats = json::array();
+    OrderedJson formats = OrderedJson::array();
     for (const Texture* color : pass.colors) formats.push_back(formatName(color->format));
     if (pass.depth) formats.push_back(formatName(pass.depth->format));
-    json p{{"pass", pass.pass}, {"label", pass.label}, {"programs", pass.programs}, {"targets", names}, {"formats", formats},
-           {"size", json::array({pass.width, pass.height})}, {"pixel", json::array({pass.x, imageRow})},
-           {"texel", json::array({pass.x, pass.y})}, {"why", probes[pass.pass].why}, {"clear", clearJson(pass.clear)}};
-    json fragments = json::array();
+    OrderedJson p{{"pass", pass.pass}, {"label", pass.label}, {"programs", pass.programs}, {"targets", names}, {"formats", formats},
+           {"size", OrderedJson::array({pass.width, pass.height})}, {"pixel", OrderedJson::array({pass.x, imageRow})},
+           {"texel", OrderedJson::array({pass.x, pass.y})}, {"why", probes[pass.pass].why}, {"clear", clearJson(pass.clear)}};
+    OrderedJson fragments = OrderedJson::array();
     for (const FragmentRecord& f : pass.fragments) fragments.push_back(fragmentJson(f, pass, names, shaderNameCache));
     p["fragments"] = fragments;
     p["start"] = pixelJson(pass.afterClear, pass, names);
     p["stored"] = pixelJson(pass.stored, pass, names);
-    json dump = json::object(), matches = json::object(), ref = json::object(), diff = json::object();
+    OrderedJson dump = OrderedJson::object(), matches = OrderedJson::object(), ref = OrderedJson::object(), diff = OrderedJson::object();
     for (const std::string& name : names) {
       if (lastWriter[name] != pass.pass) continue;   // a later pass overwrote what the dump holds
       if (dumpAt.count(name)) {
@@ -404,8 +404,8 @@ int runTrace(const TraceArgs& args) {
     }
     p["dump"] = dump;
     p["matches_dump"] = matches;
-    p["reference"] = reference ? ref : json(nullptr);
-    p["difference"] = reference ? diff : json(nullptr);
+    p["reference"] = reference ? ref : OrderedJson(nullptr);
+    p["difference"] = reference ? diff : OrderedJson(nullptr);
     passes.push_back(p);
   }
   trace["stored_matches_dumps"] = allMatch;

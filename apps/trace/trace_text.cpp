@@ -7,23 +7,23 @@
 namespace cli {
 namespace {
 
-using json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;   // keys in the order written
 
-std::string number(const json& v) {
+std::string number(const OrderedJson& v) {
   if (v.is_null()) return "NaN";   // JSON has no NaN: nlohmann writes it as null
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", v.get<double>());
   return text;
 }
 
-std::string tuple(const json& values) {
+std::string tuple(const OrderedJson& values) {
   std::string text = "(";
   for (size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + number(values[i]);
   return text + ")";
 }
 
 // A stored value: a colour (with its bytes for RGBA8) or a depth code and its value.
-std::string value(const json& v, const std::string& format) {
+std::string value(const OrderedJson& v, const std::string& format) {
   if (v.is_null()) return "(not in this image)";
   if (v.is_object()) return "z " + number(v["value"]) + " (code " + std::to_string(v["code"].get<uint64_t>()) + ")";
   std::string text = tuple(v);
@@ -39,7 +39,7 @@ std::string value(const json& v, const std::string& format) {
 }
 
 // "final (..), depth (..)" of a {target: value} object.
-std::string values(const json& byTarget, const json& pass) {
+std::string values(const OrderedJson& byTarget, const OrderedJson& pass) {
   std::string text;
   for (auto it = byTarget.begin(); it != byTarget.end(); ++it) {
     std::string format;
@@ -50,11 +50,11 @@ std::string values(const json& byTarget, const json& pass) {
   return text.empty() ? "-" : text;
 }
 
-void printLookup(std::ostream& out, const json& s) {
+void printLookup(std::ostream& out, const OrderedJson& s) {
   out << "      " << s["texture"].get<std::string>() << " at " << tuple(s["uv"]);
   if (s["kind"] == "compare") out << " ref " << number(s["ref"]);
   out << ", " << s["filter"].get<std::string>() << ":";
-  for (const json& t : s["texels"]) {
+  for (const OrderedJson& t : s["texels"]) {
     out << " [" << t["x"].get<int>() << "," << t["y"].get<int>() << "] ";
     out << (t["value"].is_array() ? tuple(t["value"]) : number(t["value"]));
     if (t.contains("compare")) out << (t["compare"].get<bool>() ? " pass" : " fail");
@@ -63,7 +63,7 @@ void printLookup(std::ostream& out, const json& s) {
   out << " -> " << (s["result"].is_array() ? tuple(s["result"]) : number(s["result"])) << "\n";
 }
 
-void printFragment(std::ostream& out, const json& f, const json& pass, size_t index) {
+void printFragment(std::ostream& out, const OrderedJson& f, const OrderedJson& pass, size_t index) {
   out << "  #" << index << " draw " << f["draw"].get<int>() << " (" << f["program"].get<std::string>() << "), instance "
       << f["instance"].get<int>() << ", primitive " << f["primitive"].get<int>() << (f["clipped"].get<bool>() ? " (clipped)" : "")
       << (f["front_facing"].get<bool>() ? ", front" : ", back") << " facing, barycentrics " << tuple(f["barycentrics"]) << "\n";
@@ -83,7 +83,7 @@ void printFragment(std::ostream& out, const json& f, const json& pass, size_t in
       first = false;
     }
     out << "\n";
-    const json& samples = f["samples"];
+    const OrderedJson& samples = f["samples"];
     if (!samples.empty()) out << "     " << samples.size() << (samples.size() == 1 ? " lookup:\n" : " lookups:\n");
     for (size_t i = 0; i < samples.size() && i < kLookupsPrinted; ++i) printLookup(out, samples[i]);
     if (samples.size() > kLookupsPrinted) out << "      ... and " << samples.size() - kLookupsPrinted << " more (--json has every one)\n";
@@ -97,7 +97,7 @@ void printFragment(std::ostream& out, const json& f, const json& pass, size_t in
 
 }  // namespace
 
-void printTrace(std::ostream& out, const json& trace) {
+void printTrace(std::ostream& out, const OrderedJson& trace) {
   out << trace["scene"].get<std::string>() << ", pixel (" << trace["pixel"][0].get<int>() << ", " << trace["pixel"][1].get<int>()
       << ") of the " << trace["size"][0].get<int>() << "x" << trace["size"][1].get<int>() << " final image (row 0 at the top), t="
       << number(trace["time"]) << "\n";
@@ -106,12 +106,12 @@ void printTrace(std::ostream& out, const json& trace) {
     methods += (methods.empty() ? "" : ", ") + it.key() + "=" + it.value().get<std::string>();
   out << "methods: " << methods << "\n";
   out << trace["passes"].size() << " passes traced, in the order they ran\n";
-  for (const json& pass : trace["passes"]) {
+  for (const OrderedJson& pass : trace["passes"]) {
     std::string targets;
     for (size_t k = 0; k < pass["targets"].size(); ++k)
       targets += (k ? ", " : "") + pass["targets"][k].get<std::string>() + " " + pass["formats"][k].get<std::string>();
     std::string programs;
-    for (const json& p : pass["programs"]) programs += (programs.empty() ? "" : ", ") + p.get<std::string>();
+    for (const OrderedJson& p : pass["programs"]) programs += (programs.empty() ? "" : ", ") + p.get<std::string>();
     out << "\npass " << pass["pass"].get<int>() << (pass["label"].get<std::string>().empty() ? "" : " \"" + pass["label"].get<std::string>() + "\"")
         << ": " << (programs.empty() ? "no draws" : programs) << " into " << targets << " (" << pass["size"][0].get<int>() << "x"
         << pass["size"][1].get<int>() << "), pixel (" << pass["pixel"][0].get<int>() << ", " << pass["pixel"][1].get<int>()
@@ -124,13 +124,13 @@ void printTrace(std::ostream& out, const json& trace) {
       out << "\n";
     }
     out << "  start:  " << values(pass["start"], pass) << "\n";
-    const json& fragments = pass["fragments"];
+    const OrderedJson& fragments = pass["fragments"];
     if (fragments.empty()) out << "  no fragment reached this pixel\n";
     for (size_t i = 0; i < fragments.size(); ++i) printFragment(out, fragments[i], pass, i);
     out << "  stored: " << values(pass["stored"], pass) << "\n";
     for (auto it = pass["matches_dump"].begin(); it != pass["matches_dump"].end(); ++it)
       out << "          " << it.key() << (it.value().get<bool>() ? " equals the frame's dump of it" : " DIFFERS from the frame's dump: "
-                                                                    + values(json{{it.key(), pass["dump"][it.key()]}}, pass)) << "\n";
+                                                                    + values(OrderedJson{{it.key(), pass["dump"][it.key()]}}, pass)) << "\n";
     if (!pass["reference"].is_null() && !pass["reference"].empty()) {
       out << "  GL:     " << values(pass["reference"], pass) << "\n";
       for (auto it = pass["difference"].begin(); it != pass["difference"].end(); ++it)

@@ -49,15 +49,6 @@ ImageData rgba8Image(int width, int height, uint8_t value) {
   return image;
 }
 
-ImageData halfImage(std::vector<float> rgba) {
-  ImageData image;
-  image.width = int(rgba.size() / 4);
-  image.height = 1;
-  image.format = TexelFormat::RGBA16F;
-  image.floats = std::move(rgba);
-  return image;
-}
-
 ImageData depthImage(int width, int height, std::vector<uint32_t> codes) {
   ImageData image;
   image.width = width;

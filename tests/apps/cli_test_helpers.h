@@ -12,7 +12,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "backends/backend.h"
 #include "tests/temp_folder.h"
 
 namespace cli_test {
@@ -23,6 +26,16 @@ namespace fs = std::filesystem;
 struct TempFolder : testing_support::TempFolder {
   TempFolder() : testing_support::TempFolder("raster-cli-test") {}
 };
+
+// A one-row RGBA16F image of these values, four to a pixel (for the float comparisons).
+inline scenes::ImageData halfImage(std::vector<float> rgba) {
+  scenes::ImageData image;
+  image.width = int(rgba.size() / 4);
+  image.height = 1;
+  image.format = scenes::TexelFormat::RGBA16F;
+  image.floats = std::move(rgba);
+  return image;
+}
 
 struct RunResult {
   int status = -1;   // the exit status, or -1 when a signal ended it (then `signal` says which)

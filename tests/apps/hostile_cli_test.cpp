@@ -13,15 +13,6 @@ namespace {
 
 using namespace cli_test;
 
-scenes::ImageData halfImage(std::vector<float> rgba) {
-  scenes::ImageData image;
-  image.width = int(rgba.size() / 4);
-  image.height = 1;
-  image.format = scenes::TexelFormat::RGBA16F;
-  image.floats = std::move(rgba);
-  return image;
-}
-
 void expectBadInput(const std::string& script, const std::string& needle) {
   TempFolder temp;
   const fs::path cwd = temp.path / "cwd";

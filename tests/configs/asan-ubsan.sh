@@ -7,15 +7,17 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 # -O1 and line tables only: the sanitizers' own advice, and half the compile time of -O2 -g.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRASTER_SANITIZE=address,undefined > /dev/null
-cmake --build build-asan -j"$(nproc)"
+# raster_tests brings the programs its suites run (raster, raster_extra_scene); the
+# microbenchmarks (raster_micro) are measuring code, smoke-tested in the other builds.
+cmake --build build-asan -j"$(nproc)" --target raster_tests
 # (detect_stack_use_after_return stays off: its fake stack frames do not keep the 32-byte
 # alignment of the lane types' locals, and the first aligned AVX store faults.)
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 # Both cores: the suites are independent (development runs them two at a time too).
-# Left out: the suites of the Python and Chromium harnesses (goal_runs, dask_sweep,
-# report_chromium). What they run of this program (bench --passes, sweep shards, report)
-# the cli, sweep and report suites run here too; the rest is Python and Chromium, which
-# these sanitizers do not instrument.
-ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(goal_runs|dask_sweep|report_chromium)$'
+# Left out: micro_smoke (not built here), and the suites of the Python and Chromium
+# harnesses (goal_runs, dask_sweep, report_chromium). What those run of this program (bench
+# --passes, sweep shards, report) the cli, sweep and report suites run here too; the rest is
+# Python and Chromium, which these sanitizers do not instrument.
+ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(micro_smoke|goal_runs|dask_sweep|report_chromium)$'

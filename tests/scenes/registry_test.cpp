@@ -158,7 +158,7 @@ TEST_SUITE("registry") {
   TEST_CASE("the suites that cover every scene take a new row") {
     cli_test::TempFolder temp;
     const std::string suites =
-        " --test-suite=determinism,views,trace --test-case='every scene*,tracing changes no byte*,*every scene*' --no-intro";
+        " --test-suite=determinism,determinism_paths,views,trace --test-case='every scene*,tracing changes no byte*,*every scene*' --no-intro";
     const std::string self = shellQuote(fs::read_symlink("/proc/self/exe").string());
     const RunResult with = cli_test::runShell(temp.path, std::string("RASTER_TEST_SCENE_ALIAS=") + kExtra + "=shadow RASTER_TEST_SCENES=" +
                                                              kExtra + " " + self + suites);

@@ -2,6 +2,7 @@
 // folder (scenes/NAME/). Adding a scene adds its line here (CONTRIBUTING.md).
 #include "scenes/deferred/deferred_scene.h"
 #include "scenes/hdr/hdr_scene.h"
+#include "scenes/pbr/pbr_scene.h"
 #include "scenes/registry.h"
 #include "scenes/shadow/shadow_scene.h"
 #include "scenes/soup/soup_check.h"
@@ -13,6 +14,7 @@ std::vector<SceneEntry> builtinScenes() {
       shadowScene(),     // scenes/shadow/
       deferredScene(),   // scenes/deferred/
       hdrScene(),        // scenes/hdr/
+      pbrScene(),        // scenes/pbr/
   };
 }
 

@@ -42,6 +42,21 @@ void assign(float& m, const UniformValue& v, const std::string& n) { assignUnifo
 void assign(int& m, const UniformValue& v, const std::string& n) { assignUniform(m, v, n); }
 void assign(raster::Sampler2D& m, const UniformValue& v, const std::string& n) { assignSampler(m, v, n); }
 void assign(raster::Sampler2DShadow& m, const UniformValue& v, const std::string& n) { assignSampler(m, v, n); }
+ElementName splitElementName(const std::string& name) {
+  const size_t open = name.find('[');
+  if (open == std::string::npos) return {name, kNotAnElement};
+  ElementName element{name.substr(0, open), kNotAnElement - 1};
+  const std::string digits = name.substr(open + 1);
+  if (digits.size() < 2 || digits.back() != ']' || digits.size() > 10) return element;
+  size_t index = 0;
+  for (size_t i = 0; i + 1 < digits.size(); ++i) {
+    if (digits[i] < '0' || digits[i] > '9') return element;
+    index = index * 10 + size_t(digits[i] - '0');
+  }
+  element.index = index;
+  return element;
+}
+
 void resolve(raster::Sampler2D& s, const TextureUnits& units) { resolveSampler(s, units); }
 void resolve(raster::Sampler2DShadow& s, const TextureUnits& units) { resolveSampler(s, units); }
 

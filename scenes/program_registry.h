@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,16 @@ void assign(int& member, const UniformValue& value, const std::string& name);
 void assign(raster::Sampler2D& member, const UniformValue& value, const std::string& name);
 void assign(raster::Sampler2DShadow& member, const UniformValue& value, const std::string& name);
 
+// "u_samples[12]" as its array's name and the index 12; a name without brackets has the index
+// kNotAnElement (an array's element 0, a plain uniform itself); a malformed index, a
+// name that is no uniform (SIZE_MAX - 1).
+constexpr size_t kNotAnElement = ~size_t(0);
+struct ElementName {
+  std::string base;
+  size_t index = kNotAnElement;
+};
+ElementName splitElementName(const std::string& name);
+
 // A sampler's unit resolved to the texture bound there (throws when none is); other
 // uniforms are left as they are.
 template <class T>
@@ -56,12 +67,28 @@ void resolve(T&, const TextureUnits&) {}
 void resolve(raster::Sampler2D& sampler, const TextureUnits& units);
 void resolve(raster::Sampler2DShadow& sampler, const TextureUnits& units);
 
+// A uniform array (GLSL `uniform vec3 u_samples[64];`, a std::array member): GL sets one
+// element by the name "u_samples[i]", and the plain name is element 0. An index past the
+// end is ignored, as GL ignores a name that has no location.
+template <class T, size_t N>
+void assign(std::array<T, N>& member, size_t index, const UniformValue& value, const std::string& name) {
+  if (index == kNotAnElement) index = 0;
+  if (index < N) assign(member[index], value, name);
+}
+// A uniform that is not an array has no element names: "u_time[0]" is ignored, as in GL.
+template <class T>
+void assign(T& member, size_t index, const UniformValue& value, const std::string& name) {
+  if (index == kNotAnElement) assign(member, value, name);
+}
+
 template <class Program>
 class BoundProgramOf final : public BoundProgram {
  public:
   void setUniform(const std::string& name, const UniformValue& value) override {
-    std::apply([&](const auto&... entry) { ((entry.name == name ? assign(uniforms_.*entry.member, value, name) : void()), ...); },
-               Program::kUniformTable);
+    const ElementName element = splitElementName(name);
+    std::apply([&](const auto&... entry) {
+      ((entry.name == element.base ? assign(uniforms_.*entry.member, element.index, value, name) : void()), ...);
+    }, Program::kUniformTable);
   }
   std::unique_ptr<raster::ShaderInstance> instantiate(const TextureUnits& units) const override {
     typename Program::Uniforms snapshot = uniforms_;

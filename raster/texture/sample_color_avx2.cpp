@@ -389,7 +389,21 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
     sampleHalfNearest<N>(texture, sv, tv, liveBits, out);
   } else if (texture.format == TexelFormat::RGBA16F) {
     sampleHalf<N>(texture, sv, tv, out);
-  } else {   // RGBA32F targets are sampled only by tests: the scalar reference per lane
+  } else if ((texture.format == TexelFormat::Depth24 || texture.format == TexelFormat::Depth16) &&
+             texture.sampler.filter == Filter::Nearest) {
+    // A depth texture through sampler2D (the pbr scene's position reconstruction and SSAO):
+    // code * depthCodeScale in r, (0, 0, 1) in gba, as sample_color.cpp's depthTexelChannel.
+    const int* codes = reinterpret_cast<const int*>(texture.depth.data());
+    const __m256 scale = splat(depthCodeScale(texture));
+    for (int h = 0; h < N; ++h) {
+      const __m256i x = wrapNearest(sv[h], texture.width, texture.sampler.wrapS, false);
+      const __m256i y = wrapNearest(tv[h], texture.height, texture.sampler.wrapT, false);
+      const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(texture.width)), x);
+      out[h][0] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_i32gather_epi32(codes, index, 4)), scale));
+      out[h][1] = out[h][2] = simd::Float8(0.0f);
+      out[h][3] = simd::Float8(1.0f);
+    }
+  } else {   // RGBA32F targets are sampled only by tests, and depth LINEAR: the scalar reference per lane
     for (int h = 0; h < N; ++h) {
       alignas(32) float ss[8], ts[8], planes[4][8];
       s[h].store(ss);

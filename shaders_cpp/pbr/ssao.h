@@ -1,0 +1,115 @@
+// C++ port of post.vert / ssao.frag (seed 004, SSAO pass), line by line; the sample loop is
+// split in two, with the same operations per sample (see fragment()).
+#pragma once
+
+#include <array>
+
+#include "raster/shader/program.h"
+#include "scenes/program_entry.h"
+#include "shaders_cpp/pbr/post.h"
+
+namespace shaders::pbr {
+
+using namespace raster::glsl;
+
+struct SsaoPass : PostProgram {
+  static constexpr const char* kName = "pbr/post+ssao";
+  static constexpr int kColorOutputs = 1;
+  // Its 64 samples a pixel land up to uRadius away in view space, many pixels on the screen:
+  // the pipeline shades its tiles in an order that keeps neighbours together.
+  static constexpr bool kSamplesAroundPixel = true;
+  static constexpr int KERNEL_SIZE = 64;
+  struct Uniforms {
+    std::array<glm::vec3, KERNEL_SIZE> uSamples{};
+    raster::Sampler2D uDepth, uNormal, uNoise;
+    glm::mat4 uProjection{1.0f};
+    glm::mat4 uInvProjection{1.0f};
+    glm::mat4 uView{1.0f};
+    glm::vec2 noiseScale{1.0f};
+    float uRadius = 0.5f;
+    float uBias = 0.025f;
+  };
+  static constexpr auto kUniformTable = std::tuple{
+      raster::uniform("uSamples", &Uniforms::uSamples),
+      raster::uniform("uDepth", &Uniforms::uDepth),
+      raster::uniform("uNormal", &Uniforms::uNormal),
+      raster::uniform("uNoise", &Uniforms::uNoise),
+      raster::uniform("uProjection", &Uniforms::uProjection),
+      raster::uniform("uInvProjection", &Uniforms::uInvProjection),
+      raster::uniform("uView", &Uniforms::uView),
+      raster::uniform("noiseScale", &Uniforms::noiseScale),
+      raster::uniform("uRadius", &Uniforms::uRadius),
+      raster::uniform("uBias", &Uniforms::uBias),
+  };
+
+  // ReconstructViewPos(uv).z, the only component the shader reads of it (Mesa drops the
+  // rest): row z of uInvProjection * clip over its w, clip = (uv * 2 - 1, depth * 2 - 1, 1);
+  // the column of w = 1 is added as it is (c3 * 1.0 folded).
+  template <class F>
+  static vec2<F> clipXY(vec2<F> uv) {
+    return uv * F(2.0f) - vec2<F>(F(1.0f));
+  }
+  template <class F>
+  static F ReconstructViewZ(const Uniforms& u, vec2<F> uv) {
+    const F depth = raster::texture(u.uDepth, uv).x;
+    const vec2<F> xy = clipXY(uv);
+    const F z = depth * F(2.0f) - F(1.0f);
+    const glm::mat4& m = u.uInvProjection;
+    const F viewZ = ((F(m[0][2]) * xy.x + F(m[1][2]) * xy.y) + F(m[2][2]) * z) + F(m[3][2]);
+    const F viewW = ((F(m[0][3]) * xy.x + F(m[1][3]) * xy.y) + F(m[2][3]) * z) + F(m[3][3]);
+    return viewZ / viewW;
+  }
+
+  // GLSL smoothstep(0.0, 1.0, x): (x - 0) / (1 - 0) folds to x, then t * t * (3 - 2 * t).
+  template <class F>
+  static F smoothstep01(F x) {
+    const F t = clamp(x, F(0.0f), F(1.0f));
+    return t * t * (F(3.0f) - F(2.0f) * t);
+  }
+
+  template <class F>
+  static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
+                       raster::FragmentOutput<F>& out) {
+    const vec2<F> uv = in.fragUV;
+    const vec3<F> worldNormal = raster::texture(u.uNormal, uv).xyz() * F(2.0f) - vec3<F>(F(1.0f));
+    // (uView * vec4(worldNormal, 0.0)).xyz: the w column's c3 * 0.0 and its + 0.0 fold away.
+    const glm::mat4& v = u.uView;
+    auto row = [&](int r) { return (F(v[0][r]) * worldNormal.x + F(v[1][r]) * worldNormal.y) + F(v[2][r]) * worldNormal.z; };
+    const vec3<F> normal = normalize(vec3<F>(row(0), row(1), row(2)));
+    const vec3<F> randVec = normalize(raster::texture(u.uNoise, uv * u.noiseScale).xyz());
+    // Gram-Schmidt: build TBN from noise + normal
+    const vec3<F> tangent = normalize(randVec - normal * dot(randVec, normal));
+    const vec3<F> bitangent = cross(normal, tangent);
+    // mat3 TBN = mat3(tangent, bitangent, normal): its columns.
+    F occlusion = F(0.0f);
+    // fragPos = ReconstructViewPos(uv): x and y are only read through samplePos, z also in
+    // the range check.
+    const F depth = raster::texture(u.uDepth, uv).x;
+    const vec4<F> fragClip = vec4<F>(clipXY(uv).x, clipXY(uv).y, depth * F(2.0f) - F(1.0f), F(1.0f));
+    const vec4<F> fragView = u.uInvProjection * fragClip;
+    const vec3<F> fragPos = fragView.xyz() / fragView.w;
+    const glm::mat4& p = u.uProjection;
+    for (int i = 0; i < KERNEL_SIZE; ++i) {
+      const glm::vec3 s = u.uSamples[size_t(i)];
+      // TBN * uSamples[i]: column by column (docs/porting.md, row mat-vec), then * uRadius.
+      const vec3<F> rotated = (tangent * F(s.x) + bitangent * F(s.y)) + normal * F(s.z);
+      const vec3<F> samplePos = fragPos + rotated * F(u.uRadius);
+      F ox = ((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]);
+      F oy = ((F(p[0][1]) * samplePos.x + F(p[1][1]) * samplePos.y) + F(p[2][1]) * samplePos.z) + F(p[3][1]);
+      const F ow = ((F(p[0][3]) * samplePos.x + F(p[1][3]) * samplePos.y) + F(p[2][3]) * samplePos.z) + F(p[3][3]);
+      ox = ox / ow;
+      oy = oy / ow;
+      const vec2<F> offset = vec2<F>(ox * F(0.5f) + F(0.5f), oy * F(0.5f) + F(0.5f));
+      const F sampleDepth = ReconstructViewZ(u, offset);
+      const F rangeCheck = smoothstep01(F(u.uRadius) / abs(fragPos.z - sampleDepth));
+      occlusion = occlusion + select(sampleDepth >= samplePos.z + F(u.uBias), rangeCheck, F(0.0f));
+    }
+    const F ao = F(1.0f) - occlusion / F(float(KERNEL_SIZE));
+    out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));
+  }
+};
+
+// This port's row in the program registry, defined in ssao.cpp.
+scenes::ProgramEntry ssaoProgram();
+
+}  // namespace shaders::pbr

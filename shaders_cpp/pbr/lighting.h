@@ -92,7 +92,10 @@ struct LightingPass : PostProgram {
   static F D_GGX(F NdotH, F roughness) {
     const F a = roughness * roughness;
     const F a2 = a * a;
-    const F d = NdotH * NdotH * (a2 - F(1.0f)) + F(1.0f);
+    // NdotH * NdotH * (a2 - 1.0) + 1.0, distributed by Mesa's NIR into (1 - n2) + a2 * n2
+    // (read in its dump, docs/porting.md section 3; row distribute-const in section 1).
+    const F NdotH2 = NdotH * NdotH;
+    const F d = (F(1.0f) - NdotH2) + a2 * NdotH2;
     return a2 / (F(PI) * d * d);
   }
 
@@ -166,7 +169,10 @@ struct LightingPass : PostProgram {
       const F ao = mra.z * raster::texture(u.uSSAO, uv).x;
       const vec3<F> emissive = emissiveFlag.xyz();
       const vec3<F> V = normalize(u.uCamPos - P);
-      const vec3<F> F0 = mix(vec3<F>(F(0.04f)), albedo, vec3<F>(metallic));
+      // mix(vec3(0.04), albedo, metallic): the three components share (x, t), so
+      // nir_lower_flrp takes the strict form x * (1 - t) + y * t (docs/porting.md, row mix).
+      const F F0_base = F(0.04f) * (F(1.0f) - metallic);
+      const vec3<F> F0 = vec3<F>(F0_base) + albedo * metallic;
 
       const F viewDepth = -(u.uView * vec4<F>(P, F(1.0f))).z;
       // GetCascadeIndex(viewDepth), its loop unrolled: the first split above viewDepth.
@@ -185,9 +191,12 @@ struct LightingPass : PostProgram {
       vec3<F> Lo = DirectLight(N, V, vec3<F>(u.uSunDir), u.uSunColor * vec3<F>(shadow), albedo, metallic, roughness, F0);
       for (int i = 0; i < NUM_POINT_LIGHTS; ++i) {
         const vec3<F> toLight = u.uPointPos[size_t(i)] - P;
-        const F dist = length(toLight);
+        const F dist2 = dot(toLight, toLight);
+        const F dist = sqrt(dist2);   // length(toLight)
         const vec3<F> L = toLight / dist;
-        Lo = Lo + DirectLight(N, V, L, vec3<F>(u.uPointColor[size_t(i)]) / (dist * dist), albedo, metallic, roughness, F0);
+        // dist * dist is sqrt(x) * sqrt(x), which Mesa's NIR folds back to x, the dot itself
+        // (nir_opt_algebraic, fmul(fsqrt(a), fsqrt(a)) -> a; row sqrt-square).
+        Lo = Lo + DirectLight(N, V, L, vec3<F>(u.uPointColor[size_t(i)]) / dist2, albedo, metallic, roughness, F0);
       }
       const vec3<F> ambient = vec3<F>(F(0.03f)) * albedo * ao;
       color = select(geometry, ambient + Lo + emissive, color);

@@ -93,7 +93,7 @@ struct LightingPass : PostProgram {
     const F a = roughness * roughness;
     const F a2 = a * a;
     // NdotH * NdotH * (a2 - 1.0) + 1.0, distributed by Mesa's NIR into (1 - n2) + a2 * n2
-    // (read in its dump, docs/porting.md section 3; row distribute-const in section 1).
+    // (docs/porting.md, row lerp-detect; read in Mesa's dump, section 3).
     const F NdotH2 = NdotH * NdotH;
     const F d = (F(1.0f) - NdotH2) + a2 * NdotH2;
     return a2 / (F(PI) * d * d);
@@ -195,7 +195,7 @@ struct LightingPass : PostProgram {
         const F dist = sqrt(dist2);   // length(toLight)
         const vec3<F> L = toLight / dist;
         // dist * dist is sqrt(x) * sqrt(x), which Mesa's NIR folds back to x, the dot itself
-        // (nir_opt_algebraic, fmul(fsqrt(a), fsqrt(a)) -> a; row sqrt-square).
+        // (docs/porting.md, row sqrt-square).
         Lo = Lo + DirectLight(N, V, L, vec3<F>(u.uPointColor[size_t(i)]) / dist2, albedo, metallic, roughness, F0);
       }
       const vec3<F> ambient = vec3<F>(F(0.03f)) * albedo * ao;

@@ -4,7 +4,12 @@
 # the suites_registered test checks the list against the binary's own.
 # With RASTER_TEST_SUITES_ONLY, TEST_SOURCES keeps only the sources declaring one of those
 # suites and those declaring none (main, shared helpers), and only those suites register.
+# Each suite also gets a ctest label the configurations select by (ctest -L / -LE):
+# command_line when every source declaring it is in tests/apps/ (the suites that check the
+# program's options, files and messages, not the pipeline's bytes), pipeline otherwise. The
+# tests below are labelled harness (Python and Chromium) and micro (the microbenchmarks).
 set(RASTER_TEST_SUITES "")
+set(pipeline_suites "")
 set(kept_sources "")
 foreach(source ${TEST_SOURCES})
   file(STRINGS ${source} declared REGEX "TEST_SUITE(_BEGIN)?\\(\"[^\"]+\"\\)")
@@ -16,6 +21,9 @@ foreach(source ${TEST_SOURCES})
   foreach(line ${declared})
     string(REGEX REPLACE ".*TEST_SUITE(_BEGIN)?\\(\"([^\"]+)\"\\).*" "\\2" suite "${line}")
     list(APPEND source_suites ${suite})
+    if(NOT source MATCHES "/tests/apps/")
+      list(APPEND pipeline_suites ${suite})
+    endif()
     if(suite IN_LIST RASTER_TEST_SUITES_ONLY)
       set(keep TRUE)
     endif()
@@ -36,7 +44,12 @@ endforeach()
 set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${TEST_SOURCES})
 foreach(suite ${RASTER_TEST_SUITES})
   add_test(NAME ${suite} COMMAND raster_tests --test-suite=${suite} --no-intro)
-  set_tests_properties(${suite} PROPERTIES ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+  if(suite IN_LIST pipeline_suites)
+    set(label pipeline)
+  else()
+    set(label command_line)
+  endif()
+  set_tests_properties(${suite} PROPERTIES ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS ${label})
 endforeach()
 # Every suite the binary holds is one of the list above (a suite declared in a way the
 # scan above does not read would otherwise never run).
@@ -61,7 +74,7 @@ if(benchmark_FOUND)
   add_test(NAME micro_smoke COMMAND python3 ${CMAKE_SOURCE_DIR}/bench/run_micro.py --check ${micro_peaks}
            --binary $<TARGET_FILE:raster_micro> --out ${CMAKE_BINARY_DIR}/micro_smoke.json --min-time 0.001
            "--filter=-:(65536|131072|262144)$")
-  set_tests_properties(micro_smoke PROPERTIES TIMEOUT 60)
+  set_tests_properties(micro_smoke PROPERTIES TIMEOUT 60 LABELS micro)
 endif()
 
 # Debian's Python, which has the Debian packages (matplotlib, distributed); a python3 earlier
@@ -76,16 +89,16 @@ endif()
 # killed under a shard: the merged sweep must equal `raster sweep`'s byte for byte.
 add_test(NAME dask_sweep COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/dask_sweep_test.py $<TARGET_FILE:raster_cli>
          ${CMAKE_SOURCE_DIR})
-set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness)
 
 # bench/goal_runs.py, the issues' speed-goal protocol, on tiny frames: its verdicts follow
 # the runs' ratios, its JSON and table agree, bad input exits 2 before any run.
 add_test(NAME goal_runs COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/goal_runs_test.py $<TARGET_FILE:raster_cli>
          ${CMAKE_SOURCE_DIR})
-set_tests_properties(goal_runs PROPERTIES TIMEOUT 300)
+set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness)
 
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.
 add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py
          $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
-set_tests_properties(report_chromium PROPERTIES TIMEOUT 180 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+set_tests_properties(report_chromium PROPERTIES TIMEOUT 180 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness)

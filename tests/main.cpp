@@ -3,6 +3,10 @@
 // $RASTER_TEST_SCENE_ALIAS=NEW=EXISTING registers one more scene row first: EXISTING's
 // under the name NEW. The registry suite runs the generic suites that way
 // (tests/registry/registry_test.cpp), to see that a new row is all they need.
+//
+// $RASTER_TEST_CASE_EXCLUDE leaves out the test cases whose names match it (doctest's
+// --test-case-exclude: wildcards, commas between patterns), for a CI configuration that
+// runs a suite through ctest but has no use for some of its cases (tests/configs/tsan.sh).
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -30,5 +34,7 @@ int main(int argc, char** argv) {
     }
   }
   doctest::Context context(argc, argv);
+  if (const char* exclude = std::getenv("RASTER_TEST_CASE_EXCLUDE"); exclude && *exclude)
+    context.addFilter("test-case-exclude", exclude);
   return context.run();
 }

@@ -63,7 +63,7 @@ long peakResidentKiB(const std::vector<std::string>& args) {
 
 }  // namespace
 
-TEST_SUITE("hostile") {
+TEST_SUITE("memory") {
   // A 16384x16384 window alone is 2 GiB of colour and depth: refused before it is made.
   TEST_CASE("memory: a render over the cap is refused before its buffers are allocated") {
     TempFolder temp;

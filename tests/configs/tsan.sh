@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over the tests that run this pipeline on several threads: determinism
-# and determinism_paths (1, 2, 3, 5 and 7 threads, every scene, every method) and the
+# and determinism_paths (1, 2, 3, 5 and 7 threads, every scene) and the
 # geometry, simd and format suites. Only their sources are compiled
 # (RASTER_TEST_SUITES_ONLY), and the two determinism suites run side by side. The thread pool
 # runs on std::thread here (-DRASTER_STD_THREADS=ON): oneTBB from Debian is not
@@ -13,4 +13,9 @@ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DR
   -DRASTER_TEST_SUITES_ONLY="determinism;determinism_paths;geometry;simd;format" > /dev/null
 cmake --build build-tsan -j"$(nproc)" --target raster_tests   # (no raster_cli: these suites do not run it)
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizers/tsan.supp"
+# The every-method case of determinism_paths is left out here: a method changes the
+# arithmetic inside a lane group, not which thread touches what (the frame is split,
+# binned and merged the same way under every set), and it was 70 of the suite's 164 s
+# under this sanitizer. Its threads are checked in the default build, its memory under ASan.
+export RASTER_TEST_CASE_EXCLUDE="every method of every step*"
 ctest --test-dir build-tsan --output-on-failure -j"$(nproc)"

@@ -9,7 +9,12 @@ value is marked with a red X (a final image below the threshold, or a non-finite
 value where llvmpipe itself holds non-finite pixels gets a grey band, since there GL is
 broken too.
 
-Usage: sweep_chart.py SWEEP.json --out PREFIX
+--metric flip puts the final image's mean LDR-FLIP error against llvmpipe (compare/flip.h:
+0 no visible difference, 1 the most) on the y axis instead; identical points read 0 and the
+dB threshold is not drawn (failure is still PSNR's, as sweep.json says). A sweep written
+before FLIP was measured has none: the chart says so and exits 1.
+
+Usage: sweep_chart.py SWEEP.json --out PREFIX [--metric psnr|flip]
 writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
 """
 import argparse
@@ -34,6 +39,46 @@ def load(path):
         return sweep
     except (OSError, ValueError, KeyError, TypeError) as e:
         sys.exit(f"sweep_chart.py: {path}: not a sweep.json ({e})")
+
+
+def draw_flip(sweep):
+    points = sweep["points"]
+    if any("flip_vs_llvmpipe" not in p for p in points):
+        sys.exit("sweep_chart.py: the sweep has no FLIP (written before it was measured); "
+                 "run raster sweep again or chart --metric psnr")
+    sides = [p["method"] for p in points if p["value_index"] == points[0]["value_index"]] if points else []
+    fig, ax = plt.subplots(figsize=(8.5, 5))
+    top = 0.0
+    for side in sides:
+        if side == "llvmpipe":
+            continue
+        mine = [p for p in points if p["method"] == side]
+        xs = [p["value"] for p in mine]
+        ys = [p["flip_vs_llvmpipe"] if p["flip_vs_llvmpipe"] is not None else float("nan") for p in mine]
+        top = max([top] + [y for y in ys if y == y])
+        style = STYLE.get(side, dict(marker="o"))
+        ax.plot(xs, ys, label=side, markersize=4, linewidth=1.4, **style)
+        first = next((p for p in mine if p["fails"]), None)
+        if first is not None and first["flip_vs_llvmpipe"] is not None:
+            y = first["flip_vs_llvmpipe"]
+            ax.plot([first["value"]], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
+            ax.annotate(f"{side} fails\n{first['value']:.4g}", (first["value"], y), textcoords="offset points",
+                        xytext=(6, 6), fontsize=8, color="red")
+    for p in points:
+        if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
+            ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
+    if sweep["range"]["log"]:
+        ax.set_xscale("log")
+    ax.set_ylim(bottom=0, top=max(top * 1.15, 1e-3))
+    ax.set_xlabel(sweep["param"])
+    ax.set_ylabel("final image mean FLIP against llvmpipe (0: identical)")
+    w, h = sweep["size"]
+    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {w}x{h}, t={sweep['time']:g}; "
+                 f"red X: first failure (< {sweep['threshold_db']:g} dB or non-finite)", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left")
+    fig.tight_layout()
+    return fig
 
 
 def draw(sweep):
@@ -84,8 +129,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("sweep")
     parser.add_argument("--out", required=True, help="PREFIX: writes PREFIX.png and PREFIX.svg")
+    parser.add_argument("--metric", choices=("psnr", "flip"), default="psnr",
+                        help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
-    fig = draw(load(args.sweep))
+    sweep = load(args.sweep)
+    fig = draw_flip(sweep) if args.metric == "flip" else draw(sweep)
     for ext in ("png", "svg"):
         write_atomically(fig, f"{args.out}.{ext}")
 

@@ -8,7 +8,13 @@ ceiling above the highest finite value. One labelled point per method set, llvmp
 softpipe as drivers, the Pareto front (no point both faster and closer) as a line, and the
 40 dB line the `fast` preset must stay above. One column per scene (per size, per result).
 
-Usage: tradeoff_chart.py RESULT.json [RESULT.json ...] --out PREFIX
+--metric flip puts the mean LDR-FLIP error (compare/flip.h: 0 no visible difference, 1 the
+most) on the y axis instead: log scale, smaller errors higher up, so "up" still reads "more
+accurate"; identical images (FLIP 0) sit on a marked line above the smallest error, and the
+Pareto front is the one FLIP makes (the JSON's "pareto" is PSNR's). Results written before
+FLIP was measured have no FLIP: the chart says so and exits 1.
+
+Usage: tradeoff_chart.py RESULT.json [RESULT.json ...] --out PREFIX [--metric psnr|flip]
 writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
 A RESULT.json holds one scene's object, or a list of them (`raster tradeoff all`).
 """
@@ -47,6 +53,66 @@ def load_results(paths):
     if not results:
         sys.exit("tradeoff_chart: no results to draw")
     return results
+
+
+# What the y axis shows: the fields of the two rows, and how a value reads.
+METRICS = {
+    "psnr": dict(fields=(("psnr_vs_llvmpipe_db", "llvmpipe"), ("psnr_vs_precise_db", "precise"))),
+    "flip": dict(fields=(("flip_vs_llvmpipe", "llvmpipe"), ("flip_vs_precise", "precise"))),
+}
+
+
+def check_flip(results):
+    for r in results:
+        for p in r["points"]:
+            if "flip_vs_llvmpipe" not in p or "flip_vs_precise" not in p:
+                sys.exit(f"tradeoff_chart: {r['scene']}: the result has no FLIP (written before it was measured); "
+                         "run raster tradeoff again or chart --metric psnr")
+
+
+def flip_floor_of(results, field):
+    """Where FLIP 0 (identical) is drawn: a third of the smallest error measured."""
+    positive = [p[field] for r in results for p in r["points"] if p[field] is not None and p[field] > 0]
+    return (min(positive) if positive else 1e-3) / 3.0
+
+
+def flip_pareto(xs, ys):
+    """No other point at least as fast with at most the error, and better in one of the two."""
+    return [not any(j != i and xs[j] >= xs[i] and ys[j] <= ys[i] and (xs[j] > xs[i] or ys[j] < ys[i])
+                    for j in range(len(xs))) for i in range(len(xs))]
+
+
+def draw_flip_panel(ax, result, floor, field, reference):
+    """One scene's points with the mean FLIP in `field` against `reference` on the y axis."""
+    points = result["points"]
+    xs = [p["speedup_vs_llvmpipe"] for p in points]
+    values = [p[field] for p in points]
+    ys = [floor if v is None or v <= 0 else v for v in values]
+    against_llvmpipe = reference == "llvmpipe"
+    front = flip_pareto(xs, ys)
+    for p, x, y, on_front in zip(points, xs, ys, front):
+        style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
+        edge = "black" if against_llvmpipe and on_front else "none"
+        ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
+    line = sorted((x, y) for x, y, f in zip(xs, ys, front) if f)
+    if against_llvmpipe and len(line) > 1:
+        ax.plot([f[0] for f in line], [f[1] for f in line], color="black", linewidth=1, linestyle="--", zorder=2)
+    ax.axhline(floor, color="#2ca02c", linewidth=0.8)
+    ax.text(0.01, floor, f" identical to {reference}", color="#2ca02c", fontsize=7, va="bottom",
+            transform=ax.get_yaxis_transform())
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    lo, hi = min(xs), max(xs)
+    ax.set_xlim(lo / 1.5, hi * 1.6)
+    ax.set_ylim(max(ys + [floor]) * 2.0, floor / 2.0)   # inverted: smaller errors higher up
+    label_points(ax, [p["name"] for p in points], xs, ys)
+    size = result.get("size", ["?", "?"])
+    ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads: "
+                 f"against {reference}", fontsize=9)
+    ax.set_xlabel("speed-up over llvmpipe (x, log scale)", fontsize=8)
+    ax.set_ylabel(f"mean FLIP of the final image vs {reference} (log, 0 best)", fontsize=8)
+    ax.grid(True, which="both", linewidth=0.3)
+    ax.tick_params(labelsize=7)
 
 
 def ceiling_of(results, field):
@@ -117,16 +183,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("results", nargs="+", help="tradeoff.json files")
     parser.add_argument("--out", required=True, help="output prefix: PREFIX.png and PREFIX.svg")
+    parser.add_argument("--metric", choices=sorted(METRICS), default="psnr",
+                        help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
     results = load_results(args.results)
+    if args.metric == "flip":
+        check_flip(results)
     # Rows of up to three scenes: each scene against llvmpipe, and below it against precise.
     columns = min(3, len(results))
     scene_rows = math.ceil(len(results) / columns)
     fig, axes = plt.subplots(2 * scene_rows, columns, figsize=(5.2 * columns, 4.2 * 2 * scene_rows), squeeze=False)
-    for field, reference, row_offset in (("psnr_vs_llvmpipe_db", "llvmpipe", 0), ("psnr_vs_precise_db", "precise", 1)):
-        ceiling = ceiling_of(results, field)
+    for row_offset, (field, reference) in enumerate(METRICS[args.metric]["fields"]):
         for k, result in enumerate(results):
-            draw_panel(axes[2 * (k // columns) + row_offset][k % columns], result, ceiling, field, reference)
+            ax = axes[2 * (k // columns) + row_offset][k % columns]
+            if args.metric == "flip":
+                draw_flip_panel(ax, result, flip_floor_of(results, field), field, reference)
+            else:
+                draw_panel(ax, result, ceiling_of(results, field), field, reference)
     for k in range(len(results), scene_rows * columns):
         axes[2 * (k // columns)][k % columns].axis("off")
         axes[2 * (k // columns) + 1][k % columns].axis("off")

@@ -9,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "compare/flip.h"
+
 namespace compare {
 namespace {
 
@@ -212,6 +214,16 @@ TargetStats compareImages(const std::string& name, const ImageData& a, const Ima
   return stats;
 }
 
+void measureFlip(TargetStats& stats, const ImageData& test, const ImageData& reference) {
+  stats.flipMeasured = true;
+  if (stats.kind != "rgba8") {
+    stats.flipMean.reset();
+    return;
+  }
+  // Identical images have a map of zeros (every step of FLIP is a difference of the two).
+  stats.flipMean = stats.shareDiffering == 0 ? 0.0 : flipMean(reference, test);
+}
+
 std::string formatStatsLine(const TargetStats& s) {
   // The largest difference, in the kind's own unit.
   char largest[48];
@@ -245,6 +257,14 @@ std::string formatStatsLine(const TargetStats& s) {
                   percent(s.shareBitIdentical).c_str(), s.maxAbs);
     text += line;
     if (s.nonFinitePixels > 0) text += "  nonfinite " + std::to_string(s.nonFinitePixels);
+  }
+  if (s.flipMeasured) {
+    if (s.flipMean) {
+      std::snprintf(line, sizeof line, "  flip %.6f", *s.flipMean);
+      text += line;
+    } else {
+      text += "  flip -";
+    }
   }
   return text;
 }

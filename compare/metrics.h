@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "backends/backend.h"
@@ -36,6 +37,14 @@ struct TargetStats {
   // which are over the finite samples only, so no metric is ever NaN.
   uint64_t nonFinitePixels = 0;
   int width = 0, height = 0;
+  // ꟻLIP (compare/flip.h), a perceptual error in [0, 1] beside PSNR: the mean of its map at
+  // the reference's default 67 pixels per degree. compareImages() leaves it out (it costs
+  // about 60 ms of CPU at 640x480, 0.43 s at 1920x1080, spread over the cores, and most
+  // callers, the tests among them, want only the step counts); measureFlip() fills it. flipMeasured: it was asked for;
+  // flipMean: set for rgba8 targets only (FLIP measures 8-bit sRGB colour), absent for depth
+  // and float targets.
+  bool flipMeasured = false;
+  std::optional<double> flipMean;
 
   // A target of floats (RGBA16F or RGBA32F): measured in ULPs and bit identity.
   bool isFloatKind() const { return isFloatKindName(kind); }
@@ -54,6 +63,11 @@ void checkComparable(const std::string& name, const scenes::ImageData& a,
 TargetStats compareImages(const std::string& name, const scenes::ImageData& a,
                           const scenes::ImageData& b);
 
+// Adds ꟻLIP to stats of `test` against `reference` (the images compareImages measured):
+// their mean ꟻLIP error for rgba8 targets (0 without computing it when no pixel differs),
+// none for the other kinds.
+void measureFlip(TargetStats& stats, const scenes::ImageData& test, const scenes::ImageData& reference);
+
 // The largest difference over the channels of one pixel, in the kind's unit (see above);
 // a and b must be comparable.
 uint64_t pixelDifference(const scenes::ImageData& a, const scenes::ImageData& b, size_t pixel);
@@ -67,7 +81,9 @@ uint32_t floatBits(float value);
 uint64_t floatUlpDistance(uint32_t a, uint32_t b);
 
 // One aligned, human-readable line; depth lines add "texels N" (differing), half lines
-// "identical P%  max|d| X" and, when there are any, "nonfinite N". E.g.
+// "identical P%  max|d| X" and, when there are any, "nonfinite N"; when ꟻLIP was measured,
+// every line ends with "flip M" (the mean, six decimals as the reference prints it) or
+// "flip -" (not a colour target). E.g.
 //   final            rgba8 640x480    max 3            rmse 0.2827     psnr 59.10   differ  10.119%  >1   2.731%  >4   0.000%
 std::string formatStatsLine(const TargetStats& stats);
 

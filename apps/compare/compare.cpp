@@ -72,7 +72,8 @@ int runCompare(const CompareArgs& args) {
   for (size_t i = 0; i < test.targets.size(); ++i) {
     const Target& ours = test.targets[i];
     const Target& theirs = reference.targets[i];
-    const compare::TargetStats stats = compare::compareImages(ours.name, ours.image, theirs.image);
+    compare::TargetStats stats = compare::compareImages(ours.name, ours.image, theirs.image);
+    compare::measureFlip(stats, ours.image, theirs.image);
     const std::string base = (fs::path(outFolder) / ours.name).string();
     compare::writePng(base + "_ours.png", ours.image);
     compare::writePng(base + "_gl.png", theirs.image);

@@ -92,7 +92,8 @@ report::Section sceneSection(const report::SceneWork& scene, json& record) {
     const scenes::Target& mine = ours.targets[i];
     const scenes::Target& theirs = gl.targets[i];
     if (mine.name != theirs.name) throw std::runtime_error("the sides of " + frame.scene + " expose different targets");
-    const compare::TargetStats stats = compare::compareImages(mine.name, mine.image, theirs.image);
+    compare::TargetStats stats = compare::compareImages(mine.name, mine.image, theirs.image);
+    compare::measureFlip(stats, mine.image, theirs.image);
     const json statsRecord = report::statsJson(stats);
     html += "<h3>" + report::escape(mine.name + " (" + stats.kind + ")") + "</h3>\n" +
             report::targetRow(mine, theirs, gl.backend, scene.folder, scene.work, statsRecord);

@@ -41,6 +41,7 @@ json statsJson(const compare::TargetStats& s) {
     j[ulpsKey(s.kind)] = s.maxUlps;
     j["nonfinite_pixels"] = s.nonFinitePixels;
   }
+  if (s.flipMeasured) j["flip_mean"] = s.flipMean ? json(*s.flipMean) : json(nullptr);
   return j;
 }
 
@@ -55,6 +56,9 @@ std::string metricsTable(const json& s, const std::string& id) {
   t.rows.push_back({escape("largest difference (" + unit + ")"), cell(s.at("max_abs"), cli::sixDigits(s.at("max_abs")))});
   t.rows.push_back({escape("RMSE (" + unit + ")"), cell(s.at("rmse"), cli::sixDigits(s.at("rmse")))});
   t.rows.push_back({escape("PSNR (dB)"), cell(s.at("psnr_db"), psnrText(s.at("psnr_db")))});
+  if (s.contains("flip_mean") && !s.at("flip_mean").is_null())
+    t.rows.push_back({escape("FLIP mean (0: no visible difference, 1: the most)"),
+                      cell(s.at("flip_mean"), cli::fixedDigits(s.at("flip_mean").get<double>(), 6))});
   t.rows.push_back({escape("pixels differing"), cell(s.at("share_differing"), percent(s.at("share_differing")))});
   t.rows.push_back({escape("pixels off by > 1"), cell(s.at("share_over1"), percent(s.at("share_over1")))});
   t.rows.push_back({escape("pixels off by > 4"), cell(s.at("share_over4"), percent(s.at("share_over4")))});

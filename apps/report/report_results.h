@@ -18,7 +18,8 @@ namespace report {
 // The stats as JSON: name, kind, size [w, h], max_abs, rmse, psnr_db (null when identical),
 // share_differing, share_over1, share_over4, and the kind's own fields (depth:
 // depth_texels_differing, max_depth_lsb; half: share_bit_identical, max_half_ulps,
-// nonfinite_pixels; float: the same with max_float_ulps).
+// nonfinite_pixels; float: the same with max_float_ulps), and flip_mean when FLIP was
+// measured (compare::measureFlip; null for a target that is not rgba8).
 nlohmann::json statsJson(const compare::TargetStats& stats);
 
 // One target's metrics, a row per metric (the PSNR row is "PSNR (dB)", shown with two

@@ -169,9 +169,10 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
   std::string worst;
   double worstPsnr = HUGE_VAL;
   for (size_t i = 0; i < side.size(); ++i) {
-    const compare::TargetStats s = compare::compareImages(side[i].name, side[i].image, reference[i].image);
+    compare::TargetStats s = compare::compareImages(side[i].name, side[i].image, reference[i].image);
     identical = identical && s.shareDiffering == 0;
     if (i + 1 == side.size()) {
+      compare::measureFlip(s, side[i].image, reference[i].image);   // the final image only: it costs
       final = s;
     } else if (s.shareDiffering > 0 && (worst.empty() || s.psnr < worstPsnr)) {
       worst = side[i].name;
@@ -193,6 +194,7 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
           {"method", name},
           {"identical_to_llvmpipe", identical},
           {"psnr_vs_llvmpipe_db", identical ? json(nullptr) : dbOrNull(final.psnr)},
+          {"flip_vs_llvmpipe", final.flipMean ? json(*final.flipMean) : json(nullptr)},
           {"share_over1_vs_llvmpipe", final.shareOver1},
           {"max_diff_vs_llvmpipe", final.maxAbs},
           {"nonfinite_pixels", nonFinite},

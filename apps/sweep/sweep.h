@@ -5,7 +5,7 @@
 // A point is one value of the parameter rendered by one side. Per value, llvmpipe renders
 // the reference in this process; each method set of this pipeline renders in this process
 // too; softpipe renders in a child (Mesa picks one Gallium driver per process). Each side is
-// compared with llvmpipe on every target: the final image gives the PSNR, the share of
+// compared with llvmpipe on every target: the final image gives the PSNR, its ꟻLIP, the share of
 // pixels off by more than one 8-bit step and the largest step; the worst target is the one
 // with the lowest PSNR in its own unit (compare/metrics.h). A side fails at a value when its
 // final image is below the threshold (30 dB unless --threshold says otherwise) or any of its
@@ -18,7 +18,9 @@
 //   {"scene", "param", "range": {"from", "to", "steps", "log"}, "size": [w, h], "time",
 //    "instances", "sets", "threshold_db", "methods": [...], "softpipe",
 //    "points": [{"value", "value_index", "method", "identical_to_llvmpipe",
-//                "psnr_vs_llvmpipe_db" (null when identical), "share_over1_vs_llvmpipe",
+//                "psnr_vs_llvmpipe_db" (null when identical), "flip_vs_llvmpipe" (the final
+//                image's mean LDR-FLIP error, compare/flip.h; null when it is not RGBA8),
+//                "share_over1_vs_llvmpipe",
 //                "max_diff_vs_llvmpipe", "nonfinite_pixels", "worst_target",
 //                "worst_target_psnr_db", "fails", "failure"}],
 //    "first_failure": {side: value or null}}

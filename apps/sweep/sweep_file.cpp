@@ -48,14 +48,16 @@ std::string markdown(const json& sweep) {
       md << "| " << side << " | " << (value.is_null() ? std::string("none") : sixDigits(value.get<double>())) << " |\n";
     md << "\n";
   }
-  md << "| value | side | identical | PSNR (dB) | >1 step | max step | non-finite | worst target (dB) | fails |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
+  md << "| value | side | identical | PSNR (dB) | FLIP | >1 step | max step | non-finite | worst target (dB) | fails |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const json& p : sweep.at("points")) {
     const json& db = p.at("psnr_vs_llvmpipe_db");
     const json& worst = p.at("worst_target");
+    const json flip = p.value("flip_vs_llvmpipe", json(nullptr));   // absent from sweeps before it
     md << "| " << sixDigits(p.at("value")) << " | " << p.at("method").get<std::string>() << " | "
        << (p.at("identical_to_llvmpipe").get<bool>() ? "yes" : "no") << " | "
        << (db.is_null() ? std::string("-") : fixedDigits(db.get<double>(), 1)) << " | "
+       << (flip.is_null() ? std::string("-") : fixedDigits(flip.get<double>(), 6)) << " | "
        << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
        << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << p.at("nonfinite_pixels").get<uint64_t>() << " | "
        << (worst.is_null() ? std::string("-")

@@ -141,13 +141,17 @@ std::string markdownTable(const json& result) {
   std::ostringstream md;
   md << "### " << result.at("scene").get<std::string>() << ", " << result.at("size")[0] << "x" << result.at("size")[1]
      << ", t=" << result.at("time") << ", " << result.at("threads") << " threads\n\n"
-     << "| point | kind | median ms | speed-up vs llvmpipe | PSNR vs llvmpipe (dB) | pixels off > 1 | max diff "
-        "| PSNR vs precise (dB) | Pareto |\n|---|---|---:|---:|---:|---:|---:|---:|:---:|\n";
+     << "| point | kind | median ms | speed-up vs llvmpipe | PSNR vs llvmpipe (dB) | FLIP vs llvmpipe | pixels off > 1 "
+        "| max diff | PSNR vs precise (dB) | Pareto |\n|---|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+  auto flip = [](const json& p) {
+    const json v = p.value("flip_vs_llvmpipe", json(nullptr));
+    return v.is_null() ? std::string("-") : fixedDigits(v.get<double>(), 6);
+  };
   auto db = [](const json& v) { return v.is_null() ? std::string("identical") : fixedDigits(v.get<double>(), 1); };
   for (const json& p : points)
     md << "| " << p.at("name").get<std::string>() << " | " << p.at("kind").get<std::string>() << " | "
        << fixedDigits(p.at("median_ms").get<double>(), 2) << " | " << fixedDigits(p.at("speedup_vs_llvmpipe").get<double>(), 2)
-       << "x | " << db(p.at("psnr_vs_llvmpipe_db")) << " | "
+       << "x | " << db(p.at("psnr_vs_llvmpipe_db")) << " | " << flip(p) << " | "
        << fixedDigits(100.0 * p.at("share_over1_vs_llvmpipe").get<double>(), 3) << "% | "
        << p.at("max_diff_vs_llvmpipe").get<double>() << " | " << db(p.at("psnr_vs_precise_db")) << " | "
        << (p.at("pareto").get<bool>() ? "*" : "") << " |\n";
@@ -224,8 +228,10 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
                  {"points", json::array()}};
   std::vector<double> speed, accuracy;
   for (const Point& p : all) {
-    const compare::TargetStats vsGl = compare::compareImages("final", p.image, llvmpipeRef.image);
-    const compare::TargetStats vsPrecise = compare::compareImages("final", p.image, preciseRef.image);
+    compare::TargetStats vsGl = compare::compareImages("final", p.image, llvmpipeRef.image);
+    compare::measureFlip(vsGl, p.image, llvmpipeRef.image);
+    compare::TargetStats vsPrecise = compare::compareImages("final", p.image, preciseRef.image);
+    compare::measureFlip(vsPrecise, p.image, preciseRef.image);
     json methods = nullptr;
     if (p.methods) {
       methods = json::object();
@@ -239,9 +245,11 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
                                 {"speedup_vs_llvmpipe", speedup},
                                 {"identical_to_llvmpipe", identical(vsGl)},
                                 {"psnr_vs_llvmpipe_db", dbOrNull(vsGl.psnr)},
+                                {"flip_vs_llvmpipe", vsGl.flipMean ? json(*vsGl.flipMean) : json(nullptr)},
                                 {"share_over1_vs_llvmpipe", vsGl.shareOver1},
                                 {"max_diff_vs_llvmpipe", vsGl.maxAbs},
                                 {"psnr_vs_precise_db", dbOrNull(vsPrecise.psnr)},
+                                {"flip_vs_precise", vsPrecise.flipMean ? json(*vsPrecise.flipMean) : json(nullptr)},
                                 {"nonfinite_pixels", vsGl.nonFinitePixels}});
     speed.push_back(speedup);
     accuracy.push_back(std::isfinite(vsGl.psnr) ? vsGl.psnr : HUGE_VAL);
@@ -304,7 +312,8 @@ int runTradeoff(const TradeoffArgs& args) {
                          " --time " + args.time + " --threads " + std::to_string(threads) + " --frames " +
                          std::to_string(args.frames) + "`. Speed-up: llvmpipe's median frame time over the point's, each of this "
                          "pipeline's frames timed right after one of llvmpipe's; "
-                         "PSNR and pixel shares on the final image (RGBA8, 8-bit steps). `*`: Pareto-optimal.\n\n";
+                         "PSNR and pixel shares on the final image (RGBA8, 8-bit steps); FLIP: its mean LDR-FLIP error "
+                         "at 67 pixels per degree (0: no visible difference, 1: the most). `*`: Pareto-optimal.\n\n";
   for (const Frame& frame : frames) {
     json result = runScene(args, frame, threads, args.out);
     markdown += markdownTable(result);

@@ -10,8 +10,10 @@
 // --gl-driver softpipe` times it against this pipeline's gl set, and the ratio is carried
 // over to llvmpipe through gl's time here.
 //
-// Accuracy: the final image of each point against llvmpipe's (identical, PSNR, share of
-// pixels off by more than one 8-bit step, largest step) and against the precise preset's.
+// Accuracy: the final image of each point against llvmpipe's (identical, PSNR, mean LDR-FLIP
+// error "flip_vs_llvmpipe" (compare/flip.h; null for a final image that is not RGBA8), share
+// of pixels off by more than one 8-bit step, largest step) and against the precise preset's
+// (PSNR, and FLIP as "flip_vs_precise").
 //
 // Written into --out: tradeoff.json, tradeoff.md (the table, sorted by speed, Pareto-optimal
 // rows marked) and tradeoff.png / .svg (bench/tradeoff_chart.py, matplotlib).

@@ -215,6 +215,11 @@ TEST_SUITE("cli") {
       CHECK(p["median_ms"].get<double>() > 0);
       // The identical flag and the PSNR agree: null exactly when identical.
       CHECK(p["identical_to_llvmpipe"].get<bool>() == p["psnr_vs_llvmpipe_db"].is_null());
+      // FLIP beside the PSNR: 0 exactly when identical, else a visible-difference error in (0, 1].
+      REQUIRE(p["flip_vs_llvmpipe"].is_number());
+      if (p["identical_to_llvmpipe"].get<bool>()) CHECK(p["flip_vs_llvmpipe"].get<double>() == 0.0);
+      else CHECK((p["flip_vs_llvmpipe"].get<double>() > 0.0 && p["flip_vs_llvmpipe"].get<double>() <= 1.0));
+      CHECK(p["flip_vs_precise"].is_number());
       if (p["kind"] == "driver") CHECK(p["methods"].is_null());
       else CHECK(p["methods"].size() == raster::methodCatalog().size());
     }
@@ -226,7 +231,16 @@ TEST_SUITE("cli") {
       if (p["name"] == "llvmpipe") CHECK(p["speedup_vs_llvmpipe"].get<double>() == 1.0);
     }
     CHECK(readText(cwd / "t" / "tradeoff.md").find("| gl | preset |") != std::string::npos);
+    CHECK(readText(cwd / "t" / "tradeoff.md").find("FLIP vs llvmpipe") != std::string::npos);
     CHECK(readText(cwd / "t" / "tradeoff.svg").find("<svg") != std::string::npos);
+    // The chart plots FLIP on the accuracy axis when asked.
+    // The chart's Python as apps/common/charts.cpp picks it: $RASTER_PYTHON, else /usr/bin/python3.
+    const std::string python = "${RASTER_PYTHON:-$(test -x /usr/bin/python3 && echo /usr/bin/python3 || echo python3)} ";
+    const std::string script = shellQuote(std::string(RASTER_SOURCE_DIR) + "/bench/tradeoff_chart.py");
+    const RunResult chart = runShell(cwd, python + script + " t/tradeoff.json --out flipchart --metric flip");
+    CAPTURE(chart.err);
+    CHECK(chart.status == 0);
+    CHECK(readText(cwd / "flipchart.svg").find("mean FLIP") != std::string::npos);
   }
 
   TEST_CASE("an --out that cannot be written is refused before rendering") {

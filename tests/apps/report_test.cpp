@@ -80,6 +80,16 @@ TEST_CASE("the metrics table shows what the stats JSON holds") {
   const json same = report::statsJson(compare::compareImages("final", a, a));
   CHECK(same.at("psnr_db").is_null());
   CHECK(report::metricsTable(same, "m").find(">identical</td>") != std::string::npos);
+  CHECK(!stats.contains("flip_mean"));   // FLIP is added only where it was measured
+
+  compare::TargetStats measured = compare::compareImages("final", a, b);
+  compare::measureFlip(measured, a, b);
+  const json withFlip = report::statsJson(measured);
+  REQUIRE(withFlip.at("flip_mean").is_number());
+  CHECK(withFlip.at("flip_mean").get<double>() == *measured.flipMean);
+  CHECK(withFlip.at("flip_mean").get<double>() > 0.0);
+  CHECK(report::metricsTable(withFlip, "m").find("data-value=\"" + withFlip.at("flip_mean").dump() + "\"") !=
+        std::string::npos);
 }
 
 TEST_CASE("a trace becomes a panel: every pass, fragment, sample and value, escaped") {

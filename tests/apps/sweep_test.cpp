@@ -102,6 +102,10 @@ TEST_SUITE("sweep") {
     for (const json& p : sweep["points"]) {
       values.insert(p["value"].get<double>());
       CHECK(p["identical_to_llvmpipe"].get<bool>() == p["psnr_vs_llvmpipe_db"].is_null());
+      // The final image's FLIP beside its PSNR (hdr's final target is RGBA8): 0 when identical.
+      REQUIRE(p["flip_vs_llvmpipe"].is_number());
+      if (p["identical_to_llvmpipe"].get<bool>()) CHECK(p["flip_vs_llvmpipe"].get<double>() == 0.0);
+      CHECK(p["flip_vs_llvmpipe"].get<double>() <= 1.0);
       const bool fails = p["fails"].get<bool>();
       CHECK(fails == !p["failure"].get<std::string>().empty());
       if (p["method"] == "llvmpipe" || p["method"] == "gl") CHECK(p["identical_to_llvmpipe"].get<bool>());
@@ -122,6 +126,14 @@ TEST_SUITE("sweep") {
     CHECK(sweep["first_failure"]["llvmpipe"].is_null());
     CHECK(sweep["first_failure"]["gl"].is_null());
     CHECK(readText(temp.path / "s" / "sweep.svg").find("<svg") != std::string::npos);
+    CHECK(readText(temp.path / "s" / "sweep.md").find("| FLIP |") != std::string::npos);
+    // The chart's Python as apps/common/charts.cpp picks it: $RASTER_PYTHON, else /usr/bin/python3.
+    const std::string python = "${RASTER_PYTHON:-$(test -x /usr/bin/python3 && echo /usr/bin/python3 || echo python3)} ";
+    const std::string script = shellQuote(std::string(RASTER_SOURCE_DIR) + "/bench/sweep_chart.py");
+    const RunResult chart = runShell(temp.path, python + script + " s/sweep.json --out flipchart --metric flip");
+    CAPTURE(chart.err);
+    CHECK(chart.status == 0);
+    CHECK(readText(temp.path / "flipchart.svg").find("mean FLIP") != std::string::npos);
   }
 
   TEST_CASE("sweep-merge: shards in any order equal the unsharded sweep.json; missing, doubled or foreign shards refused") {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -56,6 +57,7 @@ TEST_SUITE("hostile") {
     fs::copy(scenes::assetDirectory({}), assets, fs::copy_options::recursive);
     REQUIRE(fs::exists(assets / "SHA256SUMS"));
     int files = 0;
+    std::set<std::string> loadersRun;   // scene + extension
     for (const std::string& scene : testing_support::scenesUnderTest()) {
       for (const std::string& asset : scenes::sceneEntry(scene).assets) {
         ++files;
@@ -65,13 +67,17 @@ TEST_SUITE("hostile") {
         expectAssetRefused(cwd, scene, assets, asset, "missing", "");
         fs::rename(away, file);
         // Cut to half: the manifest's hash refuses it first; without a manifest (a user's own
-        // folder), the loader must find the cut itself.
+        // folder), the loader must find the cut itself: once per scene and kind of file (a
+        // run without the manifest decodes the scene's other images before it stops, the
+        // suite's longest step, so each loader is run once a scene, not once a file).
         fs::copy_file(file, away);
         fs::resize_file(file, fs::file_size(file) / 2);
         expectAssetRefused(cwd, scene, assets, asset, "cut to half", "changed or truncated");
-        fs::rename(assets / "SHA256SUMS", aside / "SHA256SUMS");
-        expectAssetRefused(cwd, scene, assets, asset, "cut to half, no manifest", "");
-        fs::rename(aside / "SHA256SUMS", assets / "SHA256SUMS");
+        if (loadersRun.insert(scene + fs::path(asset).extension().string()).second) {
+          fs::rename(assets / "SHA256SUMS", aside / "SHA256SUMS");
+          expectAssetRefused(cwd, scene, assets, asset, "cut to half, no manifest", "");
+          fs::rename(aside / "SHA256SUMS", assets / "SHA256SUMS");
+        }
         fs::rename(away, file);
       }
     }

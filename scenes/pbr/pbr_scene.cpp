@@ -386,7 +386,8 @@ SceneEntry pbrScene() {
                   "SSAO hemisphere radius in view space; large radii reach across depth edges"},
                  {"ssao_bias", 0, 10, false, "m", "0.025", "SSAO depth bias; toward 0, self-occlusion (acne) on flat surfaces"},
                  {"roughness_floor", 0, 1, false, "", "0.04",
-                  "lowest GGX roughness; toward 0 the specular lobe becomes a spike (a2 -> 0, D_GGX divides by tiny d)"},
+                  "lowest GGX roughness, max(map, floor): toward 0 the lobe would become a spike (a2 -> 0), but the maps seen at t = 1 "
+                  "go no lower than 0.16, so below that it changes nothing"},
                  param::worldOffset()},
       .programs = {shaders::shadow::shadowProgram(), shaders::pbr::gbufferProgram(), shaders::pbr::ssaoProgram(),
                    shaders::pbr::blurProgram(), shaders::pbr::lightingProgram()},

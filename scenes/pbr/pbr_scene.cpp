@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include <glm/ext/matrix_clip_space.hpp>
@@ -221,9 +222,13 @@ class PbrScene final : public Scene {
   void renderFrame(Backend& b, float t) override {
     const int w = std::max(options_.width, 1), h = std::max(options_.height, 1);
     const float split1 = paramOr(options_, "cascade_split1", SPLIT1), split2 = paramOr(options_, "cascade_split2", SPLIT2);
+    // world_offset moves the models, the eye, its target and the point lights by (d, d, d);
+    // unset, nothing is touched (the seed's bytes).
+    const std::optional<float> worldOffset = options_.params.get("world_offset");
+    auto moved = [&](glm::vec3 v) { return worldOffset ? v + glm::vec3(*worldOffset) : v; };
     const float cam_angle = t * 0.3f;
-    const glm::vec3 cam(std::cos(cam_angle) * 4.6f, 2.3f, std::sin(cam_angle) * 4.6f);
-    const glm::mat4 view = glm::lookAtRH(cam, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0, 1, 0));
+    const glm::vec3 cam = moved(glm::vec3(std::cos(cam_angle) * 4.6f, 2.3f, std::sin(cam_angle) * 4.6f));
+    const glm::mat4 view = glm::lookAtRH(cam, moved(glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(0, 1, 0));
     const float fovY = 50.0f * PI / 180.0f, aspect = float(w) / float(h);
     const glm::mat4 proj = glm::perspectiveRH_NO(fovY, aspect, NEAR_PLANE, FAR_PLANE);
     const float sun_yaw = t * 0.25f;
@@ -231,7 +236,7 @@ class PbrScene final : public Scene {
     const float bounds[NUM_CASCADES + 1] = {NEAR_PLANE, split1, split2, FAR_PLANE};
     std::array<glm::mat4, NUM_CASCADES> lightVP;
     for (int c = 0; c < NUM_CASCADES; ++c) lightVP[size_t(c)] = cascadeMatrix(view, fovY, aspect, bounds[c], bounds[c + 1], sunDir);
-    const glm::mat4 model(1.0f);
+    const glm::mat4 model = worldOffset ? glm::translate(glm::mat4(1.0f), glm::vec3(*worldOffset)) : glm::mat4(1.0f);
 
     // Passes 1-3: the cascades from the sun, with slope-scaled depth bias.
     ClearOp clearDepth;
@@ -327,7 +332,7 @@ class PbrScene final : public Scene {
     const glm::vec3 colours[3] = {{6.0f, 2.2f, 1.0f}, {1.0f, 2.5f, 6.0f}, {1.5f, 5.0f, 1.5f}};
     for (int i = 0; i < 3; ++i) {
       const float fi = float(i), ang = t * 0.7f + fi * 2.0944f;
-      const glm::vec3 pos(std::cos(ang) * 2.2f, 0.6f + 0.4f * std::sin(t + fi), std::sin(ang) * 2.2f);
+      const glm::vec3 pos = moved(glm::vec3(std::cos(ang) * 2.2f, 0.6f + 0.4f * std::sin(t + fi), std::sin(ang) * 2.2f));
       b.setUniform(prog_light_, "uPointPos[" + std::to_string(i) + "]", pos);
       b.setUniform(prog_light_, "uPointColor[" + std::to_string(i) + "]", colours[i]);
     }
@@ -381,7 +386,9 @@ SceneEntry pbrScene() {
                   "SSAO hemisphere radius in view space; large radii reach across depth edges"},
                  {"ssao_bias", 0, 10, false, "m", "0.025", "SSAO depth bias; toward 0, self-occlusion (acne) on flat surfaces"},
                  {"roughness_floor", 0, 1, false, "", "0.04",
-                  "lowest GGX roughness; toward 0 the specular lobe becomes a spike (a2 -> 0, D_GGX divides by tiny d)"}},
+                  "lowest GGX roughness, max(map, floor): toward 0 the lobe would become a spike (a2 -> 0), but the maps seen at t = 1 "
+                  "go no lower than 0.16, so below that it changes nothing"},
+                 param::worldOffset()},
       .programs = {shaders::shadow::shadowProgram(), shaders::pbr::gbufferProgram(), shaders::pbr::ssaoProgram(),
                    shaders::pbr::blurProgram(), shaders::pbr::lightingProgram()},
       .assets = {CAT_OBJ, CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_ROUGH, BRICK_AO},
@@ -389,6 +396,7 @@ SceneEntry pbrScene() {
                  "cascade_split1=0.5:9:7",
                  "ssao_radius=0.05:5:7:log",
                  "time=1:1e10:11:log",
+                 "world_offset=1:1e6:13:log",
                  "size=1:8192:10:log --no-softpipe"},
   };
 }

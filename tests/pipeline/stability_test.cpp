@@ -76,4 +76,13 @@ TEST_SUITE("stability") {
     CHECK(broken > 0);
     CHECK(pointOf(s, "gl", 100000.0)["nonfinite_pixels"].get<uint64_t>() == broken);
   }
+
+  TEST_CASE("pbr world_offset: llvmpipe's 8-bit filter overflows its fixed-point coordinate past |s| = 8192; filter=float parts there") {
+    // The floor's uv is 0.35 x its world position; on its 1024-texel maps iround(s * 1024 * 256)
+    // leaves 32 bits at a world x of 23,406 m: between these two values.
+    const json s = sweep("pbr --param world_offset=10000:31622.8:2 --methods gl,filter=float --size 96x72");
+    for (double value : {10000.0, 31622.8}) CHECK(pointOf(s, "gl", value)["identical_to_llvmpipe"] == true);
+    CHECK(pointOf(s, "filter=float", 10000.0)["fails"] == false);
+    CHECK(pointOf(s, "filter=float", 31622.8)["fails"] == true);
+  }
 }

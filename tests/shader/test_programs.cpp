@@ -9,6 +9,7 @@
 #include "shaders_cpp/test/math_probe.h"
 #include "shaders_cpp/test/mrt.h"
 #include "shaders_cpp/test/shadow_lookup.h"
+#include "shaders_cpp/test/uniform_array.h"
 
 namespace {
 
@@ -20,7 +21,7 @@ using scenes::programEntry;
        std::vector{programEntry<shaders::test::ColorLookup>(),
                    programEntry<shaders::test::Derivatives>(), programEntry<shaders::test::Instanced>(),
                    programEntry<shaders::test::ShadowLookup>(), programEntry<shaders::test::MathProbe>(),
-                   programEntry<shaders::test::Mrt>()})
+                   programEntry<shaders::test::Mrt>(), programEntry<shaders::test::UniformArray>()})
     scenes::registerProgram(std::move(entry));
   return true;
 }();

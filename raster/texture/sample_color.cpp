@@ -105,8 +105,6 @@ void sampleRgba8(const Texture& t, float s, float tc, float out[4]) {
 
 // ---- float textures (SoA) ---------------------------------------------------------------------
 
-bool isDepthFormat(TexelFormat f) { return f == TexelFormat::Depth24 || f == TexelFormat::Depth16; }
-
 // A depth texture read through a sampler2D (no compare mode): llvmpipe's SoA fetch unpacks
 // the unorm code as lp_build_unsigned_norm_to_float does for a width up to 24 bits, a
 // conversion to float times float(1 / (2^bits - 1)), the same as the compare path reads it
@@ -164,7 +162,7 @@ int wrapNearestFloat(float coord, int size, Wrap wrap) {
 void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
   auto texel = [&](int x, int y, int c) {
     if (t.format == TexelFormat::RGBA8) return float(rgba8Texel(t, x, y)[c]) * float(1.0 / 255.0);
-    if (isDepthFormat(t.format)) return depthTexelChannel(t, x, y, c);
+    if (t.isDepth()) return depthTexelChannel(t, x, y, c);
     const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4 + size_t(c);
     return t.format == TexelFormat::RGBA32F ? t.f32[i] : format::floatFromHalf(t.half[i]);
   };
@@ -202,7 +200,7 @@ void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int
 void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
   const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
   for (int c = 0; c < 4; ++c) {
-    if (isDepthFormat(t.format)) out[c] = depthTexelChannel(t, x, y, c);
+    if (t.isDepth()) out[c] = depthTexelChannel(t, x, y, c);
     else if (t.format == TexelFormat::RGBA8) out[c] = float(rgba8Texel(t, x, y)[c]) * float(1.0 / 255.0);
     else if (t.format == TexelFormat::RGBA32F) out[c] = t.f32[i + size_t(c)];
     else out[c] = format::floatFromHalf(t.half[i + size_t(c)]);

@@ -389,8 +389,7 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
     sampleHalfNearest<N>(texture, sv, tv, liveBits, out);
   } else if (texture.format == TexelFormat::RGBA16F) {
     sampleHalf<N>(texture, sv, tv, out);
-  } else if ((texture.format == TexelFormat::Depth24 || texture.format == TexelFormat::Depth16) &&
-             texture.sampler.filter == Filter::Nearest) {
+  } else if (texture.isDepth() && texture.sampler.filter == Filter::Nearest) {
     // A depth texture through sampler2D (the pbr scene's position reconstruction and SSAO):
     // code * depthCodeScale in r, (0, 0, 1) in gba, as sample_color.cpp's depthTexelChannel.
     const int* codes = reinterpret_cast<const int*>(texture.depth.data());

@@ -25,6 +25,8 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <unordered_map>
 
@@ -55,6 +57,42 @@ std::string oneLine(std::string s) {
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s;
+}
+
+// ScopedImageCache's store: decoded images by the file's bytes (the key is the whole file,
+// so a changed or cut file is a different key and goes through stb_image again). Images are
+// decoded on several threads at once (loadImagesRgba8), hence the lock; the decoding itself
+// runs outside it.
+template <class T>
+struct Decoded {
+  int width = 0, height = 0;
+  std::vector<T> pixels;
+};
+template <class T>
+using DecodedByBytes = std::unordered_map<std::string, std::shared_ptr<const Decoded<T>>>;
+struct DecodedImages {
+  std::mutex lock;
+  DecodedByBytes<uint8_t> rgba8;
+  DecodedByBytes<float> rgbFloat;
+};
+std::unique_ptr<DecodedImages> decodedImages;
+
+template <class T>
+std::shared_ptr<const Decoded<T>> cachedImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data) {
+  if (!decodedImages) return nullptr;
+  const std::lock_guard<std::mutex> held(decodedImages->lock);
+  const DecodedByBytes<T>& images = (*decodedImages).*map;
+  const auto found = images.find(data);
+  return found == images.end() ? nullptr : found->second;
+}
+
+template <class T>
+void keepImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data, int width, int height,
+               const std::vector<T>& pixels) {
+  if (!decodedImages) return;
+  auto copy = std::make_shared<const Decoded<T>>(Decoded<T>{width, height, pixels});
+  const std::lock_guard<std::mutex> held(decodedImages->lock);
+  ((*decodedImages).*map).emplace(data, std::move(copy));
 }
 
 std::string hexBytes(const std::string& data, size_t count) {
@@ -367,6 +405,14 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data) {
   if (headerW > 0 && headerH > 0)
     reserved = memory::Reservation(uint64_t(headerW) * uint64_t(headerH) * 4,
                                    memory::joined({"decoding ", path, " (", std::to_string(headerW), "x", std::to_string(headerH), ")"}));
+  if (const auto cached = cachedImage(&DecodedImages::rgba8, data)) {
+    ImageRgba8 image;
+    image.width = cached->width;
+    image.height = cached->height;
+    image.reserved = std::move(reserved);
+    image.pixels = cached->pixels;
+    return image;
+  }
   int w = 0, h = 0, c = 0;
   stbi_set_flip_vertically_on_load_thread(0);  // the tutorial's loader: rows as in the file
   stbi_uc* pixels = stbi_load_from_memory(bytesOf(data), int(data.size()), &w, &h, &c, 4);
@@ -381,6 +427,7 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data) {
   image.reserved = std::move(reserved);
   image.pixels.assign(pixels, pixels + size_t(w) * size_t(h) * 4);
   stbi_image_free(pixels);
+  keepImage(&DecodedImages::rgba8, data, w, h, image.pixels);
   return image;
 }
 
@@ -399,6 +446,12 @@ std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths) {
     if (e) std::rethrow_exception(e);
   return images;
 }
+
+ScopedImageCache::ScopedImageCache() {
+  if (decodedImages) throw std::logic_error("ScopedImageCache: one is already alive");
+  decodedImages = std::make_unique<DecodedImages>();
+}
+ScopedImageCache::~ScopedImageCache() { decodedImages.reset(); }
 
 ImageRgbFloat loadHdrRgb(const std::string& path) { return decodeHdrRgb(path, readAssetFile(path)); }
 
@@ -452,6 +505,14 @@ ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data) {
   // Decoded as 3 floats a texel: reserved from the header before stb_image allocates it.
   memory::Reservation reserved(uint64_t(w) * uint64_t(h) * 12,
                                memory::joined({"decoding ", path, " (", std::to_string(w), "x", std::to_string(h), ")"}));
+  if (const auto cached = cachedImage(&DecodedImages::rgbFloat, data)) {
+    ImageRgbFloat image;
+    image.width = cached->width;
+    image.height = cached->height;
+    image.reserved = std::move(reserved);
+    image.pixels = cached->pixels;
+    return image;
+  }
   stbi_set_flip_vertically_on_load_thread(0);
   int x = 0, y = 0, comp = 0;
   float* pixels = stbi_loadf_from_memory(bytesOf(data), int(data.size()), &x, &y, &comp, 3);
@@ -467,6 +528,7 @@ ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data) {
   image.reserved = std::move(reserved);
   image.pixels.assign(pixels, pixels + size_t(x) * size_t(y) * 3);
   stbi_image_free(pixels);
+  keepImage(&DecodedImages::rgbFloat, data, x, y, image.pixels);
   return image;
 }
 

@@ -69,6 +69,20 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data);  
 // order given. If any fails, the error of the first failing path (in that order) is thrown.
 std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths);
 
+// While one of these is alive, an image file whose bytes equal those of one decoded before
+// is not decoded again: its pixels are copied from the first decoding (every check and the
+// --max-memory reservation still run on each load; only stb_image's decoding is skipped,
+// which is the larger part of setting up a scene with 2K JPEGs). For a program that sets the
+// same scenes up many times (the test program: each renders a scene at several sizes,
+// thread counts and methods); the decoded pixels are held until it ends. One at a time.
+class ScopedImageCache {
+ public:
+  ScopedImageCache();
+  ~ScopedImageCache();
+  ScopedImageCache(const ScopedImageCache&) = delete;
+  ScopedImageCache& operator=(const ScopedImageCache&) = delete;
+};
+
 // Linear RGB floats, rows as stb_image returns them (no flip).
 struct ImageRgbFloat {
   int width = 0;

@@ -7,6 +7,10 @@
 // $RASTER_TEST_CASE_EXCLUDE leaves out the test cases whose names match it (doctest's
 // --test-case-exclude: wildcards, commas between patterns), for a CI configuration that
 // runs a suite through ctest but has no use for some of its cases (tests/configs/tsan.sh).
+//
+// Decoded images are kept for the whole run (scenes::ScopedImageCache): the suites set the
+// same scenes up hundreds of times, and decoding their JPEGs was a quarter of the suite's
+// CPU time; every check of a file still runs on each load.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -14,6 +18,7 @@
 #include <iostream>
 #include <string>
 
+#include "io/assets.h"
 #include "scenes/registry.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +38,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  const scenes::ScopedImageCache decodedOnce;
   doctest::Context context(argc, argv);
   if (const char* exclude = std::getenv("RASTER_TEST_CASE_EXCLUDE"); exclude && *exclude)
     context.addFilter("test-case-exclude", exclude);

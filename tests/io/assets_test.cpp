@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,41 @@ TEST_CASE("the seven JPEGs load at their real sizes, rows as stb_image gives the
   REQUIRE(ref != nullptr);
   CHECK(std::equal(one.pixels.begin(), one.pixels.end(), ref));
   stbi_image_free(ref);
+}
+
+// The test program keeps decoded images for its whole run (tests/main.cpp): a file is
+// found by its bytes, not its name, and every check and the memory cap still hold on a hit.
+TEST_CASE("decoded images are reused only for the same bytes, and every check still runs") {
+  CHECK_THROWS_AS(scenes::ScopedImageCache(), std::logic_error);   // the program's is alive
+  TempFolder dir;
+  const std::string path = dir.file("image.jpg");
+  for (const std::string& j : {kJpegs[3], kJpegs[4], kJpegs[3]}) {   // the same name, new bytes each time
+    writeBytes(path, readBytes(realAsset(j)));
+    for (int load = 0; load < 2; ++load) {
+      INFO(j << ", load " << load);
+      const scenes::ImageRgba8 image = scenes::loadImageRgba8(path);
+      int w = 0, h = 0, c = 0;
+      stbi_set_flip_vertically_on_load_thread(0);
+      unsigned char* ref = stbi_load(path.c_str(), &w, &h, &c, 4);
+      REQUIRE(ref != nullptr);
+      CHECK(image.width == w);
+      CHECK(image.height == h);
+      REQUIRE(image.pixels.size() == size_t(w) * h * 4);
+      CHECK(std::equal(image.pixels.begin(), image.pixels.end(), ref));
+      stbi_image_free(ref);
+    }
+  }
+  // A file cut short after its whole self was decoded: refused as before.
+  const std::string whole = readBytes(realAsset(kJpegs[3]));
+  writeBytes(path, whole.substr(0, whole.size() / 2));
+  CHECK(errorOf([&] { scenes::loadImageRgba8(path); }).find("truncated") != std::string::npos);
+  // The memory cap: a hit reserves the decoded size as a decoding would.
+  writeBytes(path, whole);
+  const uint64_t previous = scenes::memory::cap();
+  scenes::memory::setCap(scenes::memory::reserved() + 1024);
+  const std::string refused = errorOf([&] { scenes::loadImageRgba8(path); });
+  scenes::memory::setCap(previous);
+  CHECK(refused.find("memory: decoding") != std::string::npos);
 }
 
 TEST_CASE("the HDR environment loads as 1024x512 finite non-negative RGB") {

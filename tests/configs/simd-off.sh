@@ -9,7 +9,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 # The command line at -O0, as in the ASan + UBSan configuration (asan-ubsan.sh says why): it
-# runs here only to render the images the scene suites compare.
+# runs here only inside the pipeline suites (softpipe's renders, the views and stability
+# suites' runs of the program), where the pipeline it calls is the libraries' -O1 code.
 cmake -S . -B build-simd-off -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -DNDEBUG" -DRASTER_AVX2=OFF \
   -DRASTER_COMMAND_LINE_OPTIONS=-O0 > /dev/null
 cmake --build build-simd-off -j"$(nproc)"

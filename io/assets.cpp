@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -66,10 +67,10 @@ std::string oneLine(std::string s) {
 template <class T>
 struct Decoded {
   int width = 0, height = 0;
-  std::vector<T> pixels;
+  SharedPixels<T> pixels;
 };
 template <class T>
-using DecodedByBytes = std::unordered_map<std::string, std::shared_ptr<const Decoded<T>>>;
+using DecodedByBytes = std::unordered_map<std::string, Decoded<T>>;
 struct DecodedImages {
   std::mutex lock;
   DecodedByBytes<uint8_t> rgba8;
@@ -78,21 +79,21 @@ struct DecodedImages {
 std::unique_ptr<DecodedImages> decodedImages;
 
 template <class T>
-std::shared_ptr<const Decoded<T>> cachedImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data) {
-  if (!decodedImages) return nullptr;
+std::optional<Decoded<T>> cachedImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data) {
+  if (!decodedImages) return std::nullopt;
   const std::lock_guard<std::mutex> held(decodedImages->lock);
   const DecodedByBytes<T>& images = (*decodedImages).*map;
   const auto found = images.find(data);
-  return found == images.end() ? nullptr : found->second;
+  if (found == images.end()) return std::nullopt;
+  return found->second;
 }
 
 template <class T>
 void keepImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data, int width, int height,
-               const std::vector<T>& pixels) {
+               const SharedPixels<T>& pixels) {
   if (!decodedImages) return;
-  auto copy = std::make_shared<const Decoded<T>>(Decoded<T>{width, height, pixels});
   const std::lock_guard<std::mutex> held(decodedImages->lock);
-  ((*decodedImages).*map).emplace(data, std::move(copy));
+  ((*decodedImages).*map).emplace(data, Decoded<T>{width, height, pixels});
 }
 
 std::string hexBytes(const std::string& data, size_t count) {
@@ -425,7 +426,7 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data) {
   image.width = w;
   image.height = h;
   image.reserved = std::move(reserved);
-  image.pixels.assign(pixels, pixels + size_t(w) * size_t(h) * 4);
+  image.pixels = SharedPixels<uint8_t>(std::vector<uint8_t>(pixels, pixels + size_t(w) * size_t(h) * 4));
   stbi_image_free(pixels);
   keepImage(&DecodedImages::rgba8, data, w, h, image.pixels);
   return image;
@@ -526,7 +527,7 @@ ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data) {
   image.width = x;
   image.height = y;
   image.reserved = std::move(reserved);
-  image.pixels.assign(pixels, pixels + size_t(x) * size_t(y) * 3);
+  image.pixels = SharedPixels<float>(std::vector<float>(pixels, pixels + size_t(x) * size_t(y) * 3));
   stbi_image_free(pixels);
   keepImage(&DecodedImages::rgbFloat, data, x, y, image.pixels);
   return image;

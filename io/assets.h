@@ -12,7 +12,9 @@
 #pragma once
 
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,12 +51,32 @@ MeshData parseCatMesh(const std::string& path, const std::string& text, ObjLoadI
 
 // ---- images -----------------------------------------------------------------------------------
 
+// Decoded texels: read-only once decoded, and shared by copies (ScopedImageCache hands out
+// the pixels it keeps without copying them). Reads like the std::vector it holds.
+template <class T>
+class SharedPixels {
+ public:
+  SharedPixels() = default;
+  explicit SharedPixels(std::vector<T> values) : values_(std::make_shared<const std::vector<T>>(std::move(values))) {}
+  const T* data() const { return values_ ? values_->data() : nullptr; }
+  size_t size() const { return values_ ? values_->size() : 0; }
+  bool empty() const { return size() == 0; }
+  const T* begin() const { return data(); }
+  const T* end() const { return data() + size(); }
+  const T& operator[](size_t i) const { return (*values_)[i]; }
+  friend bool operator==(const SharedPixels& a, const SharedPixels& b) { return std::equal(a.begin(), a.end(), b.begin(), b.end()); }
+  friend bool operator==(const SharedPixels& a, const std::vector<T>& b) { return std::equal(a.begin(), a.end(), b.begin(), b.end()); }
+
+ private:
+  std::shared_ptr<const std::vector<T>> values_;
+};
+
 // 8-bit RGBA, rows exactly as stb_image returns them (the file's first row first, no flip):
 // they are glTexImage2D's rows, so row 0 is t = 0.
 struct ImageRgba8 {
   int width = 0;
   int height = 0;
-  std::vector<uint8_t> pixels;   // width * height * 4
+  SharedPixels<uint8_t> pixels;   // width * height * 4
   memory::Reservation reserved;  // the pixels' share of --max-memory, reserved before decoding
 };
 
@@ -70,7 +92,7 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data);  
 std::vector<ImageRgba8> loadImagesRgba8(const std::vector<std::string>& paths);
 
 // While one of these is alive, an image file whose bytes equal those of one decoded before
-// is not decoded again: its pixels are copied from the first decoding (every check and the
+// is not decoded again: it shares the first decoding's pixels (every check and the
 // --max-memory reservation still run on each load; only stb_image's decoding is skipped,
 // which is the larger part of setting up a scene with 2K JPEGs). For a program that sets the
 // same scenes up many times (the test program: each renders a scene at several sizes,
@@ -87,7 +109,7 @@ class ScopedImageCache {
 struct ImageRgbFloat {
   int width = 0;
   int height = 0;
-  std::vector<float> pixels;     // width * height * 3
+  SharedPixels<float> pixels;     // width * height * 3
   memory::Reservation reserved;  // as ImageRgba8's
 };
 

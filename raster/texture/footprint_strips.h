@@ -71,7 +71,7 @@ inline bool makeStripCopy(Texture& t) {
   t.strips8 = {};
   if (!wantsStripCopy(t)) return false;
   const size_t width = size_t(t.width), strips = stripCount(t.height);
-  t.strips8.assign(stripCopyBytes(t), 0);
+  Texture::zeroedTexels(t.strips8, stripCopyBytes(t));
   for (size_t s = 0; s < strips; ++s)
     for (size_t j = 0; j < size_t(kStripRows) && s * kStripStep + j < size_t(t.height); ++j) {
       const uint8_t* row = &t.rgba8[(s * kStripStep + j) * width * 4];

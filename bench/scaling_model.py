@@ -1,0 +1,295 @@
+#!/usr/bin/python3
+"""Each scene's frame against its paper bound, and a model of its speed-up beyond 2 cores.
+
+Reads `raster bench SCENE --passes --json` runs (and `bench/tile_costs` per-tile costs) that
+a shell loop wrote into folders, and prints two Markdown tables per scene:
+
+  1. pass by pass, the paper bound (the counts below; docs/notes/
+     2026-12-02-paper-bounds-and-scaling.md derives each) beside the measured pass at 1 and
+     2 threads, and their ratio;
+  2. the scaling model at 1, 2, 4, 8, 16 and 32 threads: ours and llvmpipe's.
+
+The model, per pass p (times are medians over the runs):
+  S_p   serial work at 1 thread: the pass at the tiny size (--tiny runs, 16x16: one tile)
+        less the tile work of that tiny frame (--tiles-tiny: bench/tile_costs at 16x16; a
+        1024x1024 shadow map keeps its size, and its tiles are taken out here), i.e. vertex
+        shading, setup, binning, the pass's own overhead and the host's calls.
+  S2_p  the same at 2 threads, less the tiny tile work's makespan on 2 workers (what of
+        the serial work runs in parallel loops, large draws' vertices and setup, has
+        shrunk).
+  P_p   T1_p - S_p: the tile work, run as one parallel loop over the pass's tiles.
+  L_p(N) the makespan of that loop on N workers: the warm frame's per-tile costs
+        (--tiles, bench/tile_costs.cpp), cut into 16-row bands where the renderer cuts
+        them (more than one thread, fewer tiles than 8 x threads, a fullscreen pass),
+        handed in the renderer's order to whichever worker is free first; as a share of
+        the pass's summed tile cost, times P_p.
+  W_p   T2_p - S2_p - P_p * L_p(2): what the 2-thread pass loses beyond that (the wake-up
+        and join of its loops, two cores sharing L3 and memory); floored at 0, and carried
+        unchanged to every N.
+  T_N   sum over passes of S2_p + P_p * L_p(N) + W_p; speed-up T_1 / T_N.
+Amdahl's line beside it takes the share that did not scale at 2 threads,
+s = sum(S2_p + W_p) / sum(T1_p), with no tile limit: 1 / (s + (1 - s) / N).
+
+llvmpipe (Mesa 22.3): the draw module (vertex shading) and setup/binning run on the
+application's thread; only rasterization and shading run on its rasterizer threads,
+LP_NUM_THREADS capped at LP_MAX_THREADS = 32 (lp_limits.h), a task per 64x64 tile. Per pass
+its Karp-Flatt share e_p = 2 * T2_p / T1_p - 1 (clamped to [0, 1]) stays serial, the rest
+splits over min(N, 32, tiles) threads in whole tiles.
+
+Usage:
+  for r in 1 2 3; do for s in shadow deferred hdr pbr; do for t in 1 2; do
+    build/raster bench $s --threads $t --frames 9 --passes --quiet --json runs/full/${s}_t${t}_r$r.json
+    build/raster bench $s --size 16x16 --threads $t --frames 9 --passes --quiet --json runs/tiny/${s}_t${t}_r$r.json
+  done; build/tile_costs $s 640x480 1 3 > runs/tiles/${s}_r$r.json
+  build/tile_costs $s 16x16 1 3 > runs/tiles-tiny/${s}_r$r.json; done; done
+  bench/scaling_model.py --runs runs/full --tiny runs/tiny --tiles runs/tiles --tiles-tiny runs/tiles-tiny
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import re
+import statistics
+import sys
+
+SCENES = ["shadow", "deferred", "hdr", "pbr"]
+
+# The paper bound of each pass at 640x480 on 2 cores, ms: its arithmetic at the cores' peak
+# (4 eight-lane operations a cycle, 3.66 GHz, 2 cores: 29.3 G/s), its divisions at the
+# divider's rate (one 8-lane division per 3.5 cycles a core: 2.1 G/s on 2 cores), or its
+# texel fetches at the measured gather rate of their working set, the largest. Counts per
+# pass: lane groups of 8 from `raster render SCENE --view tile-cost` (its JSON), operations
+# per group from the ports (the note gives each line). On 1 core each bound doubles.
+# (label, kind, bound_ms, what binds it)
+BOUNDS = {
+    "shadow": [
+        ("shadow_map", "shadow map", 0.03, "store: 1024x1024 Z24 cleared and written (4 MiB); 20 triangles"),
+        ("final", "main", 0.39, "arithmetic: 26,119 groups x ~440 (3x3 PCF ~170, pow 100)"),
+    ],
+    "deferred": [
+        ("shadow_map", "shadow map", 0.1, "setup: 11,955 triangles x ~100, 1 M texels x 3/8"),
+        ("gbuffer", "G-buffer", 1.5, "fetch: minified 1K-2K JPEG maps, floor 8 / cat 6 elements a lane"),
+        ("ssao", "SSAO", 4.5, "arithmetic: 38,720 groups x ~3,380 (16 samples)"),
+        ("final", "lighting", 3.1, "arithmetic: 38,720 groups x ~2,350 (5x5 PCF ~450, 7 pow)"),
+    ],
+    "hdr": [
+        ("hdr_scene", "scene (visibility)", 0.17, "arithmetic: 24k vertices x ~36, 12,000 triangles x ~100, 9,201 bin entries x ~50, 11,571 groups x ~205"),
+        ("bloom_down_0", "bright", 0.030, "arithmetic: 9,760 groups x ~90"),
+        ("bloom_down_1", "down 1", 0.023, "arithmetic: 2,480 groups x ~270 (5 bilinear taps)"),
+        ("bloom_down_2", "down 2", 0.006, "arithmetic: 640 groups x ~270"),
+        ("bloom_down_3", "down 3", 0.002, "arithmetic: 170 groups x ~270"),
+        ("bloom_down_4", "down 4", 0.001, "arithmetic: 50 groups x ~270"),
+        ("bloom_up_3", "up 3", 0.003, "arithmetic: 170 groups x ~490 (9 taps, additive blend)"),
+        ("bloom_up_2", "up 2", 0.011, "arithmetic: 640 groups x ~490"),
+        ("bloom_up_1", "up 1", 0.041, "arithmetic: 2,480 groups x ~490"),
+        ("bloom_up_0", "up 0", 0.163, "arithmetic: 9,760 groups x ~490"),
+        ("final", "composite", 0.57, "arithmetic: 38,720 groups x ~435 (3 pow 300, 2 lookups 90)"),
+    ],
+    "pbr": [
+        ("shadow_cascade0", "cascade 0", 0.1, "setup: 11,954 triangles x ~100, texels x 3/8"),
+        ("shadow_cascade1", "cascade 1", 0.1, "as cascade 0"),
+        ("shadow_cascade2", "cascade 2", 0.1, "as cascade 0"),
+        ("gbuffer", "G-buffer", 1.5, "fetch: floor 8 / cat 6 elements a lane (10 / 36 MiB of maps)"),
+        ("ssao", "SSAO", 5.7, "arithmetic: 38,720 groups x ~4,350 (64 samples; divisions 4.8 ms, fetch 4.3 ms)"),
+        ("ssao_blur_h", "blur x", 0.20, "arithmetic: 38,720 groups x ~155 (9 NEAREST taps)"),
+        ("ssao_blur", "blur y", 0.20, "arithmetic: as blur x"),
+        ("final", "lighting", 2.04, "arithmetic: 25,550 groups x ~2,150 (5x5 PCF ~450, 19 pow) + 13,170 sky groups x ~364"),
+    ],
+}
+
+# Passes whose tiles the renderer may cut into 16-row bands (a tile of at most 16
+# triangles, raster/renderer.cpp): the fullscreen passes, and the shadow scene's (28
+# triangles in all). Geometry passes of thousands of triangles keep whole tiles.
+BANDABLE = {
+    "shadow": {"shadow_map", "final"},
+    "deferred": {"ssao", "final"},
+    "hdr": {"bloom_down_0", "bloom_down_1", "bloom_down_2", "bloom_down_3", "bloom_down_4",
+            "bloom_up_3", "bloom_up_2", "bloom_up_1", "bloom_up_0", "final"},
+    "pbr": {"ssao", "ssao_blur_h", "ssao_blur", "final"},
+}
+TILE, REGION, LP_MAX_THREADS = 64, 16, 32
+
+
+def load_runs(folder, scene, threads):
+    runs = []
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_t{threads}_r*.json"))):
+        with open(path) as f:
+            runs.append(json.load(f))
+    return runs
+
+
+def median_passes(runs, backend):
+    """Per pass index: the median over runs of the pass's time, ms."""
+    key = "raster_ms" if backend == "raster" else "llvmpipe_ms"
+    count = min(len(r["passes"]) for r in runs)
+    return [statistics.median(r["passes"][i][key] for r in runs) for i in range(count)]
+
+
+def median_frame(runs, backend):
+    return statistics.median(next(b["median_ms"] for b in r["backends"] if b["name"] == backend) for r in runs)
+
+
+def load_tiles(folder, scene):
+    """Per pass label: per-tile cost, the median over runs of each tile's cycles; and the pass's shape."""
+    runs = []
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_r*.json"))):
+        with open(path) as f:
+            runs.append(json.load(f))
+    passes = {}
+    for i, p in enumerate(runs[0]["passes"]):
+        costs = [statistics.median(r["passes"][i]["tile_cycles"][t] for r in runs) for t in range(len(p["tile_cycles"]))]
+        passes[p["label"]] = {"costs": costs, "tiles_x": p["tiles_x"], "tiles_y": p["tiles_y"], "height": p["height"],
+                              "index": i, "ghz": statistics.median(r["tsc_ghz"] for r in runs)}
+    return passes
+
+
+def work_items(tiles, bandable, threads):
+    """The renderer's work items for `threads`: whole tiles, or 16-row bands of equal cost."""
+    costs, tx, ty, height = tiles["costs"], tiles["tiles_x"], tiles["tiles_y"], tiles["height"]
+    banded = bandable and threads > 1 and len(costs) < 8 * threads
+    if not banded:
+        return list(costs)
+    items = []
+    for t, c in enumerate(costs):
+        rows = min(TILE, height - (t // tx) * TILE)
+        bands = math.ceil(rows / REGION)
+        items.extend([c / bands] * bands)
+    return items
+
+
+def makespan(items, workers):
+    """Items handed in order to whichever worker is free first (TBB's loop with grain 1)."""
+    free = [0.0] * max(1, workers)
+    for c in items:
+        i = free.index(min(free))
+        free[i] += c
+    return max(free)
+
+
+def tile_ms(tiles):
+    """A pass's per-tile costs in ms (the counter's rate from the same run)."""
+    return [c / tiles["ghz"] / 1e6 for c in tiles["costs"]]
+
+
+def stage_breakdown(folder, scene, threads):
+    """The median over runs of `raster bench`'s per-frame stage times (its text output), ms."""
+    stages = {}
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_t{threads}_r*.txt"))):
+        with open(path) as f:
+            for line in f:
+                m = re.match(r"\s+(vertex shading|clip \+ setup|binning|rasterization|fragment shading|output merge)\s+([0-9.]+) ms", line)
+                if m:
+                    stages.setdefault(m.group(1), []).append(float(m.group(2)))
+    return {k: statistics.median(v) for k, v in stages.items()}
+
+
+def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list):
+    r1, r2 = load_runs(full, scene, 1), load_runs(full, scene, 2)
+    t1, t2 = median_passes(r1, "raster"), median_passes(r2, "raster")
+    l1, l2 = median_passes(r1, "llvmpipe"), median_passes(r2, "llvmpipe")
+    s1 = median_passes(load_runs(tiny, scene, 1), "raster")
+    s2 = median_passes(load_runs(tiny, scene, 2), "raster")
+    tile_passes, tiny_passes = load_tiles(tiles, scene), load_tiles(tiles_tiny, scene)
+    passes = []
+    for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
+        tt = tiny_passes[label]
+        tiny_ms = tile_ms(tt)
+        tiny_total = sum(tiny_ms)
+        tiny_share2 = makespan(work_items(tt, label in BANDABLE.get(scene, set()), 2), 2) / (sum(tt["costs"]) or 1.0)
+        S = min(max(s1[i] - tiny_total, 0.0), t1[i])
+        S2 = min(max(s2[i] - tiny_total * tiny_share2, 0.0), t2[i])
+        P = max(t1[i] - S, 0.0)
+        tp = tile_passes[label]
+        total = sum(tp["costs"]) or 1.0
+        bandable = label in BANDABLE.get(scene, set())
+        share = {n: makespan(work_items(tp, bandable, n), n) / total for n in thread_list}
+        W = max(t2[i] - S2 - P * share[2], 0.0)
+        tiles_count = len(tp["costs"])
+        passes.append({"label": label, "kind": kind, "bound_ms": bound, "binds": why, "t1_ms": t1[i], "t2_ms": t2[i],
+                       "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "serial_1t_ms": S, "serial_2t_ms": S2,
+                       "tile_work_ms": P, "waits_2t_ms": W, "tiles": tiles_count,
+                       "largest_tile_share": max(tp["costs"]) / total,
+                       "tile_makespan_share": share})
+    T1 = sum(p["t1_ms"] for p in passes)
+    model = {}
+    for n in thread_list:
+        if n == 1:
+            tn = T1
+        else:
+            tn = sum(p["serial_2t_ms"] + p["tile_work_ms"] * p["tile_makespan_share"][n] + p["waits_2t_ms"] for p in passes)
+        lp = 0.0
+        for p in passes:
+            e = min(max(2 * p["llvmpipe_t2_ms"] / p["llvmpipe_t1_ms"] - 1, 0.0), 1.0) if n > 1 else 0.0
+            k = min(n, LP_MAX_THREADS, p["tiles"])
+            lp += p["llvmpipe_t1_ms"] * (e + (1 - e) * math.ceil(p["tiles"] / k) / p["tiles"])
+        model[n] = {"raster_ms": tn, "speedup": T1 / tn, "llvmpipe_ms": lp,
+                    "llvmpipe_speedup": sum(p["llvmpipe_t1_ms"] for p in passes) / lp}
+    serial = sum(p["serial_2t_ms"] + p["waits_2t_ms"] for p in passes) / T1
+    for n in thread_list:
+        model[n]["amdahl"] = 1.0 / (serial + (1 - serial) / n)
+    return {"scene": scene, "passes": passes, "frame_1t_ms": median_frame(r1, "raster"),
+            "frame_2t_ms": median_frame(r2, "raster"), "llvmpipe_frame_1t_ms": median_frame(r1, "llvmpipe"),
+            "llvmpipe_frame_2t_ms": median_frame(r2, "llvmpipe"), "passes_1t_ms": T1,
+            "passes_2t_ms": sum(p["t2_ms"] for p in passes), "bound_2c_ms": sum(p["bound_ms"] for p in passes),
+            "serial_work_1t_share": sum(p["serial_1t_ms"] for p in passes) / T1,
+            "serial_work_2t_share": sum(p["serial_2t_ms"] for p in passes) / T1,
+            "waits_2t_share": sum(p["waits_2t_ms"] for p in passes) / T1, "amdahl_share": serial,
+            "stages_1t_ms": stage_breakdown(full, scene, 1), "stages_2t_ms": stage_breakdown(full, scene, 2),
+            "runs": {"full_1t": len(r1), "full_2t": len(r2)}, "model": model}
+
+
+def print_scene(m, thread_list):
+    s = m["scene"]
+    print(f"\n### {s}: frame {m['frame_1t_ms']:.2f} ms (1 thread), {m['frame_2t_ms']:.2f} ms (2 threads); "
+          f"bound {m['bound_2c_ms']:.2f} ms on 2 cores, {2 * m['bound_2c_ms']:.2f} on 1; "
+          f"frame / bound {m['frame_1t_ms'] / (2 * m['bound_2c_ms']):.1f}x (1), {m['frame_2t_ms'] / m['bound_2c_ms']:.1f}x (2)\n")
+    print("| pass | bound, 1 / 2 cores, ms | measured, 1 / 2 threads, ms | measured / bound, 1 / 2 | binds |")
+    print("| --- | ---: | ---: | ---: | --- |")
+    for p in m["passes"]:
+        b = p["bound_ms"]
+        print(f"| {p['kind']} | {2 * b:.3g} / {b:.3g} | {p['t1_ms']:.3f} / {p['t2_ms']:.3f} | "
+              f"{p['t1_ms'] / (2 * b):.1f} / {p['t2_ms'] / b:.1f} | {p['binds']} |")
+    st1, st2 = m["stages_1t_ms"], m["stages_2t_ms"]
+    print("\nstages per frame, 1 / 2 threads (tile stages summed over threads), ms: " + ", ".join(
+        f"{k} {st1.get(k, 0):.3f} / {st2.get(k, 0):.3f}" for k in st1))
+    print(f"\nserial work {100 * m['serial_work_1t_share']:.1f}% of the 1-thread passes "
+          f"({100 * m['serial_work_2t_share']:.1f}% still serial at 2 threads), waits at 2 threads "
+          f"{100 * m['waits_2t_share']:.1f}%: Amdahl share {100 * m['amdahl_share']:.1f}%\n")
+    print("| pass | serial 1t / 2t ms | tile work ms | waits 2t ms | tiles | largest tile | " +
+          " | ".join(f"L({n})" for n in thread_list if n > 1) + " |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | " + " | ".join("---:" for n in thread_list if n > 1) + " |")
+    for p in m["passes"]:
+        print(f"| {p['kind']} | {p['serial_1t_ms']:.3f} / {p['serial_2t_ms']:.3f} | {p['tile_work_ms']:.3f} | "
+              f"{p['waits_2t_ms']:.3f} | {p['tiles']} | {100 * p['largest_tile_share']:.1f}% | " +
+              " | ".join(f"{1 / p['tile_makespan_share'][n]:.1f}" for n in thread_list if n > 1) + " |")
+    print("\n| threads | ours ms | speed-up | Amdahl | llvmpipe ms | llvmpipe speed-up | llvmpipe / ours |")
+    print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    for n in thread_list:
+        x = m["model"][n]
+        print(f"| {n} | {x['raster_ms']:.2f} | {x['speedup']:.2f} | {x['amdahl']:.2f} | {x['llvmpipe_ms']:.2f} | "
+              f"{x['llvmpipe_speedup']:.2f} | {x['llvmpipe_ms'] / x['raster_ms']:.2f} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--runs", required=True, help="folder of full-size runs: SCENE_t{1,2}_rR.json")
+    parser.add_argument("--tiny", required=True, help="folder of --size 16x16 runs, the same names")
+    parser.add_argument("--tiles", required=True, help="folder of bench/tile_costs output at the full size: SCENE_rR.json")
+    parser.add_argument("--tiles-tiny", required=True, help="the same at the tiny size (16x16)")
+    parser.add_argument("--scenes", default=",".join(SCENES))
+    parser.add_argument("--threads", default="1,2,4,8,16,32", help="thread counts to model (must hold 1 and 2)")
+    parser.add_argument("--json", help="also write every figure to this file")
+    args = parser.parse_args()
+    thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
+    models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list) for s in args.scenes.split(",")]
+    for m in models:
+        print_scene(m, thread_list)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(models, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -40,8 +40,8 @@ Usage:
   for r in 1 2 3; do for s in shadow deferred hdr pbr; do for t in 1 2; do
     build/raster bench $s --threads $t --frames 9 --passes --quiet --json runs/full/${s}_t${t}_r$r.json
     build/raster bench $s --size 16x16 --threads $t --frames 9 --passes --quiet --json runs/tiny/${s}_t${t}_r$r.json
-  done; build/tile_costs $s 640x480 1 3 > runs/tiles/${s}_r$r.json
-  build/tile_costs $s 16x16 1 3 > runs/tiles-tiny/${s}_r$r.json; done; done
+  done; build/tile_costs $s 640x480 1 2 5 > runs/tiles/${s}_r$r.json
+  build/tile_costs $s 16x16 1 2 5 > runs/tiles-tiny/${s}_r$r.json; done; done
   bench/scaling_model.py --runs runs/full --tiny runs/tiny --tiles runs/tiles --tiles-tiny runs/tiles-tiny
 """
 import argparse

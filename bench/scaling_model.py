@@ -9,32 +9,31 @@ a shell loop wrote into folders, and prints two Markdown tables per scene:
      2 threads, and their ratio;
   2. the scaling model at 1, 2, 4, 8, 16 and 32 threads: ours and llvmpipe's.
 
-The model, per pass p (times are medians over the runs):
-  S_p   serial work at 1 thread: the pass at the tiny size (--tiny runs, 16x16: one tile)
-        less the tile work of that tiny frame (--tiles-tiny: bench/tile_costs at 16x16; a
-        1024x1024 shadow map keeps its size, and its tiles are taken out here), i.e. vertex
-        shading, setup, binning, the pass's own overhead and the host's calls.
-  S2_p  the same at 2 threads, less the tiny tile work's makespan on 2 workers (what of
-        the serial work runs in parallel loops, large draws' vertices and setup, has
-        shrunk).
-  P_p   T1_p - S_p: the tile work, run as one parallel loop over the pass's tiles.
-  L_p(N) the makespan of that loop on N workers: the warm frame's per-tile costs
-        (--tiles, bench/tile_costs.cpp), cut into 16-row bands where the renderer cuts
-        them (more than one thread, fewer tiles than 8 x threads, a fullscreen pass),
-        handed in the renderer's order to whichever worker is free first; as a share of
-        the pass's summed tile cost, times P_p.
-  W_p   T2_p - S2_p - P_p * L_p(2): what the 2-thread pass loses beyond that (the wake-up
-        and join of its loops, two cores sharing L3 and memory); floored at 0, and carried
-        unchanged to every N.
-  T_N   sum over passes of S2_p + P_p * L_p(N) + W_p; speed-up T_1 / T_N.
-Amdahl's line beside it takes the share that did not scale at 2 threads,
-s = sum(S2_p + W_p) / sum(T1_p), with no tile limit: 1 / (s + (1 - s) / N).
+The model, from medians of the runs:
+  e     the frame's serial share, Karp-Flatt from its 1- and 2-thread medians:
+        e = 2 T2 / T1 - 1 (clamped at 0): everything that did not halve (work no loop
+        runs in parallel, waits at the loops' ends and pass boundaries, binning's in-order
+        steps, the host's calls).
+  f_p   pass p's share of the frame's tile work, and its tiles' costs, from a warm
+        frame's per-tile cycles at 1 thread (--tiles: bench/tile_costs.cpp, each tile's
+        least over several frames).
+  L_p(N) the makespan of pass p's tiles on N workers, as a share of their sum: tiles cut
+        into 16-row bands where the renderer cuts them (more than one thread, fewer tiles
+        than 8 x threads, a fullscreen pass), handed in the renderer's order to whichever
+        worker is free first. A pass of few tiles, or one heavy tile, cannot use N.
+  T_N   T1 (e + (1 - e) sum_p f_p L_p(N) / sum_p f_p L_p(2) / 2): Amdahl with the
+        measured e, the parallel part slowed by each pass's tile limit relative to 2
+        threads (where e was measured; at N = 2 the model gives T2).
+Amdahl's line beside it has no tile limit: T1 (e + (1 - e) / N).
+The serial work alone (--tiny, optional): the frame at 16x16 less that frame's tile work
+(--tiles-tiny), a lower bound on e's serial part; the rest of e is waits.
 
 llvmpipe (Mesa 22.3): the draw module (vertex shading) and setup/binning run on the
 application's thread; only rasterization and shading run on its rasterizer threads,
 LP_NUM_THREADS capped at LP_MAX_THREADS = 32 (lp_limits.h), a task per 64x64 tile. Per pass
-its Karp-Flatt share e_p = 2 * T2_p / T1_p - 1 (clamped to [0, 1]) stays serial, the rest
-splits over min(N, 32, tiles) threads in whole tiles.
+its frame's Karp-Flatt share stays serial, the rest splits over min(N, 32) threads in whole
+64x64 tiles (no bands), weighted by llvmpipe's own pass times (--passes) and with this
+pipeline's per-tile costs standing in for its tiles' (the same geometry in the same tiles).
 
 Usage:
   for r in 1 2 3; do for s in shadow deferred hdr pbr; do for t in 1 2; do
@@ -184,65 +183,62 @@ def stage_breakdown(folder, scene, threads):
     return {k: statistics.median(v) for k, v in stages.items()}
 
 
+def karp_flatt(t1, t2):
+    return min(max(2.0 * t2 / t1 - 1.0, 0.0), 1.0)
+
+
 def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list):
     r1, r2 = load_runs(full, scene, 1), load_runs(full, scene, 2)
     t1, t2 = median_passes(r1, "raster"), median_passes(r2, "raster")
     l1, l2 = median_passes(r1, "llvmpipe"), median_passes(r2, "llvmpipe")
-    s1 = median_passes(load_runs(tiny, scene, 1), "raster")
-    s2 = median_passes(load_runs(tiny, scene, 2), "raster")
-    tile_passes, tiny_passes = load_tiles(tiles, scene), load_tiles(tiles_tiny, scene)
+    T1, T2 = median_frame(r1, "raster"), median_frame(r2, "raster")
+    LT1, LT2 = median_frame(r1, "llvmpipe"), median_frame(r2, "llvmpipe")
+    tile_passes = load_tiles(tiles, scene)
     passes = []
     for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
-        tt = tiny_passes[label]
-        tiny_ms = tile_ms(tt)
-        tiny_total = sum(tiny_ms)
-        tiny_share2 = makespan(work_items(tt, label in BANDABLE.get(scene, set()), 2), 2) / (sum(tt["costs"]) or 1.0)
-        S = min(max(s1[i] - tiny_total, 0.0), t1[i])
-        S2 = min(max(s2[i] - tiny_total * tiny_share2, 0.0), t2[i])
-        P = max(t1[i] - S, 0.0)
         tp = tile_passes[label]
-        total = sum(tp["costs"]) or 1.0
+        costs = tile_ms(tp)
         bandable = label in BANDABLE.get(scene, set())
-        share = {n: makespan(work_items(tp, bandable, n), n) / total for n in thread_list}
-        W = max(t2[i] - S2 - P * share[2], 0.0)
-        tiles_count = len(tp["costs"])
+        share = {n: makespan(work_items({**tp, "costs": costs}, bandable, n), n) / (sum(costs) or 1.0) for n in thread_list}
+        lp_share = {n: makespan(costs, min(n, LP_MAX_THREADS)) / (sum(costs) or 1.0) for n in thread_list}
         passes.append({"label": label, "kind": kind, "bound_ms": bound, "binds": why, "t1_ms": t1[i], "t2_ms": t2[i],
-                       "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "serial_1t_ms": S, "serial_2t_ms": S2,
-                       "tile_work_ms": P, "waits_2t_ms": W, "tiles": tiles_count,
-                       "largest_tile_share": max(tp["costs"]) / total,
-                       "tile_makespan_share": share})
-    T1 = sum(p["t1_ms"] for p in passes)
+                       "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "tile_work_ms": sum(costs),
+                       "tiles": len(costs), "largest_tile_share": max(costs) / (sum(costs) or 1.0),
+                       "makespan_share": share, "llvmpipe_makespan_share": lp_share})
+    work = sum(p["tile_work_ms"] for p in passes) or 1.0
+    lwork = sum(p["llvmpipe_t1_ms"] for p in passes) or 1.0
+    e, le = karp_flatt(T1, T2), karp_flatt(LT1, LT2)
+
+    def parallel(n, key, weight, total):
+        return sum(p[weight] / total * p[key][n] for p in passes)
+
     model = {}
     for n in thread_list:
-        if n == 1:
-            tn = T1
-        else:
-            tn = sum(p["serial_2t_ms"] + p["tile_work_ms"] * p["tile_makespan_share"][n] + p["waits_2t_ms"] for p in passes)
-        lp = 0.0
-        for p in passes:
-            e = min(max(2 * p["llvmpipe_t2_ms"] / p["llvmpipe_t1_ms"] - 1, 0.0), 1.0) if n > 1 else 0.0
-            k = min(n, LP_MAX_THREADS, p["tiles"])
-            lp += p["llvmpipe_t1_ms"] * (e + (1 - e) * math.ceil(p["tiles"] / k) / p["tiles"])
-        model[n] = {"raster_ms": tn, "speedup": T1 / tn, "llvmpipe_ms": lp,
-                    "llvmpipe_speedup": sum(p["llvmpipe_t1_ms"] for p in passes) / lp}
-    serial = sum(p["serial_2t_ms"] + p["waits_2t_ms"] for p in passes) / T1
-    for n in thread_list:
-        model[n]["amdahl"] = 1.0 / (serial + (1 - serial) / n)
-    return {"scene": scene, "passes": passes, "frame_1t_ms": median_frame(r1, "raster"),
-            "frame_2t_ms": median_frame(r2, "raster"), "llvmpipe_frame_1t_ms": median_frame(r1, "llvmpipe"),
-            "llvmpipe_frame_2t_ms": median_frame(r2, "llvmpipe"), "passes_1t_ms": T1,
-            "passes_2t_ms": sum(p["t2_ms"] for p in passes), "bound_2c_ms": sum(p["bound_ms"] for p in passes),
-            "serial_work_1t_share": sum(p["serial_1t_ms"] for p in passes) / T1,
-            "serial_work_2t_share": sum(p["serial_2t_ms"] for p in passes) / T1,
-            "waits_2t_share": sum(p["waits_2t_ms"] for p in passes) / T1, "amdahl_share": serial,
-            "stages_1t_ms": stage_breakdown(full, scene, 1), "stages_2t_ms": stage_breakdown(full, scene, 2),
-            "runs": {"full_1t": len(r1), "full_2t": len(r2)}, "model": model}
+        ours = parallel(n, "makespan_share", "tile_work_ms", work) / (2 * parallel(2, "makespan_share", "tile_work_ms", work))
+        theirs = parallel(n, "llvmpipe_makespan_share", "llvmpipe_t1_ms", lwork) / (
+            2 * parallel(2, "llvmpipe_makespan_share", "llvmpipe_t1_ms", lwork))
+        tn = T1 if n == 1 else T1 * (e + (1 - e) * ours)
+        ln = LT1 if n == 1 else LT1 * (le + (1 - le) * theirs)
+        model[n] = {"raster_ms": tn, "speedup": T1 / tn, "amdahl": 1.0 / (e + (1 - e) / n),
+                    "tile_limit": 1.0 / ours if n > 1 else 1.0,
+                    "llvmpipe_ms": ln, "llvmpipe_speedup": LT1 / ln}
+    result = {"scene": scene, "passes": passes, "frame_1t_ms": T1, "frame_2t_ms": T2, "llvmpipe_frame_1t_ms": LT1,
+              "llvmpipe_frame_2t_ms": LT2, "bound_2c_ms": sum(p["bound_ms"] for p in passes), "serial_share": e,
+              "llvmpipe_serial_share": le, "stages_1t_ms": stage_breakdown(full, scene, 1),
+              "stages_2t_ms": stage_breakdown(full, scene, 2), "runs": {"1t": len(r1), "2t": len(r2)}, "model": model}
+    if tiny and tiles_tiny:
+        s1 = median_frame(load_runs(tiny, scene, 1), "raster")
+        tiny_tiles = load_tiles(tiles_tiny, scene)
+        tiny_work = sum(sum(tile_ms(tp)) for tp in tiny_tiles.values())
+        result["serial_work_ms"] = max(s1 - tiny_work, 0.0)
+        result["serial_work_share"] = result["serial_work_ms"] / T1
+    return result
 
 
 def print_scene(m, thread_list):
     s = m["scene"]
     print(f"\n### {s}: frame {m['frame_1t_ms']:.2f} ms (1 thread), {m['frame_2t_ms']:.2f} ms (2 threads); "
-          f"bound {m['bound_2c_ms']:.2f} ms on 2 cores, {2 * m['bound_2c_ms']:.2f} on 1; "
+          f"bound {2 * m['bound_2c_ms']:.2f} ms on 1 core, {m['bound_2c_ms']:.2f} on 2; "
           f"frame / bound {m['frame_1t_ms'] / (2 * m['bound_2c_ms']):.1f}x (1), {m['frame_2t_ms'] / m['bound_2c_ms']:.1f}x (2)\n")
     print("| pass | bound, 1 / 2 cores, ms | measured, 1 / 2 threads, ms | measured / bound, 1 / 2 | binds |")
     print("| --- | ---: | ---: | ---: | --- |")
@@ -251,19 +247,21 @@ def print_scene(m, thread_list):
         print(f"| {p['kind']} | {2 * b:.3g} / {b:.3g} | {p['t1_ms']:.3f} / {p['t2_ms']:.3f} | "
               f"{p['t1_ms'] / (2 * b):.1f} / {p['t2_ms'] / b:.1f} | {p['binds']} |")
     st1, st2 = m["stages_1t_ms"], m["stages_2t_ms"]
-    print("\nstages per frame, 1 / 2 threads (tile stages summed over threads), ms: " + ", ".join(
-        f"{k} {st1.get(k, 0):.3f} / {st2.get(k, 0):.3f}" for k in st1))
-    print(f"\nserial work {100 * m['serial_work_1t_share']:.1f}% of the 1-thread passes "
-          f"({100 * m['serial_work_2t_share']:.1f}% still serial at 2 threads), waits at 2 threads "
-          f"{100 * m['waits_2t_share']:.1f}%: Amdahl share {100 * m['amdahl_share']:.1f}%\n")
-    print("| pass | serial 1t / 2t ms | tile work ms | waits 2t ms | tiles | largest tile | " +
-          " | ".join(f"L({n})" for n in thread_list if n > 1) + " |")
-    print("| --- | ---: | ---: | ---: | ---: | ---: | " + " | ".join("---:" for n in thread_list if n > 1) + " |")
+    if st1:
+        print("\nstages per frame, 1 / 2 threads (tile stages summed over threads), ms: " + ", ".join(
+            f"{k} {st1.get(k, 0):.3f} / {st2.get(k, 0):.3f}" for k in st1))
+    extra = ""
+    if "serial_work_ms" in m:
+        extra = f"; serial work alone (16x16 frame less its tiles) {m['serial_work_ms']:.3f} ms, {100 * m['serial_work_share']:.1f}%"
+    print(f"\nserial share (Karp-Flatt, 1 and 2 threads): ours {100 * m['serial_share']:.1f}%, "
+          f"llvmpipe's {100 * m['llvmpipe_serial_share']:.1f}%{extra}\n")
+    ns = [n for n in thread_list if n > 1]
+    print("| pass | tile work, 1 thread, ms | tiles | largest tile | " + " | ".join(f"speed-up of its tiles at {n}" for n in ns) + " |")
+    print("| --- | ---: | ---: | ---: | " + " | ".join("---:" for n in ns) + " |")
     for p in m["passes"]:
-        print(f"| {p['kind']} | {p['serial_1t_ms']:.3f} / {p['serial_2t_ms']:.3f} | {p['tile_work_ms']:.3f} | "
-              f"{p['waits_2t_ms']:.3f} | {p['tiles']} | {100 * p['largest_tile_share']:.1f}% | " +
-              " | ".join(f"{1 / p['tile_makespan_share'][n]:.1f}" for n in thread_list if n > 1) + " |")
-    print("\n| threads | ours ms | speed-up | Amdahl | llvmpipe ms | llvmpipe speed-up | llvmpipe / ours |")
+        print(f"| {p['kind']} | {p['tile_work_ms']:.3f} | {p['tiles']} | {100 * p['largest_tile_share']:.1f}% | " +
+              " | ".join(f"{1 / p['makespan_share'][n]:.1f}" for n in ns) + " |")
+    print("\n| threads | ours ms | speed-up | Amdahl alone | llvmpipe ms | llvmpipe speed-up | llvmpipe / ours |")
     print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for n in thread_list:
         x = m["model"][n]
@@ -274,9 +272,9 @@ def print_scene(m, thread_list):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--runs", required=True, help="folder of full-size runs: SCENE_t{1,2}_rR.json")
-    parser.add_argument("--tiny", required=True, help="folder of --size 16x16 runs, the same names")
+    parser.add_argument("--tiny", help="folder of --size 16x16 runs, the same names (optional: serial work alone)")
     parser.add_argument("--tiles", required=True, help="folder of bench/tile_costs output at the full size: SCENE_rR.json")
-    parser.add_argument("--tiles-tiny", required=True, help="the same at the tiny size (16x16)")
+    parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
     parser.add_argument("--scenes", default=",".join(SCENES))
     parser.add_argument("--threads", default="1,2,4,8,16,32", help="thread counts to model (must hold 1 and 2)")
     parser.add_argument("--json", help="also write every figure to this file")

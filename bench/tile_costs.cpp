@@ -3,8 +3,9 @@
 // after WARM_FRAMES frames of the same scene in the same process, so that first-touch page
 // faults and cold caches are not charged to the first tiles; with RECORDED_FRAMES > 1 each
 // tile's least time over that many recorded frames (a tile takes well under a millisecond,
-// so on a shared host most frames run it unpreempted, and the least is the unloaded
-// cost). Prints one JSON object:
+// so on a shared host most frames run it unpreempted; a busy host's lower clock and
+// shared caches still slow it, so read the tiles' shares, not their times). Prints one
+// JSON object:
 // {"scene", "size", "threads", "tsc_ghz", "passes": [{"label", "width", "height", "tiles_x",
 // "tiles_y", "triangles", "tile_cycles": [...]}]}. bench/scaling_model.py reads it (--tiles).
 //

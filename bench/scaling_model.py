@@ -187,12 +187,14 @@ def karp_flatt(t1, t2):
     return min(max(2.0 * t2 / t1 - 1.0, 0.0), 1.0)
 
 
-def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list):
+def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
     r1, r2 = load_runs(full, scene, 1), load_runs(full, scene, 2)
     t1, t2 = median_passes(r1, "raster"), median_passes(r2, "raster")
     l1, l2 = median_passes(r1, "llvmpipe"), median_passes(r2, "llvmpipe")
     T1, T2 = median_frame(r1, "raster"), median_frame(r2, "raster")
     LT1, LT2 = median_frame(r1, "llvmpipe"), median_frame(r2, "llvmpipe")
+    if frames:   # --frames: frame medians measured elsewhere (a quieter hour) in place of the runs'
+        T1, T2, LT1, LT2 = frames
     tile_passes = load_tiles(tiles, scene)
     passes = []
     for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
@@ -277,10 +279,18 @@ def main():
     parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
     parser.add_argument("--scenes", default=",".join(SCENES))
     parser.add_argument("--threads", default="1,2,4,8,16,32", help="thread counts to model (must hold 1 and 2)")
+    parser.add_argument("--frames", action="append", default=[], metavar="SCENE=T1,T2,LT1,LT2",
+                        help="the frame medians (ms: ours at 1 and 2 threads, llvmpipe's at 1 and 2) to take the serial "
+                             "shares from, in place of --runs' (e.g. a quieter hour's run_benchmarks.py); repeatable")
     parser.add_argument("--json", help="also write every figure to this file")
     args = parser.parse_args()
     thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
-    models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list) for s in args.scenes.split(",")]
+    frames = {}
+    for item in args.frames:
+        name, values = item.split("=", 1)
+        frames[name] = [float(v) for v in values.split(",")]
+    models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
+              for s in args.scenes.split(",")]
     for m in models:
         print_scene(m, thread_list)
     if args.json:

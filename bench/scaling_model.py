@@ -28,7 +28,7 @@ Amdahl's line beside it has no tile limit: T1 (e + (1 - e) / N).
 The serial work alone (--tiny, optional): the frame at 16x16 less that frame's tile work
 (--tiles-tiny), a lower bound on e's serial part; the rest of e is waits.
 
-llvmpipe (Mesa 22.3): the draw module (vertex shading) and setup/binning run on the
+llvmpipe (Mesa): the draw module (vertex shading) and setup/binning run on the
 application's thread; only rasterization and shading run on its rasterizer threads,
 LP_NUM_THREADS capped at LP_MAX_THREADS = 32 (lp_limits.h), a task per 64x64 tile. Per pass
 its frame's Karp-Flatt share stays serial, the rest splits over min(N, 32) threads in whole

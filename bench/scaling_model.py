@@ -195,6 +195,7 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
     LT1, LT2 = median_frame(r1, "llvmpipe"), median_frame(r2, "llvmpipe")
     if frames:   # --frames: frame medians measured elsewhere (a quieter hour) in place of the runs'
         T1, T2, LT1, LT2 = frames
+    passes_note = " (the runs' passes, not the hour of --frames)" if frames else ""
     tile_passes = load_tiles(tiles, scene)
     passes = []
     for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
@@ -227,7 +228,8 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
     result = {"scene": scene, "passes": passes, "frame_1t_ms": T1, "frame_2t_ms": T2, "llvmpipe_frame_1t_ms": LT1,
               "llvmpipe_frame_2t_ms": LT2, "bound_2c_ms": sum(p["bound_ms"] for p in passes), "serial_share": e,
               "llvmpipe_serial_share": le, "stages_1t_ms": stage_breakdown(full, scene, 1),
-              "stages_2t_ms": stage_breakdown(full, scene, 2), "runs": {"1t": len(r1), "2t": len(r2)}, "model": model}
+              "stages_2t_ms": stage_breakdown(full, scene, 2), "runs": {"1t": len(r1), "2t": len(r2)}, "model": model,
+              "passes_note": passes_note}
     if tiny and tiles_tiny:
         s1 = median_frame(load_runs(tiny, scene, 1), "raster")
         tiny_tiles = load_tiles(tiles_tiny, scene)
@@ -242,7 +244,7 @@ def print_scene(m, thread_list):
     print(f"\n### {s}: frame {m['frame_1t_ms']:.2f} ms (1 thread), {m['frame_2t_ms']:.2f} ms (2 threads); "
           f"bound {2 * m['bound_2c_ms']:.2f} ms on 1 core, {m['bound_2c_ms']:.2f} on 2; "
           f"frame / bound {m['frame_1t_ms'] / (2 * m['bound_2c_ms']):.1f}x (1), {m['frame_2t_ms'] / m['bound_2c_ms']:.1f}x (2)\n")
-    print("| pass | bound, 1 / 2 cores, ms | measured, 1 / 2 threads, ms | measured / bound, 1 / 2 | binds |")
+    print(f"| pass | bound, 1 / 2 cores, ms | measured{m['passes_note']}, 1 / 2 threads, ms | measured / bound, 1 / 2 | binds |")
     print("| --- | ---: | ---: | ---: | --- |")
     for p in m["passes"]:
         b = p["bound_ms"]

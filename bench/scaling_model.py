@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Each scene's frame against its paper bound, and a model of its speed-up beyond 2 cores.
+
+Reads `raster bench SCENE --passes --json` runs (and `bench/tile_costs` per-tile costs) that
+a shell loop wrote into folders, and prints two Markdown tables per scene:
+
+  1. pass by pass, the paper bound (the counts below; docs/notes/
+     2026-12-02-paper-bounds-and-scaling.md derives each) beside the measured pass at 1 and
+     2 threads, and their ratio;
+  2. the scaling model at 1, 2, 4, 8, 16 and 32 threads: ours and llvmpipe's.
+
+The model, from medians of the runs:
+  e     the frame's serial share, Karp-Flatt from its 1- and 2-thread medians:
+        e = 2 T2 / T1 - 1 (clamped at 0): everything that did not halve (work no loop
+        runs in parallel, waits at the loops' ends and pass boundaries, binning's in-order
+        steps, the host's calls).
+  f_p   pass p's share of the frame's tile work, and its tiles' costs, from a warm
+        frame's per-tile cycles at 1 thread (--tiles: bench/tile_costs.cpp, each tile's
+        least over several frames).
+  L_p(N) the makespan of pass p's tiles on N workers, as a share of their sum: tiles cut
+        into 16-row bands where the renderer cuts them (more than one thread, fewer tiles
+        than 8 x threads, a fullscreen pass), handed in the renderer's order to whichever
+        worker is free first. A pass of few tiles, or one heavy tile, cannot use N.
+  T_N   T1 (e + (1 - e) sum_p f_p L_p(N) / sum_p f_p L_p(2) / 2): Amdahl with the
+        measured e, the parallel part slowed by each pass's tile limit relative to 2
+        threads (where e was measured; at N = 2 the model gives T2).
+Amdahl's line beside it has no tile limit: T1 (e + (1 - e) / N).
+The serial work alone (--tiny, optional): the frame at 16x16 less that frame's tile work
+(--tiles-tiny), a lower bound on e's serial part; the rest of e is waits.
+
+llvmpipe (Mesa): the draw module (vertex shading) and setup/binning run on the
+application's thread; only rasterization and shading run on its rasterizer threads,
+LP_NUM_THREADS capped at LP_MAX_THREADS = 32 (lp_limits.h), a task per 64x64 tile. Per pass
+its frame's Karp-Flatt share stays serial, the rest splits over min(N, 32) threads in whole
+64x64 tiles (no bands), weighted by llvmpipe's own pass times (--passes) and with this
+pipeline's per-tile costs standing in for its tiles' (the same geometry in the same tiles).
+
+Usage:
+  for r in 1 2 3; do for s in shadow deferred hdr pbr; do for t in 1 2; do
+    build/raster bench $s --threads $t --frames 9 --passes --quiet --json runs/full/${s}_t${t}_r$r.json
+    build/raster bench $s --size 16x16 --threads $t --frames 9 --passes --quiet --json runs/tiny/${s}_t${t}_r$r.json
+  done; build/tile_costs $s 640x480 1 2 5 > runs/tiles/${s}_r$r.json
+  build/tile_costs $s 16x16 1 2 5 > runs/tiles-tiny/${s}_r$r.json; done; done
+  bench/scaling_model.py --runs runs/full --tiny runs/tiny --tiles runs/tiles --tiles-tiny runs/tiles-tiny
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import re
+import statistics
+import sys
+
+SCENES = ["shadow", "deferred", "hdr", "pbr"]
+
+# The paper bound of each pass at 640x480 on 2 cores, ms: its arithmetic at the cores' peak
+# (4 eight-lane operations a cycle, 3.66 GHz, 2 cores: 29.3 G/s), its divisions at the
+# divider's rate (one 8-lane division per 3.5 cycles a core: 2.1 G/s on 2 cores), or its
+# texel fetches at the measured gather rate of their working set, the largest. Counts per
+# pass: lane groups of 8 from `raster render SCENE --view tile-cost` (its JSON), operations
+# per group from the ports (the note gives each line). On 1 core each bound doubles.
+# (label, kind, bound_ms, what binds it)
+BOUNDS = {
+    "shadow": [
+        ("shadow_map", "shadow map", 0.03, "store: 1024x1024 Z24 cleared and written (4 MiB); 20 triangles"),
+        ("final", "main", 0.39, "arithmetic: 26,119 groups x ~440 (3x3 PCF ~170, pow 100)"),
+    ],
+    "deferred": [
+        ("shadow_map", "shadow map", 0.1, "setup: 11,955 triangles x ~100, 1 M texels x 3/8"),
+        ("gbuffer", "G-buffer", 1.5, "fetch: minified 1K-2K JPEG maps, floor 8 / cat 6 elements a lane"),
+        ("ssao", "SSAO", 4.5, "arithmetic: 38,720 groups x ~3,380 (16 samples)"),
+        ("final", "lighting", 3.1, "arithmetic: 38,720 groups x ~2,350 (5x5 PCF ~450, 7 pow)"),
+    ],
+    "hdr": [
+        ("hdr_scene", "scene (visibility)", 0.17, "arithmetic: 24k vertices x ~36, 12,000 triangles x ~100, 9,201 bin entries x ~50, 11,571 groups x ~205"),
+        ("bloom_down_0", "bright", 0.030, "arithmetic: 9,760 groups x ~90"),
+        ("bloom_down_1", "down 1", 0.023, "arithmetic: 2,480 groups x ~270 (5 bilinear taps)"),
+        ("bloom_down_2", "down 2", 0.006, "arithmetic: 640 groups x ~270"),
+        ("bloom_down_3", "down 3", 0.002, "arithmetic: 170 groups x ~270"),
+        ("bloom_down_4", "down 4", 0.001, "arithmetic: 50 groups x ~270"),
+        ("bloom_up_3", "up 3", 0.003, "arithmetic: 170 groups x ~490 (9 taps, additive blend)"),
+        ("bloom_up_2", "up 2", 0.011, "arithmetic: 640 groups x ~490"),
+        ("bloom_up_1", "up 1", 0.041, "arithmetic: 2,480 groups x ~490"),
+        ("bloom_up_0", "up 0", 0.163, "arithmetic: 9,760 groups x ~490"),
+        ("final", "composite", 0.57, "arithmetic: 38,720 groups x ~435 (3 pow 300, 2 lookups 90)"),
+    ],
+    "pbr": [
+        ("shadow_cascade0", "cascade 0", 0.1, "setup: 11,954 triangles x ~100, texels x 3/8"),
+        ("shadow_cascade1", "cascade 1", 0.1, "as cascade 0"),
+        ("shadow_cascade2", "cascade 2", 0.1, "as cascade 0"),
+        ("gbuffer", "G-buffer", 1.5, "fetch: floor 8 / cat 6 elements a lane (10 / 36 MiB of maps)"),
+        ("ssao", "SSAO", 5.7, "arithmetic: 38,720 groups x ~4,350 (64 samples; divisions 4.8 ms, fetch 4.3 ms)"),
+        ("ssao_blur_h", "blur x", 0.20, "arithmetic: 38,720 groups x ~155 (9 NEAREST taps)"),
+        ("ssao_blur", "blur y", 0.20, "arithmetic: as blur x"),
+        ("final", "lighting", 2.04, "arithmetic: 25,550 groups x ~2,150 (5x5 PCF ~450, 19 pow) + 13,170 sky groups x ~364"),
+    ],
+}
+
+# Passes whose tiles the renderer may cut into 16-row bands (a tile of at most 16
+# triangles, raster/renderer.cpp): the fullscreen passes, and the shadow scene's (28
+# triangles in all). Geometry passes of thousands of triangles keep whole tiles.
+BANDABLE = {
+    "shadow": {"shadow_map", "final"},
+    "deferred": {"ssao", "final"},
+    "hdr": {"bloom_down_0", "bloom_down_1", "bloom_down_2", "bloom_down_3", "bloom_down_4",
+            "bloom_up_3", "bloom_up_2", "bloom_up_1", "bloom_up_0", "final"},
+    "pbr": {"ssao", "ssao_blur_h", "ssao_blur", "final"},
+}
+TILE, REGION, LP_MAX_THREADS = 64, 16, 32
+
+
+def load_runs(folder, scene, threads):
+    runs = []
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_t{threads}_r*.json"))):
+        with open(path) as f:
+            runs.append(json.load(f))
+    return runs
+
+
+def median_passes(runs, backend):
+    """Per pass index: the median over runs of the pass's time, ms."""
+    key = "raster_ms" if backend == "raster" else "llvmpipe_ms"
+    count = min(len(r["passes"]) for r in runs)
+    return [statistics.median(r["passes"][i][key] for r in runs) for i in range(count)]
+
+
+def median_frame(runs, backend):
+    return statistics.median(next(b["median_ms"] for b in r["backends"] if b["name"] == backend) for r in runs)
+
+
+def load_tiles(folder, scene):
+    """Per pass label: per-tile cost, the median over runs of each tile's cycles; and the pass's shape."""
+    runs = []
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_r*.json"))):
+        with open(path) as f:
+            runs.append(json.load(f))
+    passes = {}
+    for i, p in enumerate(runs[0]["passes"]):
+        costs = [statistics.median(r["passes"][i]["tile_cycles"][t] for r in runs) for t in range(len(p["tile_cycles"]))]
+        passes[p["label"]] = {"costs": costs, "tiles_x": p["tiles_x"], "tiles_y": p["tiles_y"], "height": p["height"],
+                              "index": i, "ghz": statistics.median(r["tsc_ghz"] for r in runs)}
+    return passes
+
+
+def work_items(tiles, bandable, threads):
+    """The renderer's work items for `threads`: whole tiles, or 16-row bands of equal cost."""
+    costs, tx, ty, height = tiles["costs"], tiles["tiles_x"], tiles["tiles_y"], tiles["height"]
+    banded = bandable and threads > 1 and len(costs) < 8 * threads
+    if not banded:
+        return list(costs)
+    items = []
+    for t, c in enumerate(costs):
+        rows = min(TILE, height - (t // tx) * TILE)
+        bands = math.ceil(rows / REGION)
+        items.extend([c / bands] * bands)
+    return items
+
+
+def makespan(items, workers):
+    """Items handed in order to whichever worker is free first (TBB's loop with grain 1)."""
+    free = [0.0] * max(1, workers)
+    for c in items:
+        i = free.index(min(free))
+        free[i] += c
+    return max(free)
+
+
+def tile_ms(tiles):
+    """A pass's per-tile costs in ms (the counter's rate from the same run)."""
+    return [c / tiles["ghz"] / 1e6 for c in tiles["costs"]]
+
+
+def stage_breakdown(folder, scene, threads):
+    """The median over runs of `raster bench`'s per-frame stage times (its text output), ms."""
+    stages = {}
+    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_t{threads}_r*.txt"))):
+        with open(path) as f:
+            for line in f:
+                m = re.match(r"\s+(vertex shading|clip \+ setup|binning|rasterization|fragment shading|output merge)\s+([0-9.]+) ms", line)
+                if m:
+                    stages.setdefault(m.group(1), []).append(float(m.group(2)))
+    return {k: statistics.median(v) for k, v in stages.items()}
+
+
+def karp_flatt(t1, t2):
+    return min(max(2.0 * t2 / t1 - 1.0, 0.0), 1.0)
+
+
+def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
+    r1, r2 = load_runs(full, scene, 1), load_runs(full, scene, 2)
+    t1, t2 = median_passes(r1, "raster"), median_passes(r2, "raster")
+    l1, l2 = median_passes(r1, "llvmpipe"), median_passes(r2, "llvmpipe")
+    T1, T2 = median_frame(r1, "raster"), median_frame(r2, "raster")
+    LT1, LT2 = median_frame(r1, "llvmpipe"), median_frame(r2, "llvmpipe")
+    if frames:   # --frames: frame medians measured elsewhere (a quieter hour) in place of the runs'
+        T1, T2, LT1, LT2 = frames
+    passes_note = " (the runs' passes, not the hour of --frames)" if frames else ""
+    tile_passes = load_tiles(tiles, scene)
+    passes = []
+    for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
+        tp = tile_passes[label]
+        costs = tile_ms(tp)
+        bandable = label in BANDABLE.get(scene, set())
+        share = {n: makespan(work_items({**tp, "costs": costs}, bandable, n), n) / (sum(costs) or 1.0) for n in thread_list}
+        lp_share = {n: makespan(costs, min(n, LP_MAX_THREADS)) / (sum(costs) or 1.0) for n in thread_list}
+        passes.append({"label": label, "kind": kind, "bound_ms": bound, "binds": why, "t1_ms": t1[i], "t2_ms": t2[i],
+                       "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "tile_work_ms": sum(costs),
+                       "tiles": len(costs), "largest_tile_share": max(costs) / (sum(costs) or 1.0),
+                       "makespan_share": share, "llvmpipe_makespan_share": lp_share})
+    work = sum(p["tile_work_ms"] for p in passes) or 1.0
+    lwork = sum(p["llvmpipe_t1_ms"] for p in passes) or 1.0
+    e, le = karp_flatt(T1, T2), karp_flatt(LT1, LT2)
+
+    def parallel(n, key, weight, total):
+        return sum(p[weight] / total * p[key][n] for p in passes)
+
+    model = {}
+    for n in thread_list:
+        ours = parallel(n, "makespan_share", "tile_work_ms", work) / (2 * parallel(2, "makespan_share", "tile_work_ms", work))
+        theirs = parallel(n, "llvmpipe_makespan_share", "llvmpipe_t1_ms", lwork) / (
+            2 * parallel(2, "llvmpipe_makespan_share", "llvmpipe_t1_ms", lwork))
+        tn = T1 if n == 1 else T1 * (e + (1 - e) * ours)
+        ln = LT1 if n == 1 else LT1 * (le + (1 - le) * theirs)
+        model[n] = {"raster_ms": tn, "speedup": T1 / tn, "amdahl": 1.0 / (e + (1 - e) / n),
+                    "tile_limit": 1.0 / ours if n > 1 else 1.0,
+                    "llvmpipe_ms": ln, "llvmpipe_speedup": LT1 / ln}
+    result = {"scene": scene, "passes": passes, "frame_1t_ms": T1, "frame_2t_ms": T2, "llvmpipe_frame_1t_ms": LT1,
+              "llvmpipe_frame_2t_ms": LT2, "bound_2c_ms": sum(p["bound_ms"] for p in passes), "serial_share": e,
+              "llvmpipe_serial_share": le, "stages_1t_ms": stage_breakdown(full, scene, 1),
+              "stages_2t_ms": stage_breakdown(full, scene, 2), "runs": {"1t": len(r1), "2t": len(r2)}, "model": model,
+              "passes_note": passes_note}
+    if tiny and tiles_tiny:
+        s1 = median_frame(load_runs(tiny, scene, 1), "raster")
+        tiny_tiles = load_tiles(tiles_tiny, scene)
+        tiny_work = sum(sum(tile_ms(tp)) for tp in tiny_tiles.values())
+        result["serial_work_ms"] = max(s1 - tiny_work, 0.0)
+        result["serial_work_share"] = result["serial_work_ms"] / T1
+    return result
+
+
+def print_scene(m, thread_list):
+    s = m["scene"]
+    print(f"\n### {s}: frame {m['frame_1t_ms']:.2f} ms (1 thread), {m['frame_2t_ms']:.2f} ms (2 threads); "
+          f"bound {2 * m['bound_2c_ms']:.2f} ms on 1 core, {m['bound_2c_ms']:.2f} on 2; "
+          f"frame / bound {m['frame_1t_ms'] / (2 * m['bound_2c_ms']):.1f}x (1), {m['frame_2t_ms'] / m['bound_2c_ms']:.1f}x (2)\n")
+    print(f"| pass | bound, 1 / 2 cores, ms | measured{m['passes_note']}, 1 / 2 threads, ms | measured / bound, 1 / 2 | binds |")
+    print("| --- | ---: | ---: | ---: | --- |")
+    for p in m["passes"]:
+        b = p["bound_ms"]
+        print(f"| {p['kind']} | {2 * b:.3g} / {b:.3g} | {p['t1_ms']:.3f} / {p['t2_ms']:.3f} | "
+              f"{p['t1_ms'] / (2 * b):.1f} / {p['t2_ms'] / b:.1f} | {p['binds']} |")
+    st1, st2 = m["stages_1t_ms"], m["stages_2t_ms"]
+    if st1:
+        print("\nstages per frame, 1 / 2 threads (tile stages summed over threads), ms: " + ", ".join(
+            f"{k} {st1.get(k, 0):.3f} / {st2.get(k, 0):.3f}" for k in st1))
+    extra = ""
+    if "serial_work_ms" in m:
+        extra = f"; serial work alone (16x16 frame less its tiles) {m['serial_work_ms']:.3f} ms, {100 * m['serial_work_share']:.1f}%"
+    print(f"\nserial share (Karp-Flatt, 1 and 2 threads): ours {100 * m['serial_share']:.1f}%, "
+          f"llvmpipe's {100 * m['llvmpipe_serial_share']:.1f}%{extra}\n")
+    ns = [n for n in thread_list if n > 1]
+    print("| pass | tile work, 1 thread, ms | tiles | largest tile | " + " | ".join(f"speed-up of its tiles at {n}" for n in ns) + " |")
+    print("| --- | ---: | ---: | ---: | " + " | ".join("---:" for n in ns) + " |")
+    for p in m["passes"]:
+        print(f"| {p['kind']} | {p['tile_work_ms']:.3f} | {p['tiles']} | {100 * p['largest_tile_share']:.1f}% | " +
+              " | ".join(f"{1 / p['makespan_share'][n]:.1f}" for n in ns) + " |")
+    print("\n| threads | ours ms | speed-up | Amdahl alone | llvmpipe ms | llvmpipe speed-up | llvmpipe / ours |")
+    print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    for n in thread_list:
+        x = m["model"][n]
+        print(f"| {n} | {x['raster_ms']:.2f} | {x['speedup']:.2f} | {x['amdahl']:.2f} | {x['llvmpipe_ms']:.2f} | "
+              f"{x['llvmpipe_speedup']:.2f} | {x['llvmpipe_ms'] / x['raster_ms']:.2f} |")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--runs", required=True, help="folder of full-size runs: SCENE_t{1,2}_rR.json")
+    parser.add_argument("--tiny", help="folder of --size 16x16 runs, the same names (optional: serial work alone)")
+    parser.add_argument("--tiles", required=True, help="folder of bench/tile_costs output at the full size: SCENE_rR.json")
+    parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
+    parser.add_argument("--scenes", default=",".join(SCENES))
+    parser.add_argument("--threads", default="1,2,4,8,16,32", help="thread counts to model (must hold 1 and 2)")
+    parser.add_argument("--frames", action="append", default=[], metavar="SCENE=T1,T2,LT1,LT2",
+                        help="the frame medians (ms: ours at 1 and 2 threads, llvmpipe's at 1 and 2) to take the serial "
+                             "shares from, in place of --runs' (e.g. a quieter hour's run_benchmarks.py); repeatable")
+    parser.add_argument("--json", help="also write every figure to this file")
+    args = parser.parse_args()
+    thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
+    frames = {}
+    for item in args.frames:
+        name, values = item.split("=", 1)
+        frames[name] = [float(v) for v in values.split(",")]
+    models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
+              for s in args.scenes.split(",")]
+    for m in models:
+        print_scene(m, thread_list)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(models, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -9,12 +9,13 @@
 // {"scene", "size", "threads", "tsc_ghz", "passes": [{"label", "width", "height", "tiles_x",
 // "tiles_y", "triangles", "tile_cycles": [...]}]}. bench/scaling_model.py reads it (--tiles).
 //
-// Built only when asked: cmake --build build --target tile_costs (build/tile_costs).
+// Built with the rest (build/tile_costs).
 //   build/tile_costs pbr 640x480 1 3 5 > pbr_tiles.json   # scene, size, threads, warm frames, recorded frames
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <memory>
 #include <string>
 #include <thread>
@@ -25,16 +26,48 @@
 #include "raster/view_recorder.h"
 #include "scenes/registry.h"
 
+namespace {
+
+int run(int argc, char** argv);
+
+// A whole number in [low, high], or -1.
+int wholeNumber(const char* text, int low, int high) {
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  return end != text && *end == '\0' && value >= low && value <= high ? int(value) : -1;
+}
+
+}  // namespace
+
+// Bad arguments, an unknown scene or a bad asset: one line on stderr, exit 2.
 int main(int argc, char** argv) {
-  if (argc < 5) {
-    std::fprintf(stderr, "usage: tile_costs SCENE WxH THREADS WARM_FRAMES [RECORDED_FRAMES]\n");
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tile_costs: %s\n", e.what());
+    return 2;
+  }
+}
+
+namespace {
+
+int run(int argc, char** argv) {
+  const char* usage = "usage: tile_costs SCENE WxH THREADS WARM_FRAMES [RECORDED_FRAMES]"
+                      " (WxH 1..8192 a side, THREADS 0..1024, frames 0..1000 and 1..1000)\n";
+  if (argc < 5 || argc > 6) {
+    std::fprintf(stderr, "%s", usage);
     return 2;
   }
   const std::string name = argv[1];
   int width = 0, height = 0;
-  if (std::sscanf(argv[2], "%dx%d", &width, &height) != 2) return 2;
-  const int threads = std::atoi(argv[3]), warm = std::atoi(argv[4]);
-  const int recorded = argc > 5 ? std::max(1, std::atoi(argv[5])) : 1;
+  char tail = 0;
+  const int threads = wholeNumber(argv[3], 0, 1024), warm = wholeNumber(argv[4], 0, 1000);
+  const int recorded = argc > 5 ? wholeNumber(argv[5], 1, 1000) : 1;
+  if (std::sscanf(argv[2], "%dx%d%c", &width, &height, &tail) != 2 || width < 1 || height < 1 || width > 8192 ||
+      height > 8192 || threads < 0 || warm < 0 || recorded < 1) {
+    std::fprintf(stderr, "%s", usage);
+    return 2;
+  }
   scenes::SceneOptions options;
   options.width = width;
   options.height = height;
@@ -84,3 +117,5 @@ int main(int argc, char** argv) {
   std::printf("\n]}\n");
   return 0;
 }
+
+}  // namespace

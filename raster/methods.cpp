@@ -70,6 +70,23 @@ constexpr MethodRow rowOf(CompareMethod m) {
   return {};
 }
 
+constexpr MethodRow rowOf(ShadingMethod m) {
+  switch (m) {
+    case ShadingMethod::Rate1x1: return {"1x1", "GL: one fragment-shader invocation per pixel"};
+    case ShadingMethod::Rate2x1:
+      return {"2x1", "one invocation per 2x1 pixels in post passes: about half their shading; detail across x halved"};
+    case ShadingMethod::Rate1x2:
+      return {"1x2", "one invocation per 1x2 pixels in post passes: about half their shading; detail along y halved"};
+    case ShadingMethod::Rate2x2:
+      return {"2x2", "one invocation per 2x2 pixels in post passes: about a quarter of their shading; blocky at sharp detail"};
+    case ShadingMethod::Rate4x4:
+      return {"4x4", "one invocation per 4x4 pixels in post passes: a sixteenth of their shading; visibly blocky"};
+    case ShadingMethod::Rate2x2All:
+      return {"2x2-all", "2x2 in every pass that writes colour, geometry passes too: texture detail and G-buffer normals blocky"};
+  }
+  return {};
+}
+
 // The number of methods of the step whose enum is E.
 template <class E>
 constexpr size_t methodCount() {
@@ -122,6 +139,11 @@ constexpr std::array kSteps{
     stepRow<&MethodSet::interp>("interp", "how varyings are interpolated across a triangle"),
     stepRow<&MethodSet::compare>(
         "compare", "how a shadow lookup (sampler2DShadow, LINEAR) filters its texel compares; GL leaves it to the implementation"),
+    stepRow<&MethodSet::shading>(
+        "shading",
+        "fragment-shader invocations per pixel (Vulkan's coarse fragments: the coarse pixel's centre interpolated, "
+        "derivatives over coarse quads, coverage and depth per pixel); a rate applies to post passes (no colour draw "
+        "of the pass tests depth), geometry passes stay 1x1 unless the method says all"),
 };
 
 // Every member of MethodSet is one step, each its own: setting a step changes no other.

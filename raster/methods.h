@@ -23,6 +23,8 @@
 //   interp  geometry/setup.cpp, tile/interpolate.h   perspective or screen-linear varyings
 //   compare texture/sample_compare  how a shadow lookup (sampler2DShadow, LINEAR) filters
 //                                 its texel compares
+//   shading renderer.cpp (which passes), tile/coarse_tile.h   one fragment-shader
+//                                 invocation per pixel, or per coarse pixel of 2x1 .. 4x4
 //
 // Why one process-wide set: the shader ports call GLSL functions that take no context
 // (sin(x), normalize(v), texture(s, uv)), exactly as GLSL does, so the method cannot travel
@@ -69,6 +71,18 @@ enum class CompareMethod : uint8_t {
   Nearest,    // the compare of the one texel the coordinate lands in (GL allows either)
 };
 
+// Coarse fragments as Vulkan's VK_KHR_fragment_shading_rate defines them: one invocation
+// per coarse pixel (its centre interpolated, derivatives over coarse quads), its outputs
+// written to every pixel of it that is covered and passes the depth test.
+enum class ShadingMethod : uint8_t {
+  Rate1x1,      // GL: one invocation per pixel
+  Rate2x1,      // coarse pixels 2 wide, 1 high, in post passes (renderer.cpp says which)
+  Rate1x2,      // 1 wide, 2 high, in post passes
+  Rate2x2,      // 2x2, in post passes
+  Rate4x4,      // 4x4, in post passes
+  Rate2x2All,   // 2x2 in every pass that writes colour, geometry passes too
+};
+
 struct MethodSet {
   MathMethod math = MathMethod::Llvmpipe;
   FilterMethod filter = FilterMethod::Unorm8;
@@ -76,6 +90,7 @@ struct MethodSet {
   DivMethod div = DivMethod::Exact;
   InterpMethod interp = InterpMethod::Perspective;
   CompareMethod compare = CompareMethod::Bilinear;
+  ShadingMethod shading = ShadingMethod::Rate1x1;
   bool operator==(const MethodSet&) const = default;
 };
 
@@ -174,6 +189,43 @@ constexpr bool nearestCompare(CompareMethod m) {
   switch (m) {
     case CompareMethod::Bilinear: return false;
     case CompareMethod::Nearest: return true;
+  }
+  return false;
+}
+// shading: the coarse pixel's width and height in pixels (1 and 1: GL's one invocation per
+// pixel).
+constexpr int coarsePixelWidth(ShadingMethod m) {
+  switch (m) {
+    case ShadingMethod::Rate1x1:
+    case ShadingMethod::Rate1x2: return 1;
+    case ShadingMethod::Rate2x1:
+    case ShadingMethod::Rate2x2:
+    case ShadingMethod::Rate2x2All: return 2;
+    case ShadingMethod::Rate4x4: return 4;
+  }
+  return 1;
+}
+constexpr int coarsePixelHeight(ShadingMethod m) {
+  switch (m) {
+    case ShadingMethod::Rate1x1:
+    case ShadingMethod::Rate2x1: return 1;
+    case ShadingMethod::Rate1x2:
+    case ShadingMethod::Rate2x2:
+    case ShadingMethod::Rate2x2All: return 2;
+    case ShadingMethod::Rate4x4: return 4;
+  }
+  return 1;
+}
+// shading: the rate applies to every pass that writes colour (else to post passes only:
+// Renderer::passShadingRate).
+constexpr bool coarseInEveryPass(ShadingMethod m) {
+  switch (m) {
+    case ShadingMethod::Rate1x1:
+    case ShadingMethod::Rate2x1:
+    case ShadingMethod::Rate1x2:
+    case ShadingMethod::Rate2x2:
+    case ShadingMethod::Rate4x4: return false;
+    case ShadingMethod::Rate2x2All: return true;
   }
   return false;
 }

@@ -6,10 +6,13 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
 #include "raster/methods.h"
+#include "raster/tile/coarse_tile.h"
 #include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
 #include "raster/tile/tile_clear.h"
@@ -273,6 +276,31 @@ bool Renderer::visibilityFirst() const {
   return depthTested;
 }
 
+namespace {
+
+// The coarse pixel a pass is shaded at (methods.h, `shading`), chosen from the pass's draws
+// alone, never its scene: a rate above 1x1 applies to a post pass, one with a colour draw
+// and no colour draw that tests depth (a fullscreen triangle over earlier passes' targets:
+// lighting, SSAO and its blur, bloom, tone mapping), where the image is already smooth at
+// the scale of a pixel; a geometry pass (a colour draw tests depth) keeps 1x1, as its
+// edges and texture detail are what the frame shows, unless the method asks for every
+// pass. A depth-only pass shades nothing either way.
+std::pair<int, int> passShadingRate(std::span<const DrawRecord> draws, const Framebuffer& framebuffer) {
+  const ShadingMethod method = methods::active().shading;
+  const int width = methods::coarsePixelWidth(method), height = methods::coarsePixelHeight(method);
+  if (width == 1 && height == 1) return {1, 1};
+  bool writesColor = false, depthTested = false;
+  for (const DrawRecord& draw : draws) {
+    if (colorOutputsWritten(draw, framebuffer) == 0) continue;
+    writesColor = true;
+    depthTested |= draw.state.depthTest && framebuffer.depth;
+  }
+  if (!writesColor || (depthTested && !methods::coarseInEveryPass(method))) return {1, 1};
+  return {width, height};
+}
+
+}  // namespace
+
 // The pass's work items in Hilbert order of their tiles (raster::samplesAroundPixel), a
 // tile's bands in the order of their first rows. The other passes keep rows of tiles: their
 // reads and writes run on along a texel row from one tile into the next, which the hardware
@@ -301,6 +329,8 @@ void Renderer::flush() {
     job.draws = draws_;
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
+    std::tie(job.coarseWidth, job.coarseHeight) = passShadingRate(draws_, framebuffer_);
+    const bool coarse = job.coarseWidth > 1 || job.coarseHeight > 1;
     // Streaming stores skip the read for ownership but leave nothing in cache, and wait to
     // reach memory: targets that fit the threads' caches stay there until the next frame's
     // clear (docs/notes/2026-11-21-what-made-it-faster.md, "streaming clears only where
@@ -343,6 +373,18 @@ void Renderer::flush() {
       const int tile = workItems_[size_t(item)].tile;
       const TileBounds bounds = workItems_[size_t(item)].bounds;
       const std::span<const uint32_t> bin = bins_.bin(tile);
+      // A coarse-rate pass: the whole clear, then the coarse walk (tile/coarse_tile.h). Its
+      // fragments are neither traced nor counted by a stage view's instrumented walk (the
+      // probe pixel's values before and after the pass still are).
+      if (coarse) {
+        if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, true, bin.empty() && job.streamUntouchedClears);
+        if (tile == tracedTile && (clearing || traced->fragments.empty()))
+          traced->afterClear = readPixel(framebuffer_, traced->x, traced->y);
+        if (scalarOnly_) rasterizeTileCoarse<ScalarLanes>(job, bounds, bin, itemCounters[size_t(item)]);
+        else rasterizeTileCoarse<FastLanes>(job, bounds, bin, itemCounters[size_t(item)]);
+        if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
+        return;
+      }
       if (tile == tracedTile) {
         if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, true);
         if (clearing || traced->fragments.empty()) traced->afterClear = readPixel(framebuffer_, traced->x, traced->y);

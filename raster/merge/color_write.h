@@ -93,4 +93,29 @@ void writeGroup(const Framebuffer& framebuffer, const FragmentGroup<F>& group, c
     writeColorOutput(*framebuffer.colors[k], out.color[k], group.texel, group.laneMask, group.draw->state.blendAdditive);
 }
 
+// Writes one colour output of a coarse-shaded group (tile/coarse_tile.h): lane i's colour to
+// the pixels of its coarse pixel, pixel s of them at texel[i] + offset[s], where bit i of
+// laneMask[s] is set (covered, and passed the depth test). Each lane's colour is converted
+// once and stored to each of its pixels: the bytes of writeColorOutput, lane by lane (the
+// row-at-a-time Float8 form assumes a group's texels lie side by side, which a coarse
+// group's do not).
+template <class F>
+void writeCoarseColorOutput(Texture& target, const glsl::vec4<F>& color, const size_t* texel, const size_t* offset,
+                            const unsigned* laneMask, int pixels, bool blendAdditive) {
+  if (target.format == TexelFormat::RGBA8 && !blendAdditive) {
+    uint32_t packed[F::kCount];
+    packRgba8(color, packed);
+    for (int s = 0; s < pixels; ++s)
+      for (int i = 0; i < F::kCount; ++i)
+        if (laneMask[s] >> i & 1u) std::memcpy(&target.rgba8[(texel[i] + offset[s]) * 4], &packed[i], 4);
+    return;
+  }
+  for (int s = 0; s < pixels; ++s) {
+    if (!laneMask[s]) continue;
+    size_t at[F::kCount];
+    for (int i = 0; i < F::kCount; ++i) at[i] = texel[i] + offset[s];
+    writeColorOutput<F>(target, color, at, laneMask[s], blendAdditive);   // the lane-by-lane form
+  }
+}
+
 }  // namespace raster::merge

@@ -167,6 +167,7 @@ TEST_SUITE("cli") {
     for (const char* line : {"math=llvmpipe (default)", "math=libm", "math=fast", "math=fast-fragment", "filter=8bit (default)", "filter=float",
                              "half=rtz (default)", "half=rne", "div=exact (default)", "div=approx",
                              "interp=perspective (default)", "interp=affine", "compare=bilinear (default)", "compare=nearest",
+                             "shading=1x1 (default)", "shading=2x2", "shading=2x2-all",
                              "  gl  math=llvmpipe", "  precise ", "  fast "})
       CHECK(list.out.find(line) != std::string::npos);
     for (const char* command : {"render", "compare", "bench"}) {
@@ -175,6 +176,8 @@ TEST_SUITE("cli") {
       expectRefused(std::string(command) + " " + aScene() + " --method blend=fast");
       expectRefused(std::string(command) + " " + aScene() + " --method math");
     }
+    // A shading rate that is not one: refused with the rates.
+    expectRefused("render " + aScene() + " --method shading=3x3", "(methods: 1x1, 2x1, 1x2, 2x2, 4x4, 2x2-all)");
     const RunResult bad = runCli(cwd, "render " + aScene() + " --method math=slow");
     CHECK(bad.err.find("llvmpipe, libm, fast") != std::string::npos);
     // GL has its own numerics: asking it for ours is refused rather than ignored.

@@ -78,14 +78,22 @@ struct DecodedImages {
 };
 std::unique_ptr<DecodedImages> decodedImages;
 
-template <class T>
-std::optional<Decoded<T>> cachedImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data) {
+// The image a ScopedImageCache holds for these bytes, holding this load's reservation (taken
+// from `reserved` only on a hit); none when no cache is alive or it has no such image.
+template <class Image, class T>
+std::optional<Image> cachedImage(DecodedByBytes<T> DecodedImages::*map, const std::string& data,
+                                 memory::Reservation& reserved) {
   if (!decodedImages) return std::nullopt;
   const std::lock_guard<std::mutex> held(decodedImages->lock);
   const DecodedByBytes<T>& images = (*decodedImages).*map;
   const auto found = images.find(data);
   if (found == images.end()) return std::nullopt;
-  return found->second;
+  Image image;
+  image.width = found->second.width;
+  image.height = found->second.height;
+  image.reserved = std::move(reserved);
+  image.pixels = found->second.pixels;
+  return image;
 }
 
 template <class T>
@@ -406,14 +414,7 @@ ImageRgba8 decodeImageRgba8(const std::string& path, const std::string& data) {
   if (headerW > 0 && headerH > 0)
     reserved = memory::Reservation(uint64_t(headerW) * uint64_t(headerH) * 4,
                                    memory::joined({"decoding ", path, " (", std::to_string(headerW), "x", std::to_string(headerH), ")"}));
-  if (const auto cached = cachedImage(&DecodedImages::rgba8, data)) {
-    ImageRgba8 image;
-    image.width = cached->width;
-    image.height = cached->height;
-    image.reserved = std::move(reserved);
-    image.pixels = cached->pixels;
-    return image;
-  }
+  if (auto cached = cachedImage<ImageRgba8>(&DecodedImages::rgba8, data, reserved)) return std::move(*cached);
   int w = 0, h = 0, c = 0;
   stbi_set_flip_vertically_on_load_thread(0);  // the tutorial's loader: rows as in the file
   stbi_uc* pixels = stbi_load_from_memory(bytesOf(data), int(data.size()), &w, &h, &c, 4);
@@ -506,14 +507,7 @@ ImageRgbFloat decodeHdrRgb(const std::string& path, const std::string& data) {
   // Decoded as 3 floats a texel: reserved from the header before stb_image allocates it.
   memory::Reservation reserved(uint64_t(w) * uint64_t(h) * 12,
                                memory::joined({"decoding ", path, " (", std::to_string(w), "x", std::to_string(h), ")"}));
-  if (const auto cached = cachedImage(&DecodedImages::rgbFloat, data)) {
-    ImageRgbFloat image;
-    image.width = cached->width;
-    image.height = cached->height;
-    image.reserved = std::move(reserved);
-    image.pixels = cached->pixels;
-    return image;
-  }
+  if (auto cached = cachedImage<ImageRgbFloat>(&DecodedImages::rgbFloat, data, reserved)) return std::move(*cached);
   stbi_set_flip_vertically_on_load_thread(0);
   int x = 0, y = 0, comp = 0;
   float* pixels = stbi_loadf_from_memory(bytesOf(data), int(data.size()), &x, &y, &comp, 3);

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/backends.h"
@@ -48,6 +50,44 @@ inline std::vector<scenes::Target> renderScene(scenes::Backend& backend, const s
   s->setup(backend);
   s->renderFrame(backend, t);
   return s->readTargets(backend);
+}
+
+// Every target of `a` and `b` the same, byte for byte (colour, depth and float texels).
+inline void checkSameBytes(const std::vector<scenes::Target>& a, const std::vector<scenes::Target>& b) {
+  REQUIRE(a.size() == b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    INFO("target " << a[i].name);
+    CHECK(a[i].image.rgba8 == b[i].image.rgba8);
+    CHECK(a[i].image.depth == b[i].image.depth);
+    CHECK(a[i].image.floats == b[i].image.floats);
+  }
+}
+
+// One scene set up on a backend of its own, to be drawn again and again (under each method
+// set in turn, say): setting a scene up costs more than a frame of it at a small size
+// (deferred's assets take longer to load than to render).
+struct PreparedScene {
+  std::string name;   // which backend: "3 threads, scalar lanes"
+  std::unique_ptr<scenes::Backend> backend;
+  std::unique_ptr<scenes::Scene> scene;
+  std::vector<scenes::Target> render(float t) {
+    scene->renderFrame(*backend, t);
+    return scene->readTargets(*backend);
+  }
+};
+
+// `scene` prepared on one backend per (threads, scalar lanes) pair, in that order, each
+// sized and set up for `options`.
+inline std::vector<PreparedScene> prepareScene(const std::string& scene, const scenes::SceneOptions& options,
+                                               std::initializer_list<std::pair<int, bool>> backends) {
+  std::vector<PreparedScene> prepared;
+  for (const auto& [threads, scalar] : backends) {
+    PreparedScene& p = prepared.emplace_back(PreparedScene{std::to_string(threads) + " threads, " + (scalar ? "scalar" : "SIMD") + " lanes",
+                                                           scenes::makeRasterBackend(threads, scalar), scenes::makeScene(scene, options)});
+    p.backend->resizeDefaultFramebuffer(options.width, options.height);
+    p.scene->setup(*p.backend);
+  }
+  return prepared;
 }
 
 inline std::vector<scenes::Target> renderWithLlvmpipe(const std::string& scene, float t, int w, int h,

@@ -11,19 +11,7 @@
 #include "tests/method_sets.h"
 #include "tests/scene_test_helpers.h"
 
-namespace {
-
-void checkSameBytes(const std::vector<scenes::Target>& a, const std::vector<scenes::Target>& b) {
-  REQUIRE(a.size() == b.size());
-  for (size_t i = 0; i < a.size(); ++i) {
-    INFO("target " << a[i].name);
-    CHECK(a[i].image.rgba8 == b[i].image.rgba8);
-    CHECK(a[i].image.depth == b[i].image.depth);
-    CHECK(a[i].image.floats == b[i].image.floats);
-  }
-}
-
-}  // namespace
+using testing_support::checkSameBytes;
 
 TEST_SUITE("determinism") {
   TEST_CASE("threads 1, 2 and 7 and the scalar path give identical bytes") {
@@ -100,27 +88,13 @@ TEST_SUITE("determinism_paths") {
     scenes::SceneOptions options;
     options.width = 97;
     options.height = 61;
-    struct Run {
-      std::string name;
-      std::unique_ptr<scenes::Backend> backend;
-      std::unique_ptr<scenes::Scene> scene;
-    };
     for (const std::string& sceneName : testing_support::scenesUnderTest()) {
-      std::vector<Run> runs;   // the first, SIMD lanes on one thread, is the reference
-      for (bool scalar : {false, true})
-        for (int threads : {1, 3}) {
-          Run& run = runs.emplace_back(Run{std::to_string(threads) + " threads, " + (scalar ? "scalar" : "SIMD") + " lanes",
-                                           scenes::makeRasterBackend(threads, scalar), scenes::makeScene(sceneName, options)});
-          run.backend->resizeDefaultFramebuffer(options.width, options.height);
-          run.scene->setup(*run.backend);
-        }
+      // The first, SIMD lanes on one thread, is the reference.
+      auto runs = testing_support::prepareScene(sceneName, options, {{1, false}, {3, false}, {1, true}, {3, true}});
       for (const raster::MethodSet& set : testing_support::everyMethodSet()) {
         const raster::ScopedMethods scoped(set);
         std::vector<std::vector<scenes::Target>> targets;
-        for (Run& run : runs) {
-          run.scene->renderFrame(*run.backend, options.time);
-          targets.push_back(run.scene->readTargets(*run.backend));
-        }
+        for (testing_support::PreparedScene& run : runs) targets.push_back(run.render(options.time));
         for (size_t i = 1; i < runs.size(); ++i) {
           INFO("methods " << raster::methodLabel(set) << ": " << sceneName << " at " << options.width << "x" << options.height
                           << ", " << runs[i].name);

@@ -157,28 +157,15 @@ TEST_SUITE("shading_rate") {
     scenes::SceneOptions options;
     options.width = 97;
     options.height = 61;
-    struct Run {
-      std::string name;
-      std::unique_ptr<scenes::Backend> backend;
-      std::unique_ptr<scenes::Scene> scene;
-    };
     bool someSceneCoarse = false;
     for (const std::string& sceneName : testing_support::scenesUnderTest()) {
-      std::vector<Run> runs;   // the first, SIMD lanes on one thread, is the reference
-      for (const auto& [threads, scalar] : {std::pair{1, false}, std::pair{2, false}, std::pair{5, false}, std::pair{1, true}}) {
-        Run& run = runs.emplace_back(Run{std::to_string(threads) + " threads, " + (scalar ? "scalar" : "SIMD") + " lanes",
-                                         scenes::makeRasterBackend(threads, scalar), scenes::makeScene(sceneName, options)});
-        run.backend->resizeDefaultFramebuffer(options.width, options.height);
-        run.scene->setup(*run.backend);
-      }
+      // The first, SIMD lanes on one thread, is the reference.
+      auto runs = testing_support::prepareScene(sceneName, options, {{1, false}, {2, false}, {5, false}, {1, true}});
       std::vector<scenes::Target> gl;
       for (const std::string rate : {"1x1", "2x2", "2x2-all"}) {
         const raster::ScopedMethods scoped(shadingSet(rate));
         std::vector<std::vector<scenes::Target>> targets;
-        for (size_t i = 0; i < (rate == "1x1" ? 1 : runs.size()); ++i) {
-          runs[i].scene->renderFrame(*runs[i].backend, options.time);
-          targets.push_back(runs[i].scene->readTargets(*runs[i].backend));
-        }
+        for (size_t i = 0; i < (rate == "1x1" ? 1 : runs.size()); ++i) targets.push_back(runs[i].render(options.time));
         if (rate == "1x1") {
           gl = targets[0];
           continue;
@@ -186,13 +173,7 @@ TEST_SUITE("shading_rate") {
         someSceneCoarse |= targets[0].back().image.rgba8 != gl.back().image.rgba8;
         for (size_t i = 1; i < runs.size(); ++i) {
           INFO("shading=" << rate << ": " << sceneName << " at " << options.width << "x" << options.height << ", " << runs[i].name);
-          REQUIRE(targets[0].size() == targets[i].size());
-          for (size_t t = 0; t < targets[0].size(); ++t) {
-            INFO("target " << targets[0][t].name);
-            CHECK(targets[0][t].image.rgba8 == targets[i][t].image.rgba8);
-            CHECK(targets[0][t].image.depth == targets[i][t].image.depth);
-            CHECK(targets[0][t].image.floats == targets[i][t].image.floats);
-          }
+          testing_support::checkSameBytes(targets[0], targets[i]);
         }
       }
     }

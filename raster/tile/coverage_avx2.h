@@ -146,6 +146,66 @@ template <class F, class VisitBlock>
   }
   return true;
 }
+#else
+// walkSmallTriangleBlocks (coverage.h) for Float8 with AVX2 alone: the AVX-512 walk above
+// with each edge's 16 pixel values in two registers (rows 0-1, rows 2-3), held minus one so
+// that "value > 0" is "sign bit clear": a block's pixels inside all three edges are the
+// lanes whose three values, or-ed, have a clear sign bit (one or and one movemask a half
+// where the compares took three compares and two ands). Values stay within +-2^30 (the same
+// test as above) so subtracting one cannot overflow, and every bit is blockCoverage's.
+// Without it every small triangle took the region walk: per block three 64-bit edge values,
+// their clamps and broadcasts, on today's hosts without AVX-512.
+template <class F, class VisitBlock>
+  requires std::is_same_v<F, simd::Float8>
+[[gnu::always_inline]] inline bool walkSmallTriangleBlocks(const EdgeFunction (&edges)[3], int x0, int y0, int x1, int y1,
+                                                           int width, int height, VisitBlock&& visitBlock) {
+  constexpr int kBlock = limits::kBlockSize;
+  const int blockX0 = x0 & ~(kBlock - 1), blockY0 = y0 & ~(kBlock - 1);
+  const int columns = (x1 - blockX0) / kBlock + 1, rows = (y1 - blockY0) / kBlock + 1;
+  static_assert(limits::kTileSize / kBlock <= 16, "a row's masks are kept in 16 bits");
+  __m256i top[3], bottom[3], stepX[3], stepY[3];
+  for (int i = 0; i < 3; ++i) {
+    const EdgeFunction& e = edges[i];
+    if (!hasSmallSteps(e)) return false;
+    const int64_t c00 = e.at(blockX0, blockY0);
+    int64_t high, low;   // over every pixel of the blocks
+    edgeExtremes(e, columns * kBlock - 1, rows * kBlock - 1, high, low);
+    if (c00 + high >= kEdgeValueLimit || c00 + low <= -kEdgeValueLimit) return false;
+    const __m256i col = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+    const __m256i row = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+    const __m256i first = _mm256_add_epi32(_mm256_sub_epi32(_mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdy)), row),
+                                                            _mm256_mullo_epi32(_mm256_set1_epi32(int32_t(e.dcdx)), col)),
+                                           _mm256_set1_epi32(int32_t(c00 - 1)));
+    top[i] = first;
+    bottom[i] = _mm256_add_epi32(first, _mm256_set1_epi32(int32_t(e.dcdy * 2)));
+    stepX[i] = _mm256_set1_epi32(int32_t(-e.dcdx * kBlock));
+    stepY[i] = _mm256_set1_epi32(int32_t(e.dcdy * kBlock));
+  }
+  for (int row = 0; row < rows; ++row) {
+    const int blockY = blockY0 + row * kBlock;
+    uint16_t coverage[16];
+    uint32_t covered = 0;
+    // Named registers, not arrays (as above: GCC kept an array's values on the stack).
+    __m256i t0 = top[0], t1 = top[1], t2 = top[2], b0 = bottom[0], b1 = bottom[1], b2 = bottom[2];
+    for (int column = 0; column < columns; ++column) {
+      const uint32_t outTop = uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(t0, t1), t2))));
+      const uint32_t outBottom =
+          uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2))));
+      const uint32_t mask = ~(outTop | outBottom << 8) & 0xFFFFu;
+      coverage[column] = uint16_t(mask);
+      covered |= uint32_t(mask != 0) << column;
+      t0 = _mm256_add_epi32(t0, stepX[0]), t1 = _mm256_add_epi32(t1, stepX[1]), t2 = _mm256_add_epi32(t2, stepX[2]);
+      b0 = _mm256_add_epi32(b0, stepX[0]), b1 = _mm256_add_epi32(b1, stepX[1]), b2 = _mm256_add_epi32(b2, stepX[2]);
+    }
+    for (; covered; covered &= covered - 1) {
+      const int column = __builtin_ctz(covered), blockX = blockX0 + column * kBlock;
+      const uint32_t inside = coverage[column] & blockBounds(blockX, blockY, width, height);
+      if (inside) visitBlock(blockX, blockY, inside);
+    }
+    for (int i = 0; i < 3; ++i) top[i] = _mm256_add_epi32(top[i], stepY[i]), bottom[i] = _mm256_add_epi32(bottom[i], stepY[i]);
+  }
+  return true;
+}
 #endif
 
 }  // namespace raster

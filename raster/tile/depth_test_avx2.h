@@ -90,7 +90,103 @@ inline unsigned depthTestRows(const uint32_t* codes, const GroupRows& rows, unsi
   return depthTestRows(codes, rows, at.laneMask, state);
 }
 
-#if !RASTER_ZMM_PAIRS   // with AVX-512, a region row at a time (depth_test_avx512.h)
+#if !RASTER_ZMM_PAIRS   // with AVX-512, one register a block (depth_test_avx512.h)
+// Whole 4x4 blocks for AVX2 too: the visibility pass and depth-only draws then test a
+// block as two halves in memory-row order (rows 0-1, rows 2-3) with no permutes to and from
+// the quads' lane order, and walk blocks instead of groups.
+template <>
+inline constexpr bool kDepthTestsInBlocks<simd::Float8> = true;
+
+// BlockDepthTest (depth_test.h) in two 8-lane halves: the AVX-512 form's operations, the
+// z plane, the buffer and the test held across the triangle's blocks, so the same bits.
+template <>
+class BlockDepthTest<simd::Float8> {
+ public:
+  BlockDepthTest(const TileJob& job, const SetupTriangle& tri)
+      : dadx_(tri.z.dadx), dady_(tri.z.dady), a0_(tri.z.a0), depthOffset_(tri.depthOffset) {
+    const Framebuffer& fb = *job.framebuffer;
+    const RasterState& state = job.draws[tri.drawIndex].state;
+    tests_ = state.depthTest && fb.depth;
+    if (!tests_) return;
+    buffer_ = fb.depth->depth.data();
+    format_ = fb.depth->format;
+    width_ = fb.width, height_ = fb.height;
+    lessEqual_ = state.depthFunc == DepthFunc::Lequal;
+    writes_ = state.depthWrite;
+  }
+
+  [[gnu::always_inline]] uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
+    if (!tests_) return coverage;
+    using simd::Float8;
+    const Float8 px(_mm256_add_ps(_mm256_set1_ps(float(blockX)), _mm256_setr_ps(0, 1, 2, 3, 0, 1, 2, 3)));
+    const Float8 pyTop(_mm256_add_ps(_mm256_set1_ps(float(blockY)), _mm256_setr_ps(0, 0, 0, 0, 1, 1, 1, 1)));
+    const Float8 pyBottom = pyTop + Float8(2.0f);
+    // fragmentDepth and clampDepth, less clampDepth's min(z, 1), as the AVX-512 form.
+    const auto code = [&](Float8 py) {
+      const Float8 z = simd::min(simd::fma(dady_, py, simd::fma(dadx_, px, a0_)) + depthOffset_, Float8(1.0f));
+      return codes(simd::max(z, Float8(0.0f)));
+    };
+    const __m256i codeTop = code(pyTop), codeBottom = code(pyBottom);
+    const __m256i coveredTop = _mm256_castps_si256(simd::Mask8::fromBits(coverage & 0xFFu).v);
+    const __m256i coveredBottom = _mm256_castps_si256(simd::Mask8::fromBits(coverage >> 8 & 0xFFu).v);
+    uint32_t* const first = buffer_ + size_t(blockY) * size_t(width_) + size_t(blockX);
+    const size_t stride = size_t(width_);
+    const auto row = [&](int r) { return reinterpret_cast<__m128i*>(first + size_t(r) * stride); };
+    if (blockX + 4 <= width_ && blockY + 4 <= height_) {
+      // Read whole and written back blended, even where nothing passed (a branch no
+      // predictor learns in the visibility pass), as masked stores are slow.
+      const __m256i storedTop = _mm256_setr_m128i(_mm_loadu_si128(row(0)), _mm_loadu_si128(row(1)));
+      const __m256i storedBottom = _mm256_setr_m128i(_mm_loadu_si128(row(2)), _mm_loadu_si128(row(3)));
+      const __m256i passTop = _mm256_and_si256(depthPasses(codeTop, storedTop, lessEqual_), coveredTop);
+      const __m256i passBottom = _mm256_and_si256(depthPasses(codeBottom, storedBottom, lessEqual_), coveredBottom);
+      if (writes_) {
+        const __m256i top = _mm256_blendv_epi8(storedTop, codeTop, passTop);
+        const __m256i bottom = _mm256_blendv_epi8(storedBottom, codeBottom, passBottom);
+        _mm_storeu_si128(row(0), _mm256_castsi256_si128(top));
+        _mm_storeu_si128(row(1), _mm256_extracti128_si256(top, 1));
+        _mm_storeu_si128(row(2), _mm256_castsi256_si128(bottom));
+        _mm_storeu_si128(row(3), _mm256_extracti128_si256(bottom, 1));
+      }
+      return bits(passTop) | bits(passBottom) << 8;
+    }
+    // Where the block sticks out of the framebuffer, rows outside it (never covered) are
+    // neither read nor written, and pixels outside it only through masked loads and stores.
+    __m128i rowCodes[4], rowMasks[4];
+    const __m128i codeRows[4] = {_mm256_castsi256_si128(codeTop), _mm256_extracti128_si256(codeTop, 1),
+                                 _mm256_castsi256_si128(codeBottom), _mm256_extracti128_si256(codeBottom, 1)};
+    const __m128i maskRows[4] = {_mm256_castsi256_si128(coveredTop), _mm256_extracti128_si256(coveredTop, 1),
+                                 _mm256_castsi256_si128(coveredBottom), _mm256_extracti128_si256(coveredBottom, 1)};
+    uint32_t passed = 0;
+    for (int r = 0; r < 4; ++r) {
+      if (!(coverage >> (4 * r) & 0xFu)) continue;
+      rowCodes[r] = _mm_maskload_epi32(reinterpret_cast<const int*>(row(r)), maskRows[r]);
+      const __m128i pass = _mm_and_si128(
+          lessEqual_ ? _mm_cmpgt_epi32(_mm_add_epi32(rowCodes[r], _mm_set1_epi32(1)), codeRows[r])
+                     : _mm_cmpgt_epi32(rowCodes[r], codeRows[r]),
+          maskRows[r]);
+      rowMasks[r] = pass;
+      passed |= uint32_t(_mm_movemask_ps(_mm_castsi128_ps(pass))) << (4 * r);
+      if (writes_) _mm_maskstore_epi32(reinterpret_cast<int*>(row(r)), rowMasks[r], codeRows[r]);
+    }
+    return passed;
+  }
+
+ private:
+  // depthCodes<Float8>, kept in a register.
+  [[gnu::always_inline]] __m256i codes(simd::Float8 z) const {
+    if (format_ == TexelFormat::Depth24) return _mm256_cvtps_epi32(_mm256_mul_ps(z.v, _mm256_set1_ps(16777215.0f)));
+    const __m256 t = _mm256_add_ps(_mm256_mul_ps(z.v, _mm256_set1_ps(65535.0f / 65536.0f)), _mm256_set1_ps(128.0f));
+    return _mm256_and_si256(_mm256_castps_si256(t), _mm256_set1_epi32(0xFFFF));
+  }
+  static uint32_t bits(__m256i pass) { return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(pass))); }
+
+  const simd::Float8 dadx_, dady_, a0_, depthOffset_;   // the z plane, broadcast
+  bool tests_ = false, lessEqual_ = false, writes_ = false;
+  uint32_t* buffer_ = nullptr;
+  TexelFormat format_ = TexelFormat::Depth16;
+  int width_ = 0, height_ = 0;
+};
+
 template <>
 [[gnu::noinline]] inline void depthOnlyRegion<simd::Float8>(const SetupTriangle& tri, const RasterState& state, Texture& depth, int width,
                                           int x, int y) {

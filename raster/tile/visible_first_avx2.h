@@ -32,6 +32,19 @@ inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t pass
   __m512i* at = reinterpret_cast<__m512i*>(entries_ + entryIndex(lx, ly));
   _mm512_store_si512(at, _mm512_mask_blend_epi32(__mmask16(passed), _mm512_load_si512(at), _mm512_set1_epi32(int(index))));
 }
+#else
+template <>
+inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
+  // The AVX-512 form in two halves of the block's line (rows 0-1, rows 2-3), read, blended
+  // and written without a branch.
+  for (int half = 0; half < 2; ++half) markGroup(lx, ly + 2 * half, (passed >> (8 * half) & 0xFFu) != 0);
+  __m256i* at = reinterpret_cast<__m256i*>(entries_ + entryIndex(lx, ly));
+  const __m256i value = _mm256_set1_epi32(int(index));
+  for (int half = 0; half < 2; ++half) {
+    const __m256i take = _mm256_castps_si256(simd::Mask8::fromBits(passed >> (8 * half) & 0xFFu).v);
+    _mm256_store_si256(at + half, _mm256_blendv_epi8(_mm256_load_si256(at + half), value, take));
+  }
+}
 #endif
 
 namespace visible_first_detail {
@@ -69,7 +82,6 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade) const {
   }
 }
 
-#if RASTER_ZMM_PAIRS
 template <>
 template <class Shade, class Whole>
 void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) const {
@@ -82,16 +94,22 @@ void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) c
       const int lx = __builtin_ctz(bits) * kGroupWidth;
       if (upper & lower & bit) {   // both groups marked: does one triangle show in all 16?
         const uint32_t* at = entries_ + entryIndex(lx, ly);
+#if RASTER_ZMM_PAIRS
         const __m512i block = _mm512_load_si512(at);
         if (at[0] != kNone && _mm512_cmpneq_epi32_mask(block, _mm512_set1_epi32(int(at[0]))) == 0 && whole(lx, ly, at[0]))
           continue;
+#else
+        const __m256i first = _mm256_set1_epi32(int(at[0]));
+        const __m256i same = _mm256_and_si256(_mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(at)), first),
+                                              _mm256_cmpeq_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(at + 8)), first));
+        if (at[0] != kNone && _mm256_movemask_ps(_mm256_castsi256_ps(same)) == 0xFF && whole(lx, ly, at[0])) continue;
+#endif
       }
       if (upper & bit) visible_first_detail::visitGroup(entries_ + entryIndex(lx, ly), toLanes, lx, ly, shade);
       if (lower & bit) visible_first_detail::visitGroup(entries_ + entryIndex(lx, ly + 2), toLanes, lx, ly + 2, shade);
     }
   }
 }
-#endif
 
 }  // namespace raster
 #endif

@@ -244,21 +244,6 @@ const std::vector<StageView>& stageViews() {
                    .top = atLeastOne,
                    .wholeTicks = true,
                    .tickText = plainTickText}},
-      {.name = "invocations",
-       .shows = "fragment-shader invocations per pixel",
-       .about = "Fragment-shader invocations whose outputs reached a pixel, each shared out evenly over the "
-                "pixels it wrote: 1 per fragment at the GL shading rate, so it equals overdraw there; under "
-                "--method shading=2x2 a post pass's invocation writes its whole 2x2 coarse pixel and each "
-                "pixel reads 1/4. Helper lanes and invocations that wrote no pixel are not counted (see "
-                "--view helpers for 1x1 passes; a coarse pass's are only in its lane counters).",
-       .record = Record::Fragments,
-       .figures = invocationsFigures,
-       .totals = invocationsTotals,
-       .painter = heatMapPainter,
-       .heatMap = {.field = invocationsField,
-                   .quantity = "fragment-shader invocations per pixel",
-                   .top = atLeastOne,
-                   .tickText = plainTickText}},
       {.name = "depth-kills",
        .shows = "fragments rejected by the depth test per pixel",
        .about = "Covered fragments the depth test rejected, per pixel, every fragment in API order. Every depth "
@@ -313,6 +298,21 @@ const std::vector<StageView>& stageViews() {
        .totals = noMoreTotals,
        .painter = wireframePainter,
        .heatMap = {}},
+      {.name = "invocations",
+       .shows = "fragment-shader invocations per pixel",
+       .about = "Fragment-shader invocations whose outputs reached a pixel, each shared out evenly over the "
+                "pixels it wrote: 1 per fragment at the GL shading rate, so it equals overdraw there; under "
+                "--method shading=2x2 a post pass's invocation writes its whole 2x2 coarse pixel and each "
+                "pixel reads 1/4. Helper lanes and invocations that wrote no pixel are not counted (see "
+                "--view helpers for 1x1 passes; a coarse pass's are only in its lane counters).",
+       .record = Record::Fragments,
+       .figures = invocationsFigures,
+       .totals = invocationsTotals,
+       .painter = heatMapPainter,
+       .heatMap = {.field = invocationsField,
+                   .quantity = "fragment-shader invocations per pixel",
+                   .top = atLeastOne,
+                   .tickText = plainTickText}},
   };
   return views;
 }

@@ -25,9 +25,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Every family the smoke test requires (name prefixes), and the peaks' (AVX2 builds only).
 FAMILIES = ["texture/rgba8_bilinear_x16/", "texture/rgba16f_bilinear_x16/", "pcf/3x3_x16/", "pcf/5x5_x16/",
             "clear/depth24_1024", "clear/depth24_tile64", "clear/rgba8_1920x1080", "tile_walk/walk/",
-            "tile_walk/walk_depth/"]
+            "tile_walk/walk_depth/", "coarse/full_rate/", "coarse/2x1/", "coarse/2x2/", "coarse/4x4/"]
 PEAK_FAMILIES = ["peak/gather_dword/", "peak/gather_qword/", "peak/fma/"]
-PER_ITEM = ["ns_per_lookup", "ns_per_texel", "ns_per_triangle", "ns_per_element", "ns_per_fma"]
+PER_ITEM = ["ns_per_lookup", "ns_per_texel", "ns_per_triangle", "ns_per_element", "ns_per_fma", "ns_per_pixel"]
 
 
 def fail(message, status):

@@ -38,3 +38,22 @@ while read -r scene param options; do
   "${command[@]}" > /dev/null
   echo "   $((SECONDS - start)) s" >&2
 done <<< "$sweeps"
+# Where coarse shading fails (issue 68; STABILITY.md, "Coarse shading"): the rates against
+# llvmpipe, into docs/stability/coarse-SCENE-PARAM/. Edges: hdr's cubes under a coarse
+# bright pass and bloom chain; texture frequency: deferred's cat under a coarse G-buffer.
+coarse_sweeps="hdr instances=10:100000:5:log --methods gl,shading=2x1,shading=1x2,shading=2x2
+deferred uv_scale=0.25:64:5:log --methods gl,shading=2x2,shading=2x2-all"
+while read -r scene param options; do
+  [ -n "$only" ] && [ "$scene" != "$only" ] && continue
+  out="docs/stability/coarse-$scene-${param%%=*}"
+  # shellcheck disable=SC2086  # the options are words
+  command=("$raster" sweep "$scene" --param "$param" --size 320x240 --threads 2 --quiet --no-softpipe $options --out "$out")
+  if [ "$dry" = 1 ]; then
+    echo "${command[*]}"
+    continue
+  fi
+  echo "== coarse: $scene $param $options -> $out" >&2
+  start=$SECONDS
+  "${command[@]}" > /dev/null
+  echo "   $((SECONDS - start)) s" >&2
+done <<< "$coarse_sweeps"

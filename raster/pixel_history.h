@@ -7,8 +7,9 @@
 // its triangle, coverage, depth test, shader inputs and outputs, texture lookups and the
 // pixel's value before and after it. The tile holding the probe pixel is walked by
 // tile/trace_tile.cpp, in order and with ScalarLanes (the reference lane type, which gives
-// the same bytes as every fast path); every other tile runs as always. So tracing changes no
-// output, and the value a pass stores at the probe is the rendered pixel.
+// the same bytes as every fast path), or, in a pass shaded at a coarse rate, by the coarse
+// walk's own steps (tile/coarse_walk.h) with ScalarLanes; every other tile runs as always.
+// So tracing changes no output, and the value a pass stores at the probe is the rendered pixel.
 //
 // Coordinates here are the pipeline's: column x and memory row y of the pass's attachments.
 #pragma once
@@ -63,6 +64,14 @@ struct FragmentRecord {
   std::vector<float> varyings;    // the interpolated inputs, flattened in declaration order
   std::vector<std::array<float, 4>> outputs;         // the colour outputs, per location
   std::vector<sampling::SampleRecord> samples;       // its texture lookups, in order
+  // A pass shaded at a coarse rate (methods.h, `shading`; tile/coarse_tile.h): one
+  // invocation per coarse pixel, interpolated at its centre (fragCoord above), its outputs
+  // written to every pixel of the coarse pixel that is covered and passed the depth test.
+  // coverage, z and the depth test above stay the probe pixel's own.
+  int coarseWidth = 1, coarseHeight = 1;   // the pass's coarse pixel, in pixels; 1x1: not coarse
+  int coarseX = 0, coarseY = 0;            // the probe's coarse pixel's first pixel (column, memory row)
+  int lane = -1;                           // the invocation's lane in its coarse group (ScalarLanes)
+  std::vector<std::array<int, 2>> broadcast;   // the pixels (column, memory row) its outputs were written to
   PixelValue before, after;       // the pixel just before and after this fragment
 };
 

@@ -373,14 +373,17 @@ void Renderer::flush() {
       const int tile = workItems_[size_t(item)].tile;
       const TileBounds bounds = workItems_[size_t(item)].bounds;
       const std::span<const uint32_t> bin = bins_.bin(tile);
-      // A coarse-rate pass: the whole clear, then the coarse walk (tile/coarse_tile.h). Its
-      // fragments are neither traced nor counted by a stage view's instrumented walk (the
-      // probe pixel's values before and after the pass still are).
+      // A coarse-rate pass: the whole clear, then the coarse walk (tile/coarse_tile.h), or
+      // its traced (trace_tile.h) or counted (inspect_tile.h) copy, which leave its bytes.
       if (coarse) {
         if (clearing) merge::clearRect(framebuffer_, pendingClear_, bounds, true, bin.empty() && job.streamUntouchedClears);
         if (tile == tracedTile && (clearing || traced->fragments.empty()))
           traced->afterClear = readPixel(framebuffer_, traced->x, traced->y);
-        if (scalarOnly_) rasterizeTileCoarse<ScalarLanes>(job, bounds, bin, itemCounters[size_t(item)]);
+        if (tile == tracedTile)
+          traceTileCoarse(job, bounds, bin, uint32_t(traced->programs.size() - draws_.size()), triangleOrigins_, *traced,
+                          itemCounters[size_t(item)]);
+        else if (inspect) inspectTileCoarse(job, bounds, bin, view->counts, itemCounters[size_t(item)]);
+        else if (scalarOnly_) rasterizeTileCoarse<ScalarLanes>(job, bounds, bin, itemCounters[size_t(item)]);
         else rasterizeTileCoarse<FastLanes>(job, bounds, bin, itemCounters[size_t(item)]);
         if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
         return;

@@ -275,6 +275,19 @@ OrderedJson fragmentJson(const FragmentRecord& f, const PassHistory& pass, const
     for (const auto& sample : f.samples) samples.push_back(sampleJson(sample));
     out["samples"] = samples;
   }
+  // A coarse pass (methods.h, `shading`): the invocation behind the pixel and its coarse pixel.
+  if (f.coarseWidth > 1 || f.coarseHeight > 1) {
+    OrderedJson coarse{{"size", OrderedJson::array({f.coarseWidth, f.coarseHeight})},
+                       {"texel", OrderedJson::array({f.coarseX, f.coarseY})}};
+    if (f.shaded) {
+      coarse["lane"] = f.lane;
+      coarse["sample_position"] = OrderedJson::array({f.fragCoord[0], f.fragCoord[1]});
+      OrderedJson broadcast = OrderedJson::array();
+      for (const auto& p : f.broadcast) broadcast.push_back(OrderedJson::array({p[0], p[1]}));
+      coarse["broadcast_to"] = broadcast;
+    }
+    out["coarse"] = coarse;
+  }
   out["before"] = pixelJson(f.before, pass, names);
   out["after"] = pixelJson(f.after, pass, names);
   return out;

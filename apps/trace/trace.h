@@ -30,6 +30,12 @@
 //                               "samples": [{"texture", "kind", "uv", "ref", "lod", "filter",
 //                                            "weights", "texels": [{"x", "y", "value",
 //                                            "weight", "compare"}], "result", "explained"}],
+//                               "coarse" (only in a pass shaded at a coarse rate, --method
+//                                 shading=RATE): {"size": [w, h], "texel": [x, y] (the coarse
+//                                 pixel's first texel), and where an invocation of this
+//                                 triangle shaded it: "lane", "sample_position" (its
+//                                 gl_FragCoord.xy: the coarse pixel's centre), "broadcast_to":
+//                                 [[x, y], ..] (the texels its outputs were written to)},
 //                               "before": {target: value}, "after": {target: value}}],
 //                "start": {target: value}, "stored": {target: value},
 //                "dump": {target: value}, "matches_dump": {target: bool},

@@ -91,6 +91,21 @@ void printFragment(std::ostream& out, const OrderedJson& f, const OrderedJson& p
     for (auto it = f["outputs"].begin(); it != f["outputs"].end(); ++it) out << " " << it.key() << " " << tuple(it.value());
     out << "\n";
   }
+  if (f.contains("coarse")) {   // a coarse-shaded pass: one invocation per coarse pixel
+    const OrderedJson& c = f["coarse"];
+    out << "     coarse pixel " << c["size"][0].get<int>() << "x" << c["size"][1].get<int>() << " from texel ["
+        << c["texel"][0].get<int>() << "," << c["texel"][1].get<int>() << "]";
+    if (c.contains("lane")) {
+      out << ": one invocation (lane " << c["lane"].get<int>() << ") at gl_FragCoord " << tuple(c["sample_position"]);
+      if (c["broadcast_to"].empty()) out << ", a helper of its coarse quad: its outputs reached no pixel";
+      else out << ", its outputs broadcast to " << c["broadcast_to"].size() << " of its " << c["size"][0].get<int>() * c["size"][1].get<int>()
+               << " pixels:";
+      for (const OrderedJson& p : c["broadcast_to"]) out << " [" << p[0].get<int>() << "," << p[1].get<int>() << "]";
+    } else {
+      out << ": no invocation of this triangle shaded it";
+    }
+    out << "\n";
+  }
   out << "     before: " << values(f["before"], pass) << "\n";
   out << "     after:  " << values(f["after"], pass) << "\n";
 }

@@ -43,6 +43,36 @@ void overdrawTotals(const std::vector<ViewPass>& passes, Json& totals) {
   totals["depth_only_fragments"] = depthOnly;
 }
 
+// ---- invocations ----------------------------------------------------------------------------
+
+Field invocationsField(const ViewPass& pass) { return countField(pass, pass.counts.invocations); }
+
+// The pass's invocations that wrote, summed in double (each pixel holds a share of one).
+PassFigures invocationsFigures(const ViewPass& pass) {
+  PassFigures f = passFigures(pass);
+  const Stats s = statsOf(pass.counts.invocations);
+  const Stats fragments = statsOf(pass.counts.shaded);
+  f.json["invocations"] = statsJson(s);
+  f.json["fragments_shaded"] = uint64_t(fragments.total);
+  f.json["invocations_per_fragment"] = fragments.total > 0 ? s.total / fragments.total : 0.0;
+  f.scaleMax = s.max;
+  f.line = pass.colorTargets == 0 ? "depth only, no shader"
+                                  : "invocations " + std::to_string(uint64_t(s.total + 0.5)) + ", max " + sixDigits(s.max) +
+                                        ", mean " + fixedDigits(s.mean, 2);
+  return f;
+}
+
+void invocationsTotals(const std::vector<ViewPass>& passes, Json& totals) {
+  double invocations = 0;
+  uint64_t fragments = 0;
+  for (const ViewPass& p : passes) {
+    invocations += statsOf(p.counts.invocations).total;
+    fragments += total(p.counts.shaded);
+  }
+  totals["invocations"] = uint64_t(invocations + 0.5);
+  totals["fragments_shaded"] = fragments;
+}
+
 // ---- depth-kills ----------------------------------------------------------------------------
 
 Field depthKillsField(const ViewPass& pass) { return countField(pass, pass.counts.depthKills); }
@@ -202,7 +232,9 @@ const std::vector<StageView>& stageViews() {
        .about = "Fragments that were covered, passed the depth test and ran the fragment shader, per pixel, "
                 "counted with GL semantics (every fragment in API order); this pipeline's visibility-first and "
                 "covered-tile paths skip some of them without changing a byte. Helper lanes are not counted "
-                "(see --view helpers); depth-only draws run no shader and count 0.",
+                "(see --view helpers); depth-only draws run no shader and count 0. In a pass shaded at a coarse "
+                "rate (--method shading=2x2) a fragment is a pixel an invocation's outputs reached; "
+                "--view invocations counts the invocations.",
        .record = Record::Fragments,
        .figures = overdrawFigures,
        .totals = overdrawTotals,
@@ -266,6 +298,21 @@ const std::vector<StageView>& stageViews() {
        .totals = noMoreTotals,
        .painter = wireframePainter,
        .heatMap = {}},
+      {.name = "invocations",
+       .shows = "fragment-shader invocations per pixel",
+       .about = "Fragment-shader invocations whose outputs reached a pixel, each shared out evenly over the "
+                "pixels it wrote: 1 per fragment at the GL shading rate, so it equals overdraw there; under "
+                "--method shading=2x2 a post pass's invocation writes its whole 2x2 coarse pixel and each "
+                "pixel reads 1/4. Helper lanes and invocations that wrote no pixel are not counted (see "
+                "--view helpers for 1x1 passes; a coarse pass's are only in its lane counters).",
+       .record = Record::Fragments,
+       .figures = invocationsFigures,
+       .totals = invocationsTotals,
+       .painter = heatMapPainter,
+       .heatMap = {.field = invocationsField,
+                   .quantity = "fragment-shader invocations per pixel",
+                   .top = atLeastOne,
+                   .tickText = plainTickText}},
   };
   return views;
 }

@@ -37,6 +37,8 @@ inline size_t texelAt(const raster::ViewPass& pass, int x, int y) {
 
 // A per-pixel count of the pass (one of its FragmentCounts) as a field: the count over 1.
 Field countField(const raster::ViewPass& pass, const std::vector<uint32_t>& counts);
+// The same for a fractional count (FragmentCounts::invocations).
+Field countField(const raster::ViewPass& pass, const std::vector<float>& counts);
 
 // The sum of a per-pixel count.
 uint64_t total(const std::vector<uint32_t>& values);

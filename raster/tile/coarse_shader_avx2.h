@@ -7,6 +7,7 @@
 #if RASTER_AVX2
 #include "raster/tile/coarse_shader.h"
 #include "raster/tile/group_shader.h"
+#include "raster/tile/pairing_queue.h"
 
 namespace raster {
 
@@ -35,43 +36,33 @@ namespace raster {
   if (job.timeStages) counters.mergeCycles += cycleCount() - mergeStart;
 }
 
-// CoarseShader for Float8 groups: a group of a paired draw waits until the next ready
-// group joins it, or until one that cannot join or the end of the tile sends it alone, as
-// GroupShader<Float8> does; colours land in the order the groups became ready.
+// CoarseShader for Float8 groups: GroupShader<Float8>'s pairing (the same queue,
+// pairing_queue.h), for the draws it pairs; colours land in the order the groups became ready.
 template <>
 class CoarseShader<simd::Float8> {
+  struct Policy {
+    const TileJob& job;
+    const CoarseLayout<simd::Float8>& coarse;
+    PipelineCounters& counters;
+    bool paired(const CoarseGroup<simd::Float8>& g) const { return shadedInPairs(*g.group.draw); }
+    bool canPair(const CoarseGroup<simd::Float8>& a, const CoarseGroup<simd::Float8>& b) const {
+      return raster::canPair(a.group, b.group);
+    }
+    void shadeOne(CoarseGroup<simd::Float8>& g) const { shadeCoarseGroup(job, coarse, g, counters); }
+    void shadePair(CoarseGroup<simd::Float8>& a, CoarseGroup<simd::Float8>& b) const {
+      shadeCoarsePair(job, coarse, a, b, counters);
+    }
+  };
+
  public:
   CoarseShader(const TileJob& job, const CoarseLayout<simd::Float8>& coarse, PipelineCounters& counters)
-      : job_(job), coarse_(coarse), counters_(counters) {}
-  CoarseGroup<simd::Float8>& next() { return slots_[nextIndex()]; }
-  void push() {
-    const int index = nextIndex();
-    CoarseGroup<simd::Float8>& ready = slots_[index];
-    if (shadedInPairs(*ready.group.draw)) {
-      if (waiting_ >= 0 && canPair(slots_[waiting_].group, ready.group)) {
-        shadeCoarsePair(job_, coarse_, slots_[waiting_], ready, counters_);
-        waiting_ = -1;
-        return;
-      }
-      flush();
-      waiting_ = index;
-      return;
-    }
-    flush();
-    shadeCoarseGroup(job_, coarse_, ready, counters_);
-  }
-  void flush() {
-    if (waiting_ >= 0) shadeCoarseGroup(job_, coarse_, slots_[waiting_], counters_);
-    waiting_ = -1;
-  }
+      : queue_(Policy{job, coarse, counters}) {}
+  CoarseGroup<simd::Float8>& next() { return queue_.next(); }
+  void push() { queue_.push(); }
+  void flush() { queue_.flush(); }
 
  private:
-  int nextIndex() const { return waiting_ == 0 ? 1 : 0; }
-  const TileJob& job_;
-  const CoarseLayout<simd::Float8>& coarse_;
-  PipelineCounters& counters_;
-  CoarseGroup<simd::Float8> slots_[2];
-  int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
+  PairingQueue<CoarseGroup<simd::Float8>, Policy> queue_;
 };
 
 }  // namespace raster

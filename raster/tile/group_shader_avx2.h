@@ -6,6 +6,7 @@
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include "raster/tile/group_shader.h"
+#include "raster/tile/pairing_queue.h"
 
 namespace raster {
 
@@ -80,38 +81,26 @@ inline void interpolatePair(const TileJob& job, FragmentGroup<simd::Float8>& a, 
 // the framebuffer ends as if each were shaded alone.
 template <>
 class GroupShader<simd::Float8> {
+  // How the shared pairing queue (pairing_queue.h) shades 1x1 groups.
+  struct Policy {
+    const TileJob& job;
+    PipelineCounters& counters;
+    bool paired(const FragmentGroup<simd::Float8>& g) const { return shadedInPairs(*g.draw); }
+    bool canPair(const FragmentGroup<simd::Float8>& a, const FragmentGroup<simd::Float8>& b) const { return raster::canPair(a, b); }
+    void shadeOne(FragmentGroup<simd::Float8>& g) const { shadeGroup(job, g, counters); }
+    void shadePair(FragmentGroup<simd::Float8>& a, FragmentGroup<simd::Float8>& b) const { shadeGroupPair(job, a, b, counters); }
+  };
+
  public:
-  GroupShader(const TileJob& job, PipelineCounters& counters) : job_(job), counters_(counters) {}
+  GroupShader(const TileJob& job, PipelineCounters& counters) : queue_(Policy{job, counters}) {}
   // Where the next group is prepared: never the waiting group's slot.
-  FragmentGroup<simd::Float8>& next() { return slots_[nextIndex()]; }
-  void push() {
-    const int index = nextIndex();
-    FragmentGroup<simd::Float8>& ready = slots_[index];
-    if (shadedInPairs(*ready.draw)) {
-      if (waiting_ >= 0 && canPair(slots_[waiting_], ready)) {
-        shadeGroupPair(job_, slots_[waiting_], ready, counters_);
-        waiting_ = -1;
-        return;
-      }
-      flush();
-      waiting_ = index;
-      return;
-    }
-    flush();
-    shadeGroup(job_, ready, counters_);
-  }
+  FragmentGroup<simd::Float8>& next() { return queue_.next(); }
+  void push() { queue_.push(); }
   // Shades the waiting group alone.
-  void flush() {
-    if (waiting_ >= 0) shadeGroup(job_, slots_[waiting_], counters_);
-    waiting_ = -1;
-  }
+  void flush() { queue_.flush(); }
 
  private:
-  int nextIndex() const { return waiting_ == 0 ? 1 : 0; }
-  const TileJob& job_;
-  PipelineCounters& counters_;
-  FragmentGroup<simd::Float8> slots_[2];
-  int waiting_ = -1;   // the slot of the group waiting for a partner, or -1
+  PairingQueue<FragmentGroup<simd::Float8>, Policy> queue_;
 };
 
 }  // namespace raster

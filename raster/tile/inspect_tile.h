@@ -27,13 +27,17 @@ namespace raster {
 // y * width + x). Helper lanes (shaded only so dFdx / dFdy see whole quads) are counted
 // apart from fragments, and never in `shaded`.
 struct FragmentCounts {
-  static constexpr int kCountersPerPixel = 5;   // the arrays below
+  static constexpr int kCountersPerPixel = 6;   // the arrays below (4 bytes per entry each)
   int width = 0, height = 0;
   std::vector<uint32_t> shaded;            // covered, passed the depth test, fragment shader ran
   std::vector<uint32_t> depthOnly;         // covered and passed, in a draw that writes no colour (no shader runs)
   std::vector<uint32_t> depthKills;        // covered, rejected by the (early) depth test
   std::vector<uint32_t> helpersUncovered;  // helper lanes: the pixel is outside the triangle
   std::vector<uint32_t> helpersKilled;     // helper lanes: covered, but failed the depth test
+  // Fragment-shader invocations whose outputs reached the pixel, each invocation shared out
+  // evenly over the pixels it wrote: 1 per fragment at 1x1, 1/4 per pixel of a whole 2x2
+  // coarse pixel (tile/coarse_tile.h). Its sum over a pass is the invocations that wrote.
+  std::vector<float> invocations;
   void reset(int width, int height);
 };
 
@@ -41,5 +45,12 @@ struct FragmentCounts {
 // bytes), adding its fragments to `counts` and its work to `counters` as that walk does.
 void inspectTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, FragmentCounts& counts,
                  PipelineCounters& counters);
+
+// The same for a pass shaded at a coarse rate: the tile as rasterizeTileCoarse<ScalarLanes>
+// does it (coarse_tile.h), through its own steps (coarse_walk.h). `shaded` counts the pixels
+// an invocation's outputs reached; an invocation that reached none (a helper lane of its
+// coarse quad) is counted in no per-pixel array, only in `counters`.
+void inspectTileCoarse(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, FragmentCounts& counts,
+                       PipelineCounters& counters);
 
 }  // namespace raster

@@ -22,4 +22,10 @@ namespace raster {
 void traceTile(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, uint32_t drawBase,
                std::span<const uint32_t> origins, PassHistory& history, PipelineCounters& counters);
 
+// The same for a pass shaded at a coarse rate (job.coarseWidth x job.coarseHeight above
+// 1x1): the tile as rasterizeTileCoarse<ScalarLanes> does it (coarse_tile.h), recording at
+// the probe the invocation that shaded its coarse pixel and the pixels its outputs reached.
+void traceTileCoarse(const TileJob& job, const TileBounds& tile, std::span<const uint32_t> bin, uint32_t drawBase,
+                     std::span<const uint32_t> origins, PassHistory& history, PipelineCounters& counters);
+
 }  // namespace raster

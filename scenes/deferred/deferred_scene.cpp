@@ -49,6 +49,17 @@ MeshData floorMesh() {
                 {0, 1, 2, 0, 2, 3});
 }
 
+// --set uv_scale (unset: the seed's cat) multiplies the cat's texture coordinates: its 2K
+// maps (REPEAT) then wrap uv_scale times along each side, and their texels per pixel, the
+// texture frequency on screen, rise with it. (The floor's coordinates come from its world
+// position in the G-buffer shader, so the cat is the mesh whose uv reaches the lookups.)
+void scaleTextureCoordinates(MeshData& mesh, float scale) {
+  for (size_t v = 6; v + 1 < mesh.vertices.size(); v += size_t(mesh.strideFloats)) {
+    mesh.vertices[v] *= scale;
+    mesh.vertices[v + 1] *= scale;
+  }
+}
+
 // The fullscreen triangle, drawn with glDrawArrays(GL_TRIANGLES, 0, 3).
 MeshData quadMesh() { return meshOf({-1, -1, 0, 0, 0, 0, 0, 0, 3, -1, 0, 0, 0, 0, 0, 0, -1, 3, 0, 0, 0, 0, 0, 0}, {0, 1, 2}); }
 
@@ -60,7 +71,8 @@ class DeferredScene final : public Scene {
 
   void setup(Backend& b) override {
     // Assets first: a missing or corrupt file stops here, before anything is rendered.
-    const MeshData cat = loadCatMesh(assetPath(options_, CAT_OBJ));
+    MeshData cat = loadCatMesh(assetPath(options_, CAT_OBJ));
+    if (const std::optional<float> uvScale = options_.params.get("uv_scale")) scaleTextureCoordinates(cat, *uvScale);
     std::vector<std::string> images;
     for (const char* image : {CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_AO, BRICK_ROUGH})
       images.push_back(assetPath(options_, image));
@@ -237,7 +249,10 @@ SceneEntry deferredScene() {
       .make = [](const SceneOptions& options) -> std::unique_ptr<Scene> { return std::make_unique<DeferredScene>(options); },
       // light_dir = normalize(0.6 cos, 1.05, 0.6 sin): atan(1.05 / 0.6) above the ground
       .params = {param::time(), param::size(), param::lightElevation("60.26"), param::offsetScale(), param::nearPlane(),
-                 param::worldOffset()},
+                 param::worldOffset(),
+                 {"uv_scale", 1.0 / 64, 1024, false, "", "1",
+                  "the cat's texture coordinates times this: its texels per pixel rise with it, toward aliasing, and a "
+                  "coarse-shaded G-buffer (--method shading=2x2-all) samples them at a quarter of the rate"}},
       .programs = {shaders::shadow::shadowProgram(), shaders::deferred::gbufferProgram(),
                    shaders::deferred::ssaoProgram(), shaders::deferred::lightingProgram()},
       .assets = {CAT_OBJ, CAT_DIFF, CAT_NOR, CAT_ARM, BRICK_COLOR, BRICK_NOR, BRICK_AO, BRICK_ROUGH, HDRI},

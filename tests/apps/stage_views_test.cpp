@@ -10,8 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/views/stage_views.h"
+#include "backends/backends.h"
+#include "raster/methods.h"
+#include "raster/view_recorder.h"
+#include "scenes/registry.h"
 #include "io/image_io.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/scene_test_helpers.h"
 
 using namespace cli_test;
 
@@ -70,5 +75,70 @@ TEST_SUITE("views") {
       CHECK(sidecar["legend"].is_object());
       CHECK(sidecar["passes"].size() == sidecar["totals"]["passes"]);
     }
+  }
+
+  TEST_CASE("invocations: one per fragment at the GL rate, a quarter per pixel of a 2x2 post pass") {
+    TempFolder temp;
+    for (const char* rate : {"1x1", "2x2", "4x4"}) {
+      INFO(rate);
+      const int side = rate[0] - '0';
+      const RunResult r = runCli(temp.path, std::string("render deferred --size 160x120 --threads 2 --quiet --view invocations "
+                                                        "--out v.png --method shading=") + rate);
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      const nlohmann::json sidecar = nlohmann::json::parse(readText(temp.path / "v.json"));
+      std::set<std::string> seen;
+      for (const nlohmann::json& pass : sidecar["passes"]) {
+        const std::string label = pass["label"];
+        INFO(label);
+        seen.insert(label);
+        const double invocations = pass["invocations"]["total"], fragments = pass["fragments_shaded"];
+        if (label == "ssao" || label == "final") {   // fullscreen post passes: every pixel written once
+          CHECK(fragments == 160.0 * 120.0);
+          // One invocation per coarse pixel, each shared by its side * side pixels; the
+          // fullscreen triangle is clipped into two, and a coarse pixel on their seam is
+          // shaded once by each (coarse fragments are per primitive), hence "about".
+          CHECK(pass["invocations"]["min"].get<double>() == 1.0 / (side * side));
+          CHECK(invocations >= fragments / (side * side));
+          CHECK(invocations <= fragments / (side * side) * (side == 1 ? 1.0 : 1.1));
+        } else {   // the G-buffer and shadow map keep one invocation per fragment
+          CHECK(invocations == doctest::Approx(fragments));
+        }
+      }
+      CHECK(seen.count("ssao") == 1);
+      CHECK(sidecar["totals"]["invocations"].get<double>() <= sidecar["totals"]["fragments_shaded"].get<double>());
+    }
+  }
+
+  TEST_CASE("recording fragment counts of coarse-shaded passes leaves every target's bytes unchanged") {
+    for (const char* rate : {"2x2", "2x2-all", "4x4"})
+      for (const std::string& scene : testing_support::scenesUnderTest()) {
+        INFO(scene << " at shading=" << rate);
+        raster::MethodSet methods;
+        raster::setMethod(methods, "shading", rate);
+        const raster::ScopedMethods scoped(methods);
+        auto plain = scenes::makeRasterBackend(2);
+        const auto expected = testing_support::renderScene(*plain, scene, 1.0f, 97, 61);
+        raster::ViewRecorder recorder(raster::ViewRecorder::Record::Fragments);
+        auto backend = scenes::makeRasterBackend(2);
+        scenes::setViewRecorder(*backend, &recorder);
+        const auto recorded = testing_support::renderScene(*backend, scene, 1.0f, 97, 61);
+        scenes::setViewRecorder(*backend, nullptr);
+        REQUIRE(recorded.size() == expected.size());
+        for (size_t i = 0; i < expected.size(); ++i) {
+          INFO("target " << expected[i].name);
+          CHECK(recorded[i].image.rgba8 == expected[i].image.rgba8);
+          CHECK(recorded[i].image.depth == expected[i].image.depth);
+          CHECK(recorded[i].image.floats == expected[i].image.floats);
+        }
+        // Each pass's shares add up to the invocations that wrote: at most one per fragment.
+        for (const raster::ViewPass& pass : recorder.passes()) {
+          double invocations = 0;
+          uint64_t fragments = 0;
+          for (float v : pass.counts.invocations) invocations += v;
+          for (uint32_t v : pass.counts.shaded) fragments += v;
+          CHECK(invocations <= double(fragments) + 1e-3);
+        }
+      }
   }
 }

@@ -9,12 +9,14 @@
 
 #include <cstring>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "backends/backends.h"
+#include "raster/methods.h"
 #include "raster/pixel_history.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
@@ -149,6 +151,59 @@ TEST_SUITE("trace") {
     CHECK(text.out.find("equals the frame's dump") != std::string::npos);
   }
 
+  TEST_CASE("a coarse-shaded pass: the invocation behind the pixel, its coarse pixel, and where its outputs went") {
+    TempFolder temp;
+    for (const char* rate : {"2x2", "4x4", "2x2-all"}) {
+      INFO(rate);
+      const int side = rate[0] - '0';
+      const json trace = traceJson(temp, "deferred", "75,65", std::string("--no-reference --method shading=") + rate);
+      CHECK(trace["stored_matches_dumps"].get<bool>());
+      std::map<std::string, int> coarsePasses;
+      for (const json& pass : trace["passes"]) {
+        checkPass(pass);   // the story holds, and the stored value is the frame's
+        const std::string label = pass["label"];
+        const bool post = label == "ssao" || label == "final";   // deferred's passes without a depth test
+        const bool coarse = post || (std::string(rate) == "2x2-all" && label == "gbuffer");
+        const int x = pass["texel"][0], y = pass["texel"][1];
+        std::set<std::string> broadcast;   // the texels the pass's invocations wrote
+        for (const json& f : pass["fragments"]) {
+          INFO(label);
+          if (!coarse || !f.contains("coarse")) {   // the 1x1 passes keep the 1x1 record
+            CHECK_FALSE(f.contains("coarse"));
+            continue;
+          }
+          coarsePasses[label] = 1;
+          const json& c = f["coarse"];
+          CHECK(c["size"] == json::array({side, side}));
+          // The coarse pixel holding the texel, aligned to the memory origin.
+          CHECK(c["texel"] == json::array({x - x % side, y - y % side}));
+          if (!f["shaded"].get<bool>()) continue;
+          // One invocation at the coarse pixel's centre, its outputs on the pixels that passed.
+          const double centreX = c["texel"][0].get<int>() + side / 2.0;
+          CHECK(c["sample_position"][0].get<double>() == centreX);
+          bool here = false;
+          for (const json& p : c["broadcast_to"]) here |= p == json::array({x, y});
+          CHECK(here == f["written"].get<bool>());
+          if (!f["written"].get<bool>()) CHECK(f["helper"].get<bool>());
+          CHECK(c["broadcast_to"].size() <= size_t(side * side));
+          for (const json& p : c["broadcast_to"])   // a post pass has one layer: one writer per pixel
+            if (!broadcast.insert(p.dump()).second) CHECK_FALSE(post);
+        }
+        // A fullscreen pass writes the whole coarse pixel, from one invocation or, where the
+        // clipped triangle's seam crosses it, one per piece (coarse fragments are per primitive).
+        if (post) CHECK(broadcast.size() == size_t(side * side));
+      }
+      CHECK(coarsePasses["ssao"] == 1);
+      CHECK(coarsePasses["final"] == 1);
+      if (std::string(rate) == "2x2-all") CHECK(coarsePasses["gbuffer"] >= 1);
+    }
+    // The text says it too.
+    const RunResult text = runCli(temp.path, "trace deferred --size 160x120 --pixel 75,65 --quiet --no-reference --method shading=2x2");
+    REQUIRE(text.status == 0);
+    CHECK(text.out.find("coarse pixel 2x2 from texel [74,") != std::string::npos);
+    CHECK(text.out.find("outputs broadcast to 4 of its 4 pixels") != std::string::npos);
+  }
+
   TEST_CASE("bad pixels are refused before rendering") {
     expectRefused("trace shadow --size 160x120 --pixel 160,0", "outside the 160x120 image");
     expectRefused("trace shadow --size 160x120 --pixel 0,120", "outside");
@@ -157,9 +212,13 @@ TEST_SUITE("trace") {
     expectRefused("trace shadow --pixel 5,5 --json /no/such/folder/t.json", "--json");
   }
 
-  TEST_CASE("tracing changes no byte of any target, at any probe") {
+  TEST_CASE("tracing changes no byte of any target, at any probe, at the GL rate and coarse rates") {
+    for (const char* rate : {"1x1", "2x2", "2x2-all"})
     for (const std::string& name : testing_support::scenesUnderTest()) {
-      INFO(name);
+      INFO(name << " at shading=" << rate);
+      raster::MethodSet methods;
+      raster::setMethod(methods, "shading", rate);
+      const raster::ScopedMethods scoped(methods);
       scenes::SceneOptions options;
       options.width = 96;
       options.height = 72;

@@ -3,6 +3,7 @@
 //   gl       bit-identical on every target (the default; the scene suites test it at more
 //            times and sizes);
 //   fast     >= 40 dB PSNR on the final image, every scene;
+//   draft    >= 30 dB on the final image, every scene;
 //   precise  >= 30 dB on the final image: it moves pixels where llvmpipe's own numerics are
 //            approximate (TRADEOFF.md says which), so it is not near llvmpipe by design; it is
 //            held closer to llvmpipe than softpipe is, where softpipe differs.
@@ -72,7 +73,9 @@ TEST_SUITE("methods") {
         raster::setMethod(s, step.name, method.name);
         CHECK(raster::methodName(s, step.name) == method.name);
       }
-    CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast)");
+    CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "lookup=cubic"); }) ==
+          "unknown method 'cubic' for step lookup (methods: linear, nearest)");
+    CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast, draft)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
           "unknown method 'slow' for step math (methods: llvmpipe, libm, fast, fast-fragment)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
@@ -87,6 +90,7 @@ TEST_SUITE("methods") {
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("gl"), gl, 320, 240).maxAbs == 0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("fast"), gl, 320, 240).psnr >= 40.0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("precise"), gl, 320, 240).psnr >= 30.0);
+      CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("draft"), gl, 320, 240).psnr >= 30.0);
     }
   }
 

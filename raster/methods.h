@@ -7,8 +7,8 @@
 //   gl       every step llvmpipe-exact (the default);
 //   precise  the most accurate method of every step;
 //   fast     the fastest set that keeps every scene at >= 40 dB against llvmpipe;
-//   draft    the fastest set found that keeps every scene at >= 30 dB (fast, with coarse
-//            shading where a blur follows and one texel per colour lookup).
+//   draft    fast with 2x2 coarse shading in offscreen post passes: >= 30 dB on every
+//            scene at 320x240 and 640x480; hdr at 1920x1080 falls below (TRADEOFF.md).
 //
 // Adding a method: its enumerator below (the values run 0, 1, ... in declaration order;
 // none sets its own), its row in methods.cpp, and its answer in the step's picker below.

@@ -79,7 +79,7 @@ TEST_SUITE("methods") {
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
           "unknown method 'slow' for step math (methods: llvmpipe, libm, fast, fast-fragment)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
-          "unknown step 'blend' (steps: math, filter, half, div, interp, compare, shading)");
+          "unknown step 'blend' (steps: math, filter, half, div, interp, lookup, compare, shading)");
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=fast,"); }).empty());
   }

@@ -139,4 +139,21 @@ TEST_SUITE("methods") {
     CHECK(stepped.maxAbs > 0);
     CHECK(stepped.psnr > 45.0);
   }
+
+  TEST_CASE("shading=2x2-offscreen leaves SSAO and the pass into the window at 1x1; 2x2-local only SSAO") {
+    // deferred's post passes are SSAO (samples around its pixel) and the lighting (draws the
+    // window): -offscreen takes neither, so the frame is gl's bytes; -local takes the
+    // lighting, whose G-buffer edges step. pbr's blurs are offscreen and go coarse, which
+    // the blur after them smooths (70 dB at 1920x1080, TRADEOFF.md).
+    raster::MethodSet offscreen, local;
+    offscreen.shading = raster::ShadingMethod::Rate2x2Offscreen;
+    local.shading = raster::ShadingMethod::Rate2x2Local;
+    const auto deferredGl = renderWithLlvmpipe("deferred", 1.0f, 160, 120);
+    CHECK(finalAgainstLlvmpipe("deferred", offscreen, deferredGl, 160, 120).maxAbs == 0);
+    CHECK(finalAgainstLlvmpipe("deferred", local, deferredGl, 160, 120).psnr < 30.0);
+    const auto pbrGl = renderWithLlvmpipe("pbr", 1.0f, 160, 120);
+    const compare::TargetStats pbr = finalAgainstLlvmpipe("pbr", offscreen, pbrGl, 160, 120);
+    CHECK(pbr.maxAbs > 0);
+    CHECK(pbr.psnr > 40.0);
+  }
 }

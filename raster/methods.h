@@ -6,7 +6,9 @@
 // trades (methodCatalog() below, made from methods.cpp's one row per method); the presets are
 //   gl       every step llvmpipe-exact (the default);
 //   precise  the most accurate method of every step;
-//   fast     the fastest set that keeps every scene at >= 40 dB against llvmpipe.
+//   fast     the fastest set that keeps every scene at >= 40 dB against llvmpipe;
+//   draft    fast with 2x2 coarse shading in offscreen post passes: >= 30 dB on every
+//            scene at 320x240 and 640x480; hdr at 1920x1080 falls below (TRADEOFF.md).
 //
 // Adding a method: its enumerator below (the values run 0, 1, ... in declaration order;
 // none sets its own), its row in methods.cpp, and its answer in the step's picker below.
@@ -17,6 +19,8 @@
 //   math    simd/gl_math.h        the GLSL transcendentals the shader ports call (the
 //                                 vertex stage's view of the set: Renderer::shadeVertices)
 //   filter  texture/sample_color  bilinear weights of RGBA8 colour lookups
+//   lookup  texture/lookup_filter.h   a LINEAR colour lookup's 2x2 footprint, or its one
+//                                 texel of largest weight
 //   half    merge/color_write.h   float -> half rounding on writes to RGBA16F targets
 //   div     simd/div_approx.h     normalize / inversesqrt (simd/glsl.h), and the 1/w of
 //                                 perspective-correct interpolation
@@ -66,6 +70,12 @@ enum class InterpMethod : uint8_t {
   Affine,       // screen-linear across each triangle: no divide, wrong at grazing angles
 };
 
+// How many texels a sampler2D lookup of a LINEAR texture reads.
+enum class LookupMethod : uint8_t {
+  Linear,     // GL: the 2x2 footprint, blended bilinearly (the `filter` step's weights)
+  Nearest,    // the footprint's texel of largest weight alone, as NEAREST filtering reads it
+};
+
 enum class CompareMethod : uint8_t {
   Bilinear,   // llvmpipe: the 2x2 footprint's compares weighted bilinearly
   Nearest,    // the compare of the one texel the coordinate lands in (GL allows either)
@@ -81,6 +91,20 @@ enum class ShadingMethod : uint8_t {
   Rate2x2,      // 2x2, in post passes
   Rate4x4,      // 4x4, in post passes
   Rate2x2All,   // 2x2 in every pass that writes colour, geometry passes too
+  Rate2x2Local,       // 2x2 in post passes that sample only at or next to their pixel
+  Rate2x2Offscreen,   // 2x2 in those of Rate2x2Local's passes that draw offscreen targets
+  Rate4x4Offscreen,   // 4x4 in the same passes
+};
+
+// Which passes a shading rate applies to (Renderer::passShadingRate decides from the
+// pass's draws and framebuffer).
+enum class CoarsePasses : uint8_t {
+  Post,        // every post pass: no colour draw of the pass tests depth
+  All,         // every pass that writes colour
+  Local,       // post passes none of whose draws samples around its pixel (SSAO: its
+               // per-pixel rotation, drawn again at each coarse centre, is all it shows)
+  Offscreen,   // Local's passes that draw offscreen targets, not the window's: the final
+               // image's own pass keeps its edges per pixel
 };
 
 struct MethodSet {
@@ -91,6 +115,7 @@ struct MethodSet {
   InterpMethod interp = InterpMethod::Perspective;
   CompareMethod compare = CompareMethod::Bilinear;
   ShadingMethod shading = ShadingMethod::Rate1x1;
+  LookupMethod lookup = LookupMethod::Linear;
   bool operator==(const MethodSet&) const = default;
 };
 
@@ -111,7 +136,7 @@ struct StepInfo {
   std::vector<MethodInfo> methods;   // the first is llvmpipe's (the default)
 };
 const std::vector<StepInfo>& methodCatalog();
-const std::vector<std::string>& presetNames();   // gl, precise, fast
+const std::vector<std::string>& presetNames();   // gl, precise, fast, draft
 
 // The set a preset names; MethodError for an unknown name.
 MethodSet presetMethods(std::string_view preset);
@@ -183,6 +208,17 @@ constexpr bool perspectiveVaryings(InterpMethod m) {
   }
   return true;
 }
+// lookup: a LINEAR sampler2D lookup reads the one texel of largest bilinear weight, as a
+// NEAREST texture does (else its 2x2 footprint, blended). Asked through
+// sampling::lookupFilter (texture/lookup_filter.h), the one place colour lookups read their
+// texture's filter.
+constexpr bool nearestLookup(LookupMethod m) {
+  switch (m) {
+    case LookupMethod::Linear: return false;
+    case LookupMethod::Nearest: return true;
+  }
+  return false;
+}
 // compare: one compare, of the texel a shadow coordinate lands in (else the 2x2 footprint's
 // compares weighted bilinearly).
 constexpr bool nearestCompare(CompareMethod m) {
@@ -200,8 +236,11 @@ constexpr int coarsePixelWidth(ShadingMethod m) {
     case ShadingMethod::Rate1x2: return 1;
     case ShadingMethod::Rate2x1:
     case ShadingMethod::Rate2x2:
-    case ShadingMethod::Rate2x2All: return 2;
-    case ShadingMethod::Rate4x4: return 4;
+    case ShadingMethod::Rate2x2All:
+    case ShadingMethod::Rate2x2Local:
+    case ShadingMethod::Rate2x2Offscreen: return 2;
+    case ShadingMethod::Rate4x4:
+    case ShadingMethod::Rate4x4Offscreen: return 4;
   }
   return 1;
 }
@@ -211,23 +250,28 @@ constexpr int coarsePixelHeight(ShadingMethod m) {
     case ShadingMethod::Rate2x1: return 1;
     case ShadingMethod::Rate1x2:
     case ShadingMethod::Rate2x2:
-    case ShadingMethod::Rate2x2All: return 2;
-    case ShadingMethod::Rate4x4: return 4;
+    case ShadingMethod::Rate2x2All:
+    case ShadingMethod::Rate2x2Local:
+    case ShadingMethod::Rate2x2Offscreen: return 2;
+    case ShadingMethod::Rate4x4:
+    case ShadingMethod::Rate4x4Offscreen: return 4;
   }
   return 1;
 }
-// shading: the rate applies to every pass that writes colour (else to post passes only:
-// Renderer::passShadingRate).
-constexpr bool coarseInEveryPass(ShadingMethod m) {
+// shading: which passes the rate applies to (Renderer::passShadingRate).
+constexpr CoarsePasses coarsePasses(ShadingMethod m) {
   switch (m) {
     case ShadingMethod::Rate1x1:
     case ShadingMethod::Rate2x1:
     case ShadingMethod::Rate1x2:
     case ShadingMethod::Rate2x2:
-    case ShadingMethod::Rate4x4: return false;
-    case ShadingMethod::Rate2x2All: return true;
+    case ShadingMethod::Rate4x4: return CoarsePasses::Post;
+    case ShadingMethod::Rate2x2All: return CoarsePasses::All;
+    case ShadingMethod::Rate2x2Local: return CoarsePasses::Local;
+    case ShadingMethod::Rate2x2Offscreen:
+    case ShadingMethod::Rate4x4Offscreen: return CoarsePasses::Offscreen;
   }
-  return false;
+  return CoarsePasses::Post;
 }
 // math: the method the vertex stage runs (vertexStageSet).
 constexpr MathMethod vertexMath(MathMethod m) {

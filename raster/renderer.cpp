@@ -289,13 +289,31 @@ std::pair<int, int> passShadingRate(std::span<const DrawRecord> draws, const Fra
   const ShadingMethod method = methods::active().shading;
   const int width = methods::coarsePixelWidth(method), height = methods::coarsePixelHeight(method);
   if (width == 1 && height == 1) return {1, 1};
-  bool writesColor = false, depthTested = false;
+  bool writesColor = false, depthTested = false, aroundPixel = false;
   for (const DrawRecord& draw : draws) {
     if (colorOutputsWritten(draw, framebuffer) == 0) continue;
     writesColor = true;
     depthTested |= draw.state.depthTest && framebuffer.depth;
+    aroundPixel |= draw.samplesAroundPixel;
   }
-  if (!writesColor || (depthTested && !methods::coarseInEveryPass(method))) return {1, 1};
+  if (!writesColor) return {1, 1};
+  switch (methods::coarsePasses(method)) {
+    case CoarsePasses::All: return {width, height};
+    case CoarsePasses::Post: break;
+    // A shader that samples around its pixel (program.h, samplesAroundPixel: SSAO) rotates
+    // its samples per pixel: a coarse centre draws a new rotation, and that noise is the
+    // whole of its target's detail (16 dB at 2x2 in deferred; shading-rate note).
+    case CoarsePasses::Local:
+      if (aroundPixel) return {1, 1};
+      break;
+    // The pass into the window makes the final image: a coarse pixel there steps every edge
+    // it reads from a full-size target (deferred's G-buffer, hdr's cubes). Offscreen post
+    // passes (blurs, bloom) feed filters that smooth a coarse pixel's steps away.
+    case CoarsePasses::Offscreen:
+      if (aroundPixel || framebuffer.flipY) return {1, 1};
+      break;
+  }
+  if (depthTested) return {1, 1};
   return {width, height};
 }
 

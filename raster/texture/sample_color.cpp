@@ -20,6 +20,7 @@
 
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/format.h"
+#include "raster/texture/lookup_filter.h"
 #include "raster/texture/sample_trace.h"
 #include "raster/texture/sampler.h"
 
@@ -88,7 +89,7 @@ int lerp8(int weight, int a, int b) { return (a + ((weight * (b - a) * 128 + 163
 void sampleRgba8(const Texture& t, float s, float tc, float out[4]) {
   auto texel = [&](int x, int y) { return rgba8Texel(t, x, y); };
   constexpr float kUnorm8 = float(1.0 / 255.0);
-  if (t.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(t) == Filter::Nearest) {
     const uint8_t* p = texel(wrapNearestFixed(s, t.width, t.sampler.wrapS), wrapNearestFixed(tc, t.height, t.sampler.wrapT));
     for (int c = 0; c < 4; ++c) out[c] = float(p[c]) * kUnorm8;
     return;
@@ -166,7 +167,7 @@ void sampleFloat(const Texture& t, float s, float tc, float out[4]) {
     const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4 + size_t(c);
     return t.format == TexelFormat::RGBA32F ? t.f32[i] : format::floatFromHalf(t.half[i]);
   };
-  if (t.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(t) == Filter::Nearest) {
     const int x = wrapNearestFloat(s, t.width, t.sampler.wrapS), y = wrapNearestFloat(tc, t.height, t.sampler.wrapT);
     for (int c = 0; c < 4; ++c) out[c] = texel(x, y, c);
     return;
@@ -210,7 +211,7 @@ void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
 void explainColor(const Texture& texture, SampleRecord& record) {
   const bool fixedPoint = texture.format == TexelFormat::RGBA8 && methods::fixedPointFilter(methods::active().filter);
   const float s = record.s, t = record.t;
-  if (texture.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(texture) == Filter::Nearest) {
     record.filter = "nearest";
     record.texelCount = 1;
     FootprintTexel& texel = record.texels[0];

@@ -6,6 +6,7 @@
 
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/linear_taps_avx2.h"
+#include "raster/texture/lookup_filter.h"
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 
@@ -121,7 +122,7 @@ template <int N>
       out[h][3] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(low8), kUnorm8));
     }
   };
-  if (t.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(t) == Filter::Nearest) {
     __m256i p[N];
     for (int h = 0; h < N; ++h)
       p[h] = fetch(wrapNearest(s[h], t.width, t.sampler.wrapS, true), wrapNearest(tc[h], t.height, t.sampler.wrapT, true));
@@ -330,7 +331,7 @@ void sampleRgba8Float(const Texture& t, const __m256* s, const __m256* tc, simd:
     const __m256i p = _mm256_i32gather_epi32(texels, texelUnits(t, inStrips, x, y), 4);
     for (int c = 0; c < 4; ++c) planes[c] = _mm256_mul_ps(_mm256_cvtepi32_ps(channel(p, c)), kUnorm8);
   };
-  if (t.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(t) == Filter::Nearest) {
     for (int h = 0; h < N; ++h) {
       __m256 planes[4];
       fetch(wrapNearest(s[h], t.width, t.sampler.wrapS, false), wrapNearest(tc[h], t.height, t.sampler.wrapT, false), planes);
@@ -352,7 +353,7 @@ void sampleRgba8Float(const Texture& t, const __m256* s, const __m256* tc, simd:
 
 template <int N>
 [[gnu::always_inline]] inline void sampleHalf(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
-  if (t.sampler.filter == Filter::Nearest) {
+  if (lookupFilter(t) == Filter::Nearest) {
     __m256i all[N];
     for (int h = 0; h < N; ++h) all[h] = splat(-1);
     return sampleHalfNearest<N>(t, s, tc, all, out);
@@ -383,13 +384,13 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
     sampleRgba8Float<N>(texture, sv, tv, out);
   } else if (texture.format == TexelFormat::RGBA8) {
     sampleRgba8<N>(texture, sv, tv, out);
-  } else if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Nearest && live) {
+  } else if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Nearest && live) {
     __m256i liveBits[N];
     for (int h = 0; h < N; ++h) liveBits[h] = _mm256_castps_si256(live[h].v);
     sampleHalfNearest<N>(texture, sv, tv, liveBits, out);
   } else if (texture.format == TexelFormat::RGBA16F) {
     sampleHalf<N>(texture, sv, tv, out);
-  } else if (texture.isDepth() && texture.sampler.filter == Filter::Nearest) {
+  } else if (texture.isDepth() && lookupFilter(texture) == Filter::Nearest) {
     // A depth texture through sampler2D (the pbr scene's position reconstruction and SSAO):
     // code * depthCodeScale in r, (0, 0, 1) in gba, as sample_color.cpp's depthTexelChannel.
     const int* codes = reinterpret_cast<const int*>(texture.depth.data());
@@ -519,7 +520,7 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]) {
   if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
-  if (texture.format == TexelFormat::RGBA16F && texture.sampler.filter == Filter::Linear &&
+  if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Linear &&
       texture.sampler.wrapS == Wrap::ClampToEdge && texture.width >= 2) {
     // Both groups' taps joined, for the 16-lane blend (sample_half_avx512.h); any wrap of t.
     LinearTaps8 x[2], y[2];
@@ -564,7 +565,7 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 }
 
 void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
-  if (texture.sampler.filter != Filter::Linear) return;
+  if (lookupFilter(texture) != Filter::Linear) return;
   // The texel rows the lookup will read: each lane's footprint starts at (x0, y0) and
   // (x0, y1), in the layout it reads, with the same wrapping.
   const char* base = nullptr;
@@ -600,7 +601,7 @@ void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
 void sampleColorGrid8(const Texture& texture, simd::Float8 s, simd::Float8 t, float stepS, float stepT,
                       simd::Float8 (*taps)[4]) {
   const SamplerState& state = texture.sampler;
-  if (texture.format == TexelFormat::RGBA16F && state.filter == Filter::Linear && state.wrapS == Wrap::ClampToEdge &&
+  if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Linear && state.wrapS == Wrap::ClampToEdge &&
       state.wrapT == Wrap::ClampToEdge && sampleHalfGridShared(texture, s.v, t.v, stepS, stepT, taps))
     return;
   for (int j = 0; j < 3; ++j)

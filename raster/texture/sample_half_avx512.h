@@ -19,6 +19,7 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/simd/prefetch.h"
 #include "raster/texture/lane_loads_avx512.h"
+#include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
@@ -108,7 +109,7 @@ namespace raster::sampling {
 
 // Whether sampleHalfNearestPair is this texture's lookup.
 inline bool isHalfNearest(const Texture& t) {
-  return t.format == TexelFormat::RGBA16F && t.sampler.filter == Filter::Nearest;
+  return t.format == TexelFormat::RGBA16F && lookupFilter(t) == Filter::Nearest;
 }
 
 // ---- LINEAR with CLAMP_TO_EDGE: the hdr post passes' lookups ---------------------------------
@@ -328,7 +329,7 @@ template <int R>
 // Whether sampleHalfBilinearPair is this texture's lookup: RGBA16F, LINEAR, CLAMP_TO_EDGE
 // along both axes (the hdr scene's post targets), at least two texels wide.
 inline bool isHalfBilinearClamp(const Texture& t) {
-  return t.format == TexelFormat::RGBA16F && t.sampler.filter == Filter::Linear &&
+  return t.format == TexelFormat::RGBA16F && lookupFilter(t) == Filter::Linear &&
          t.sampler.wrapS == Wrap::ClampToEdge && t.sampler.wrapT == Wrap::ClampToEdge && t.width >= 2;
 }
 

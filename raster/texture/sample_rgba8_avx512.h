@@ -14,6 +14,7 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/lane_loads_avx512.h"
+#include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {
@@ -97,7 +98,7 @@ struct StripColumns16 {
 
 // Whether sampleRgba8Pair is this texture's lookup under the active method set.
 inline bool isRgba8Bilinear(const Texture& t) {
-  return t.format == TexelFormat::RGBA8 && t.sampler.filter == Filter::Linear &&
+  return t.format == TexelFormat::RGBA8 && lookupFilter(t) == Filter::Linear &&
          methods::fixedPointFilter(methods::active().filter);
 }
 

@@ -3,6 +3,7 @@
 //   gl       bit-identical on every target (the default; the scene suites test it at more
 //            times and sizes);
 //   fast     >= 40 dB PSNR on the final image, every scene;
+//   draft    >= 30 dB on the final image, every scene;
 //   precise  >= 30 dB on the final image: it moves pixels where llvmpipe's own numerics are
 //            approximate (TRADEOFF.md says which), so it is not near llvmpipe by design; it is
 //            held closer to llvmpipe than softpipe is, where softpipe differs.
@@ -72,11 +73,13 @@ TEST_SUITE("methods") {
         raster::setMethod(s, step.name, method.name);
         CHECK(raster::methodName(s, step.name) == method.name);
       }
-    CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast)");
+    CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "lookup=cubic"); }) ==
+          "unknown method 'cubic' for step lookup (methods: linear, nearest)");
+    CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast, draft)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
           "unknown method 'slow' for step math (methods: llvmpipe, libm, fast, fast-fragment)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==
-          "unknown step 'blend' (steps: math, filter, half, div, interp, compare, shading)");
+          "unknown step 'blend' (steps: math, filter, half, div, interp, lookup, compare, shading)");
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=fast,"); }).empty());
   }
@@ -87,6 +90,7 @@ TEST_SUITE("methods") {
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("gl"), gl, 320, 240).maxAbs == 0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("fast"), gl, 320, 240).psnr >= 40.0);
       CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("precise"), gl, 320, 240).psnr >= 30.0);
+      CHECK(finalAgainstLlvmpipe(scene, raster::presetMethods("draft"), gl, 320, 240).psnr >= 30.0);
     }
   }
 
@@ -134,5 +138,22 @@ TEST_SUITE("methods") {
     const compare::TargetStats stepped = finalAgainstLlvmpipe("shadow", nearest, gl, 160, 120);
     CHECK(stepped.maxAbs > 0);
     CHECK(stepped.psnr > 45.0);
+  }
+
+  TEST_CASE("shading=2x2-offscreen leaves SSAO and the pass into the window at 1x1; 2x2-local only SSAO") {
+    // deferred's post passes are SSAO (samples around its pixel) and the lighting (draws the
+    // window): -offscreen takes neither, so the frame is gl's bytes; -local takes the
+    // lighting, whose G-buffer edges step. pbr's blurs are offscreen and go coarse, which
+    // the blur after them smooths (70 dB at 1920x1080, TRADEOFF.md).
+    raster::MethodSet offscreen, local;
+    offscreen.shading = raster::ShadingMethod::Rate2x2Offscreen;
+    local.shading = raster::ShadingMethod::Rate2x2Local;
+    const auto deferredGl = renderWithLlvmpipe("deferred", 1.0f, 160, 120);
+    CHECK(finalAgainstLlvmpipe("deferred", offscreen, deferredGl, 160, 120).maxAbs == 0);
+    CHECK(finalAgainstLlvmpipe("deferred", local, deferredGl, 160, 120).psnr < 30.0);
+    const auto pbrGl = renderWithLlvmpipe("pbr", 1.0f, 160, 120);
+    const compare::TargetStats pbr = finalAgainstLlvmpipe("pbr", offscreen, pbrGl, 160, 120);
+    CHECK(pbr.maxAbs > 0);
+    CHECK(pbr.psnr > 40.0);
   }
 }

@@ -173,6 +173,76 @@ TEST_SUITE("texture") {
     checkLookups({13, 7, TexelFormat::RGBA16F, Filter::Nearest, Wrap::ClampToEdge, Wrap::ClampToEdge}, 10);
   }
 
+  TEST_CASE("lookup=nearest: a LINEAR texture reads as NEAREST, its footprint's texel of largest weight, on every lookup path") {
+    // The method's whole promise: the value is the one texel the coordinate lands in (the
+    // footprint texel of largest bilinear weight), so the same as the texture set to
+    // NEAREST under gl, and the 8-lane, paired and grid lookups agree with the scalar one.
+    std::mt19937 rng(81);
+    raster::MethodSet nearestSet;
+    nearestSet.lookup = raster::LookupMethod::Nearest;
+    long mismatches = 0, differsFromLinear = 0, lookups = 0;
+    for (const auto& [format, grey, strips] : {std::tuple{raster::TexelFormat::RGBA8, false, false},
+                                               std::tuple{raster::TexelFormat::RGBA8, false, true},
+                                               std::tuple{raster::TexelFormat::RGBA16F, false, false},
+                                               std::tuple{raster::TexelFormat::RGBA8, true, false}}) {
+      for (const auto& [w, h] : {std::pair{16, 8}, std::pair{13, 7}, std::pair{64, 3}, std::pair{1, 1}}) {
+        raster::Texture tex = randomTexture(rng, w, h, format, grey);
+        for (raster::Wrap wrap : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge}) {
+          tex.sampler = {raster::Filter::Linear, wrap, wrap, false};
+          raster::Texture sampled = tex;   // LINEAR, in strips alone where the variant says so
+          if (strips && raster::makeStripCopy(sampled)) raster::releaseRows(sampled);
+          raster::Texture nearestTex = tex;
+          nearestTex.sampler.filter = raster::Filter::Nearest;
+          for (int round = 0; round < 100; ++round) {
+            alignas(64) float s16[16], t16[16];
+            for (int i = 0; i < 16; ++i) s16[i] = lookupCoordinate(rng, w), t16[i] = lookupCoordinate(rng, h);
+            float want[16][4], linear[16][4], got[16][4];
+            for (int i = 0; i < 16; ++i) {
+              raster::sampling::sampleColor(nearestTex, s16[i], t16[i], want[i]);   // under gl
+              raster::sampling::sampleColor(sampled, s16[i], t16[i], linear[i]);
+            }
+            const raster::ScopedMethods scoped(nearestSet);
+            for (int i = 0; i < 16; ++i) {
+              raster::sampling::sampleColor(sampled, s16[i], t16[i], got[i]);
+              for (int c = 0; c < 4; ++c) {
+                mismatches += !sameLookup(got[i][c], want[i][c]);
+                differsFromLinear += !sameLookup(got[i][c], linear[i][c]);
+              }
+              ++lookups;
+            }
+#if RASTER_AVX2
+            using raster::simd::Float8;
+            using raster::simd::Float8x2;
+            const raster::Sampler2D sampler{0, &sampled};
+            const auto one = raster::texture(sampler, raster::glsl::vec2<Float8>(Float8::load(s16), Float8::load(t16)));
+            const auto pair = raster::texture(sampler, raster::glsl::vec2<Float8x2>(Float8x2(Float8::load(s16), Float8::load(s16 + 8)),
+                                                                                    Float8x2(Float8::load(t16), Float8::load(t16 + 8))));
+            raster::glsl::vec4<Float8x2> grid[3][3];   // the centre tap is the lookup at uv
+            raster::textureGrid3x3(sampler, raster::glsl::vec2<Float8x2>(Float8x2(Float8::load(s16), Float8::load(s16 + 8)),
+                                                                         Float8x2(Float8::load(t16), Float8::load(t16 + 8))),
+                                   glm::vec2(1.0f / float(w), 1.0f / float(h)), grid);
+            alignas(64) float planes[3][4][16];
+            for (int c = 0; c < 4; ++c) {
+              (c == 0 ? one.x : c == 1 ? one.y : c == 2 ? one.z : one.w).store(planes[0][c]);
+              (c == 0 ? pair.x : c == 1 ? pair.y : c == 2 ? pair.z : pair.w).store(planes[1][c]);
+              const auto& centre = grid[1][1];
+              (c == 0 ? centre.x : c == 1 ? centre.y : c == 2 ? centre.z : centre.w).store(planes[2][c]);
+            }
+            for (int i = 0; i < 16; ++i)
+              for (int c = 0; c < 4; ++c) {
+                if (i < 8) mismatches += !sameLookup(planes[0][c][i], want[i][c]);
+                mismatches += !sameLookup(planes[1][c][i], want[i][c]);
+                mismatches += !sameLookup(planes[2][c][i], want[i][c]);
+              }
+#endif
+          }
+        }
+      }
+    }
+    MESSAGE(lookups << " lookups, " << mismatches << " mismatches, " << differsFromLinear << " channels unlike LINEAR");
+    CHECK(mismatches == 0);
+    CHECK(differsFromLinear > lookups);   // the method does change what a LINEAR lookup reads
+  }
 #if RASTER_AVX2
   TEST_CASE("the 8-lane and paired samplers, for all lanes or some, equal the scalar reference on every wrap, filter, format and filter method") {
     std::mt19937 rng(77);

@@ -152,6 +152,32 @@ constexpr bool kDepthTestsInBlocks = false;
 template <class F>
 class BlockDepthTest;
 
+// What every BlockDepthTest holds across a triangle's blocks: the z plane broadcast into the
+// register type L it computes depths in, and the depth buffer and test of the triangle's draw.
+template <class L>
+class BlockDepthState {
+ public:
+  BlockDepthState(const TileJob& job, const SetupTriangle& tri)
+      : dadx_(tri.z.dadx), dady_(tri.z.dady), a0_(tri.z.a0), depthOffset_(tri.depthOffset) {
+    const Framebuffer& fb = *job.framebuffer;
+    const RasterState& state = job.draws[tri.drawIndex].state;
+    tests_ = state.depthTest && fb.depth;
+    if (!tests_) return;
+    buffer_ = fb.depth->depth.data();
+    format_ = fb.depth->format;
+    width_ = fb.width, height_ = fb.height;
+    lessEqual_ = state.depthFunc == DepthFunc::Lequal;
+    writes_ = state.depthWrite;
+  }
+
+ protected:
+  const L dadx_, dady_, a0_, depthOffset_;   // the z plane, broadcast
+  bool tests_ = false, lessEqual_ = false, writes_ = false;
+  uint32_t* buffer_ = nullptr;
+  TexelFormat format_ = TexelFormat::Depth16;
+  int width_ = 0, height_ = 0;
+};
+
 }  // namespace raster
 
 #include "raster/tile/depth_test_avx2.h"

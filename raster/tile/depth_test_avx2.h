@@ -100,20 +100,9 @@ inline constexpr bool kDepthTestsInBlocks<simd::Float8> = true;
 // BlockDepthTest (depth_test.h) in two 8-lane halves: the AVX-512 form's operations, the
 // z plane, the buffer and the test held across the triangle's blocks, so the same bits.
 template <>
-class BlockDepthTest<simd::Float8> {
+class BlockDepthTest<simd::Float8> : BlockDepthState<simd::Float8> {
  public:
-  BlockDepthTest(const TileJob& job, const SetupTriangle& tri)
-      : dadx_(tri.z.dadx), dady_(tri.z.dady), a0_(tri.z.a0), depthOffset_(tri.depthOffset) {
-    const Framebuffer& fb = *job.framebuffer;
-    const RasterState& state = job.draws[tri.drawIndex].state;
-    tests_ = state.depthTest && fb.depth;
-    if (!tests_) return;
-    buffer_ = fb.depth->depth.data();
-    format_ = fb.depth->format;
-    width_ = fb.width, height_ = fb.height;
-    lessEqual_ = state.depthFunc == DepthFunc::Lequal;
-    writes_ = state.depthWrite;
-  }
+  using BlockDepthState<simd::Float8>::BlockDepthState;
 
   [[gnu::always_inline]] uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
     if (!tests_) return coverage;
@@ -180,11 +169,6 @@ class BlockDepthTest<simd::Float8> {
   }
   static uint32_t bits(__m256i pass) { return uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(pass))); }
 
-  const simd::Float8 dadx_, dady_, a0_, depthOffset_;   // the z plane, broadcast
-  bool tests_ = false, lessEqual_ = false, writes_ = false;
-  uint32_t* buffer_ = nullptr;
-  TexelFormat format_ = TexelFormat::Depth16;
-  int width_ = 0, height_ = 0;
 };
 
 template <>

@@ -46,20 +46,9 @@ inline void splitRows(__m512i v, __m128i (&rows)[4]) {
 // the triangle and the job again for every block. Returns the pixels that pass (bit row * 4
 // + col).
 template <>
-class BlockDepthTest<simd::Float8> {
+class BlockDepthTest<simd::Float8> : BlockDepthState<simd::Float8x2> {
  public:
-  BlockDepthTest(const TileJob& job, const SetupTriangle& tri)
-      : dadx_(tri.z.dadx), dady_(tri.z.dady), a0_(tri.z.a0), depthOffset_(tri.depthOffset) {
-    const Framebuffer& fb = *job.framebuffer;
-    const RasterState& state = job.draws[tri.drawIndex].state;
-    tests_ = state.depthTest && fb.depth;
-    if (!tests_) return;
-    buffer_ = fb.depth->depth.data();
-    format_ = fb.depth->format;
-    width_ = fb.width, height_ = fb.height;
-    lessEqual_ = state.depthFunc == DepthFunc::Lequal;
-    writes_ = state.depthWrite;
-  }
+  using BlockDepthState<simd::Float8x2>::BlockDepthState;
 
   [[gnu::always_inline]] uint32_t operator()(int blockX, int blockY, uint32_t coverage) const {
     if (!tests_) return coverage;
@@ -111,11 +100,6 @@ class BlockDepthTest<simd::Float8> {
   }
 
  private:
-  const simd::Float8x2 dadx_, dady_, a0_, depthOffset_;   // the z plane, broadcast
-  bool tests_ = false, lessEqual_ = false, writes_ = false;
-  uint32_t* buffer_ = nullptr;
-  TexelFormat format_ = TexelFormat::Depth16;
-  int width_ = 0, height_ = 0;
 };
 
 // depthOnlyRegion (depth_test.h) a 16-pixel region row at a time: its codes, test and

@@ -86,3 +86,23 @@ TEST_SUITE("stability") {
     CHECK(pointOf(s, "filter=float", 31622.8)["fails"] == true);
   }
 }
+
+// Where coarse shading (--method shading=RATE, tile/coarse_tile.h) fails, pinned the same
+// way; STABILITY.md's "Coarse shading" charts the sweeps these come from. A suite of its own,
+// so ctest runs it beside the one above.
+TEST_SUITE("stability_coarse") {
+  TEST_CASE("hdr instances (edges): 2x1 holds over 10 cubes and fails at 100, 2x2 fails at 10 already") {
+    // The post passes take the rate; the cubes' edges are the detail a coarse bright pass
+    // and bloom chain smear, and more cubes make more of them (STABILITY.md).
+    const json s = sweep("hdr --param instances=10:100:2 --methods gl,shading=2x1,shading=2x2 --size 160x120 --threads 2");
+    CHECK(pointOf(s, "gl", 100.0)["identical_to_llvmpipe"] == true);
+    CHECK(pointOf(s, "shading=2x1", 10.0)["fails"] == false);
+    CHECK(pointOf(s, "shading=2x1", 100.0)["fails"] == true);
+    CHECK(s["first_failure"]["shading=2x1"] == 100.0);
+    CHECK(s["first_failure"]["shading=2x2"] == 10.0);
+    // A coarser rate is never the more accurate one here.
+    for (double value : {10.0, 100.0})
+      CHECK(pointOf(s, "shading=2x2", value)["psnr_vs_llvmpipe_db"].get<double>() <
+            pointOf(s, "shading=2x1", value)["psnr_vs_llvmpipe_db"].get<double>());
+  }
+}

@@ -34,6 +34,10 @@ struct SceneEntry {
   // `raster sweep NAME --param` takes it, "PARAM=FROM:TO:STEPS[:log]", optionally followed
   // by further sweep options ("size=1:8192:10:log --no-softpipe").
   std::vector<std::string> sweeps;
+  // Where coarse shading fails (STABILITY.md, "Coarse shading"; bench/stability_sweeps.sh):
+  // sweeps in the same form, each with the `--methods` it races against llvmpipe
+  // ("instances=10:100000:5:log --methods gl,shading=2x2"), charted apart from the ones above.
+  std::vector<std::string> coarseSweeps;
 };
 
 // Every row, the built-in scenes first in the order `raster scenes` lists them, then any

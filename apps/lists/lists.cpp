@@ -85,7 +85,7 @@ int listScenes(const ScenesArgs& args) {
     for (const scenes::ProgramEntry& program : row.programs) programs.push_back(program.name);
     rows.push_back({{"name", row.name}, {"description", row.description}, {"seed", row.seed},
                     {"params", paramsJson(row.params)}, {"programs", programs}, {"assets", row.assets},
-                    {"sweeps", row.sweeps}});
+                    {"sweeps", row.sweeps}, {"coarse_sweeps", row.coarseSweeps}});
   }
   std::cout << rows.dump(2) << "\n";
   return 0;

@@ -45,7 +45,10 @@ Field resample(const Field& f, int width, int height) {
   return out;
 }
 
-Field countField(const ViewPass& pass, const std::vector<uint32_t>& counts) {
+namespace {
+
+template <class Count>
+Field countFieldOf(const ViewPass& pass, const std::vector<Count>& counts) {
   Field f{pass.width, pass.height, {}, {}};
   const size_t n = size_t(pass.width) * size_t(pass.height);
   f.num.assign(n, 0.0);
@@ -55,15 +58,10 @@ Field countField(const ViewPass& pass, const std::vector<uint32_t>& counts) {
   return f;
 }
 
-Field countField(const ViewPass& pass, const std::vector<float>& counts) {
-  Field f{pass.width, pass.height, {}, {}};
-  const size_t n = size_t(pass.width) * size_t(pass.height);
-  f.num.assign(n, 0.0);
-  f.den.assign(n, 1.0);
-  for (int y = 0; y < pass.height; ++y)
-    for (int x = 0; x < pass.width; ++x) f.num[size_t(y) * size_t(pass.width) + size_t(x)] = counts[texelAt(pass, x, y)];
-  return f;
-}
+}  // namespace
+
+Field countField(const ViewPass& pass, const std::vector<uint32_t>& counts) { return countFieldOf(pass, counts); }
+Field countField(const ViewPass& pass, const std::vector<float>& counts) { return countFieldOf(pass, counts); }
 
 uint64_t total(const std::vector<uint32_t>& values) {
   uint64_t total = 0;

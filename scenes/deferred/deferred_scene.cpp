@@ -261,6 +261,8 @@ SceneEntry deferredScene() {
                  "world_offset=1:1e6:13:log",
                  "time=1:1e10:11:log",
                  "size=1:8192:10:log --no-softpipe"},
+      // Texture frequency: the cat's and the floor's maps under a coarse G-buffer.
+      .coarseSweeps = {"uv_scale=0.25:64:5:log --methods gl,shading=2x2,shading=2x2-all"},
   };
 }
 

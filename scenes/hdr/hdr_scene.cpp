@@ -319,6 +319,8 @@ SceneEntry hdrScene() {
                  "world_offset=1:1e7:15:log",
                  "time=1:1e10:11:log",
                  "size=1:8192:10:log --no-softpipe"},
+      // Edges: the cubes' silhouettes under a coarse bright pass and bloom chain.
+      .coarseSweeps = {"instances=10:100000:5:log --methods gl,shading=2x1,shading=1x2,shading=2x2"},
   };
 }
 

@@ -80,10 +80,12 @@ TEST_SUITE("registry") {
         CHECK(scenes::makeBoundProgram(program.name) != nullptr);
       }
       for (const std::string& asset : row.assets) CHECK(fs::exists(sourceRoot() / "assets" / asset));
-      for (const std::string& sweep : row.sweeps) {
-        INFO("sweep " << sweep);
-        CHECK(hasParam(row, sweep.substr(0, sweep.find('='))));
-      }
+      for (const auto* sweeps : {&row.sweeps, &row.coarseSweeps})
+        for (const std::string& sweep : *sweeps) {
+          INFO("sweep " << sweep);
+          CHECK(hasParam(row, sweep.substr(0, sweep.find('='))));
+        }
+      for (const std::string& sweep : row.coarseSweeps) CHECK(sweep.find(" --methods ") != std::string::npos);
       CHECK(scenes::makeScene(row.name, {}) != nullptr);
     }
   }
@@ -114,7 +116,7 @@ TEST_SUITE("registry") {
     const nlohmann::json rows = nlohmann::json::parse(json.out);
     REQUIRE(rows.size() == scenes::sceneRegistry().size() + 1);
     for (const auto& row : rows)
-      for (const char* column : {"name", "description", "seed", "params", "programs", "assets", "sweeps"})
+      for (const char* column : {"name", "description", "seed", "params", "programs", "assets", "sweeps", "coarse_sweeps"})
         CHECK(row.contains(column));
     CHECK(rows.back()["name"] == kExtra);
     CHECK(rows.back()["programs"] == rows.front()["programs"]);

@@ -129,7 +129,7 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
 }
 
 void setup_detail::appendVaryingPlanes(const SetupState& state, const PlaneSetup& s, const float* v0, const float* v1,
-                                       const float* v2, SetupTriangle& tri, SetupLists out) {
+                                       const float* v2, SetupTriangle& tri, const SetupLists& out) {
   // Perspective-correct varyings: premultiply by each vertex's 1/w (apply_perspective_corr).
   // The interp=affine method (methods.h) takes the plain values (times 1, exactly): planes
   // that are linear in screen space.

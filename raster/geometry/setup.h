@@ -87,7 +87,7 @@ inline Plane planeOf(const PlaneSetup& s, float a0, float a1, float a2) {
 // The varying planes of the triangle `tri` just appended, from its vertex records in
 // rotated order: appended to out.varyingPlanes, tri.varyingBase set.
 void appendVaryingPlanes(const SetupState& state, const PlaneSetup& s, const float* v0, const float* v1,
-                         const float* v2, SetupTriangle& tri, SetupLists out);
+                         const float* v2, SetupTriangle& tri, const SetupLists& out);
 
 }  // namespace setup_detail
 

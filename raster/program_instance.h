@@ -17,7 +17,12 @@ namespace raster {
 template <class Program>
 class ProgramInstance final : public ShaderInstance {
  public:
-  explicit ProgramInstance(const typename Program::Uniforms& uniforms) : uniforms_(uniforms) {}
+  // A port may compute values that depend on its uniforms alone once a draw, into members
+  // of its Uniforms that no uniform() names (Program::deriveUniforms), rather than in every
+  // lane group: under the frame's method set, as the draw is made inside the frame.
+  explicit ProgramInstance(const typename Program::Uniforms& uniforms) : uniforms_(uniforms) {
+    if constexpr (requires { Program::deriveUniforms(uniforms_); }) Program::deriveUniforms(uniforms_);
+  }
 
   const char* name() const override { return Program::kName; }
   int varyingFloats() const override { return varyingFloatCount<Program>(); }

@@ -26,6 +26,9 @@ struct LightingPass : PostProgram {
     raster::Sampler2D lit_albedo, lit_normal, lit_worldpos, lit_ssao;
     raster::Sampler2DShadow shadow_map;
     raster::Sampler2D env_map;
+    // Not GLSL uniforms: the three orbiting lights' positions, which depend on u_time alone,
+    // computed once a draw by deriveUniforms().
+    glm::vec3 light_pos[3]{};
   };
   static constexpr auto kUniformTable = std::tuple{
       raster::uniform("u_light_vp", &Uniforms::u_light_vp),
@@ -41,6 +44,20 @@ struct LightingPass : PostProgram {
   };
 
   static constexpr float SHADOW_DIM_F = 1024.0f;
+
+  // lp = vec3(cos(ang) * 3.2, 1.6 + 0.6 * sin(u_time + fi), sin(ang) * 3.2) with ang =
+  // u_time * 0.7 + fi * 2.0944: every lane computes the same values from the same operands,
+  // so they are computed once a draw, in float, by the same operations (gl_math.h's sin and
+  // cos give a float what they give each lane), where the GLSL's three sines and cosines a
+  // light cost each lane group hundreds of operations.
+  static void deriveUniforms(Uniforms& u) {
+    for (int i = 0; i < 3; i++) {
+      const float fi = float(i);
+      const float ang = u.u_time * 0.7f + fi * 2.0944f;
+      u.light_pos[i] = glm::vec3(raster::glsl::cos(ang) * 3.2f, 1.6f + 0.6f * raster::glsl::sin(u.u_time + fi),
+                                 raster::glsl::sin(ang) * 3.2f);
+    }
+  }
 
   template <class F>
   static vec3<F> reflect3(vec3<F> i, vec3<F> nn) {
@@ -122,8 +139,7 @@ struct LightingPass : PostProgram {
     vec3<F> pts = vec3<F>(F(0.0f), F(0.0f), F(0.0f));
     for (int i = 0; i < 3; i++) {
       const float fi = float(i);
-      const F ang = F(u.u_time) * F(0.7f) + F(fi * 2.0944f);
-      const vec3<F> lp = vec3<F>(cos(ang) * F(3.2f), F(1.6f) + F(0.6f) * sin(F(u.u_time) + F(fi)), sin(ang) * F(3.2f));
+      const vec3<F> lp = vec3<F>(u.light_pos[i]);   // deriveUniforms()
       const glm::vec3 lcol(0.5f + 0.5f * std::cos(fi * 2.5f), 0.5f + 0.5f * std::cos(fi * 2.5f + 2.0f),
                            0.5f + 0.5f * std::cos(fi * 2.5f + 4.0f));
       pts = pts + point_light(lp, vec3<F>(lcol * 1.4f), p, n, view_dir, shininess, spec_i, F(5.5f));

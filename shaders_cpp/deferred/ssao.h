@@ -42,6 +42,16 @@ struct SsaoPass : PostProgram {
     return t * t * (F(3.0f) - F(2.0f) * t);
   }
 
+  // range_check = smoothstep3(0.0, 1.0, SSAO_RADIUS / range). Where range <= SSAO_RADIUS the
+  // exact quotient is at least 1, so the rounded one is too, and the clamp makes t and the
+  // smoothstep exactly 1; only lanes in `counts` are added. A group whose every counted lane
+  // is so skips the division (the sample's third, with the projection's two): the same sum.
+  template <class F, class M>
+  static F rangeCheck(F range, M counts) {
+    if (all((!counts) | (range <= F(SSAO_RADIUS)))) return F(1.0f);
+    return smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / range);
+  }
+
   template <class F>
   static F hash21(vec2<F> p) {
     const F v = sin(dot(p, vec2<F>(F(127.1f), F(311.7f)))) * F(43758.5453f);
@@ -98,7 +108,6 @@ struct SsaoPass : PostProgram {
       F occ = F(0.0f);
       for (int i = 0; i < SSAO_K; i++) {
         const F stored_vz = (u.u_view * vec4<F>(stored_p[i], F(1.0f))).z;
-        const F range_check = smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / max(abs(cur_vz - stored_vz), F(0.0001f)));
         // view looks down -Z: a stored surface closer to the camera (greater z) occludes
         const auto in_front = (clip_w[i] > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
                               (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) & (stored_vz >= sample_vz[i] + F(SSAO_BIAS));
@@ -106,7 +115,8 @@ struct SsaoPass : PostProgram {
         // (textureWhere); GLSL reads it everywhere, and the sum is the same.
         const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv[i]).xyz();
         const auto occludes = in_front & (dot(stored_n, stored_n) > F(0.01f));
-        occ = select(occludes, occ + range_check, occ);
+        const F range = max(abs(cur_vz - stored_vz), F(0.0001f));
+        occ = select(occludes, occ + rangeCheck(range, occludes), occ);
       }
       ao = select(has_surface, clamp(F(1.0f) - F(SSAO_STRENGTH) * occ / F(float(SSAO_K)), F(0.0f), F(1.0f)), ao);
     }

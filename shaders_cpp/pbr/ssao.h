@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include "raster/shader/program.h"
 #include "scenes/program_entry.h"
@@ -67,6 +68,18 @@ struct SsaoPass : PostProgram {
     return t * t * (F(3.0f) - F(2.0f) * t);
   }
 
+  // rangeCheck = smoothstep(0.0, 1.0, uRadius / range). Where range <= uRadius, for a
+  // positive finite uRadius (0 / 0 and inf / inf are NaN, which the clamp makes 0), the exact
+  // quotient is at least 1 or infinite, so the rounded one is too, and the clamp makes t and
+  // the smoothstep exactly 1; only lanes in `counts` are added. A group whose every counted
+  // lane is so skips the division, one of the sample's four: the same sum.
+  template <class F, class M>
+  static F rangeCheck(const Uniforms& u, F range, M counts) {
+    const bool radiusFinite = u.uRadius > 0.0f && u.uRadius <= std::numeric_limits<float>::max();
+    if (radiusFinite && all((!counts) | (range <= F(u.uRadius)))) return F(1.0f);
+    return smoothstep01(F(u.uRadius) / range);
+  }
+
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
@@ -101,8 +114,8 @@ struct SsaoPass : PostProgram {
       oy = oy / ow;
       const vec2<F> offset = vec2<F>(ox * F(0.5f) + F(0.5f), oy * F(0.5f) + F(0.5f));
       const F sampleDepth = ReconstructViewZ(u, offset);
-      const F rangeCheck = smoothstep01(F(u.uRadius) / abs(fragPos.z - sampleDepth));
-      occlusion = occlusion + select(sampleDepth >= samplePos.z + F(u.uBias), rangeCheck, F(0.0f));
+      const auto occludes = sampleDepth >= samplePos.z + F(u.uBias);
+      occlusion = occlusion + select(occludes, rangeCheck(u, abs(fragPos.z - sampleDepth), occludes), F(0.0f));
     }
     const F ao = F(1.0f) - occlusion / F(float(KERNEL_SIZE));
     out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));

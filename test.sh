@@ -15,6 +15,8 @@ step() {   # step NAME COMMAND...: runs it and records its minutes
   echo "== $name took ${timings[-1]#"$name "}"
 }
 step setup ./setup.sh
+# The configurations' build folders are Ninja's where a new one is made (setup.sh says why).
+if [ -z "${CMAKE_GENERATOR:-}" ] && command -v ninja > /dev/null; then export CMAKE_GENERATOR=Ninja; fi
 step release ctest --test-dir build --output-on-failure -j"$(nproc)"
 for config in tests/configs/*.sh; do
   step "$(basename "$config" .sh)" "$config"

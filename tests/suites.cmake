@@ -51,6 +51,22 @@ foreach(suite ${RASTER_TEST_SUITES})
   endif()
   set_tests_properties(${suite} PROPERTIES ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS ${label})
 endforeach()
+# The longest suites start first, so that `ctest -j` runs the short ones beside them and no
+# long one is left running alone at the end (a fresh clone has no Testing/ cost data, and
+# ctest would start them in name order: under ASan + UBSan, views, 79 s, started last).
+# Their costs are the seconds each took under ASan + UBSan, the longest configuration
+# (a fresh clone's CI run of ad60a01: docs/notes/2026-12-02-ci-minutes-2.md); scene_deferred,
+# among the longest with SIMD off, by its seconds there, and the harness tests, which only
+# the release run has, ahead of its 10-second suites. A suite a configuration does not build
+# is skipped. The costs only order the suites: each still runs whole.
+set(suite_costs determinism_paths 100 views 80 determinism 60 trace 40 scene_deferred 36 hostile 35
+    report 31 gl_math 28 cli 26 stability 25 sweep 21 memory 20 methods 19 scene_pbr 18)
+while(suite_costs)
+  list(POP_FRONT suite_costs suite cost)
+  if(suite IN_LIST RASTER_TEST_SUITES)
+    set_tests_properties(${suite} PROPERTIES COST ${cost})
+  endif()
+endwhile()
 # Every suite the binary holds is one of the list above (a suite declared in a way the
 # scan above does not read would otherwise never run).
 add_test(NAME suites_registered COMMAND ${CMAKE_COMMAND} -DBINARY=$<TARGET_FILE:raster_tests>
@@ -59,9 +75,6 @@ if(RASTER_TEST_SUITES_ONLY)
   return()   # the tests below run the command line, the microbenchmarks and Python
 endif()
 
-# The longest suite (GL comparisons of the deferred scene; about 10 minutes under the
-# sanitizers) starts first, so `ctest -j` runs the others beside it.
-set_tests_properties(scene_deferred PROPERTIES COST 1000)
 
 # The microbenchmarks (bench/micro, built when Google Benchmark is found): every family runs
 # once, briefly, and the JSON it writes must name them all.
@@ -89,16 +102,18 @@ endif()
 # killed under a shard: the merged sweep must equal `raster sweep`'s byte for byte.
 add_test(NAME dask_sweep COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/dask_sweep_test.py $<TARGET_FILE:raster_cli>
          ${CMAKE_SOURCE_DIR})
-set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness)
+set_tests_properties(dask_sweep PROPERTIES TIMEOUT 300 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness
+                     COST 20)
 
 # bench/goal_runs.py, the issues' speed-goal protocol, on tiny frames: its verdicts follow
 # the runs' ratios, its JSON and table agree, bad input exits 2 before any run.
 add_test(NAME goal_runs COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/goal_runs_test.py $<TARGET_FILE:raster_cli>
          ${CMAKE_SOURCE_DIR})
-set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness)
+set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness COST 30)
 
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.
 add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py
          $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
-set_tests_properties(report_chromium PROPERTIES TIMEOUT 180 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness)
+set_tests_properties(report_chromium PROPERTIES TIMEOUT 180 ENVIRONMENT "RASTER_SOURCE_DIR=${CMAKE_SOURCE_DIR}" LABELS harness
+                     COST 30)

@@ -33,16 +33,6 @@
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
-// The intrinsics as raster/simd/intrinsics.h includes them, with GCC 12's -Wuninitialized
-// silenced around them (that header says why): the first include is the one that counts.
-#if defined(__x86_64__) || defined(__i386__)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <immintrin.h>
-#pragma GCC diagnostic pop
-#else
-#include <immintrin.h>
-#endif
-#endif
+// Not <immintrin.h>: raster/simd/intrinsics.h includes it between pragmas that silence a
+// GCC 12 warning at the sites its functions are inlined into, and a precompiled header does
+// not carry that state to them (thousands of -Wmaybe-uninitialized warnings in the AVX-512 build).

@@ -30,7 +30,7 @@ cd "$(dirname "$0")/../.."
 # runs at length, the pipeline and the image files, is in the libraries at -O1.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DRASTER_SANITIZE=address,undefined \
   -DRASTER_SANITIZE_OPTIONS="-fno-sanitize-address-use-after-scope;-fno-sanitize=object-size;-fsanitize-undefined-trap-on-error" \
-  -DRASTER_COMMAND_LINE_OPTIONS=-O0 -DRASTER_TEST_OPTIONS=-O0 > /dev/null
+  -DRASTER_COMMAND_LINE_OPTIONS=-O0 > /dev/null
 # raster_tests brings the programs its suites run (raster, raster_extra_scene); the
 # microbenchmarks (raster_micro) are measuring code, smoke-tested in the other builds.
 cmake --build build-asan -j"$(nproc)" --target raster_tests

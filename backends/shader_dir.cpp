@@ -19,11 +19,13 @@ std::string shaderSourceDir() {
 }
 
 ProgramFiles programFiles(const std::string& program) {
-  const std::string base = shaderSourceDir() + "/" + program;
-  const size_t plus = base.find('+');
-  if (plus == std::string::npos) return {base + ".vert", base + ".frag"};
-  const size_t slash = base.rfind('/', plus);
-  return {base.substr(0, plus) + ".vert", base.substr(0, slash + 1) + base.substr(plus + 1) + ".frag"};
+  // The '+' is looked for in the program's name only: a source folder may hold one.
+  const std::string dir = shaderSourceDir() + "/";
+  const size_t plus = program.find('+');
+  if (plus == std::string::npos) return {dir + program + ".vert", dir + program + ".frag"};
+  const size_t slash = program.rfind('/', plus);
+  const std::string folder = slash == std::string::npos ? std::string() : program.substr(0, slash + 1);
+  return {dir + program.substr(0, plus) + ".vert", dir + folder + program.substr(plus + 1) + ".frag"};
 }
 
 }  // namespace scenes

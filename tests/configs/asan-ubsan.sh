@@ -19,7 +19,7 @@ cd "$(dirname "$0")/../.."
 # UBSan's findings trap (-fsanitize-undefined-trap-on-error) rather than call its runtime:
 # every check stays, but its failure path is one ud2 instruction instead of a call with the
 # source location and type descriptors it would print, and those paths were half the code of
-# a port (2026-12-03 note: deferred's lighting port 23.4 -> 14.4 CPU s and 1.48 -> 0.74 MB
+# a port (docs/notes/2026-12-03-ci-minutes-3.md: deferred's lighting port 23.4 -> 14.4 CPU s and 1.48 -> 0.74 MB
 # of text, the test programs 27.6 -> 16.3 s). What a finding prints instead: doctest's
 # "test case CRASHED: SIGILL" with the test's name, then ASan's report of the signal
 # (handle_sigill=1, below) with the stack down to the file and line of the check; rebuilding

@@ -106,12 +106,6 @@ std::string describeFloats(const ImageData& image, int x, int row) {
   return s.str();
 }
 
-uint32_t bitsOf(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
-
 float uniform(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 
 glm::vec4 randomOpaqueColor(std::mt19937& rng) {

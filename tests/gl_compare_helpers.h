@@ -20,6 +20,7 @@
 #include <glm/glm.hpp>
 
 #include "backends/backends.h"
+#include "tests/float_bits.h"
 
 namespace gltest {
 
@@ -137,7 +138,7 @@ FloatComparison compareFloatBits(const ImageData& raster, const ImageData& gl);
 std::string describeRgba8(const ImageData& image, int x, int row);
 std::string describeFloats(const ImageData& image, int x, int row);
 
-uint32_t bitsOf(float f);
+using testing_support::bitsOf;
 
 // Uniform float in [lo, hi) from a fixed-seed generator.
 float uniform(std::mt19937& rng, float lo, float hi);

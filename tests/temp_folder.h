@@ -1,5 +1,6 @@
 // A fresh temporary folder for one test, removed with its content afterwards: the CLI tests'
-// working folders, the image and asset tests' bad files.
+// working folders, the image and asset tests' bad files; and the whole bytes of a file, read
+// and written.
 #pragma once
 
 #include <doctest/doctest.h>
@@ -7,6 +8,8 @@
 #include <stdlib.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -34,5 +37,16 @@ struct TempFolder {
 
   std::string file(const std::string& name) const { return (path / name).string(); }
 };
+
+inline std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out << bytes;
+  REQUIRE(out.good());
+}
 
 }  // namespace testing_support

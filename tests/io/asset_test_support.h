@@ -6,8 +6,6 @@
 
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -30,18 +28,8 @@ inline std::string realAsset(const std::string& relative) {
   return p;
 }
 
-inline std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-inline void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out << bytes;
-  REQUIRE(out.good());
-}
+using testing_support::readBytes;
+using testing_support::writeBytes;
 
 // The SceneError message of f(); fails the test if f does not throw one.
 template <class F>

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <random>
 #include <set>
@@ -38,8 +37,11 @@ using scenes::ImageData;
 using scenes::Target;
 using scenes::TexelFormat;
 
-struct TempFolder : testing_support::TempFolder {
-  TempFolder() : testing_support::TempFolder("raster-image-io-test") {}
+using testing_support::readBytes;
+using testing_support::writeBytes;
+
+struct ImageTempFolder : testing_support::TempFolder {
+  ImageTempFolder() : testing_support::TempFolder("raster-image-io-test") {}
 };
 
 // Whether two images are the same, field by field and payload byte by payload byte.
@@ -93,15 +95,6 @@ void writeForeignExr(const std::string& path, const std::vector<std::string>& na
   file.writePixels(height);
 }
 
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
-
 }  // namespace
 
 TEST_SUITE("image_io") {
@@ -129,7 +122,7 @@ TEST_SUITE("image_io") {
   }
 
   TEST_CASE("depth dumps: every 16-bit and every 24-bit code, through a file") {
-    TempFolder temp;
+    ImageTempFolder temp;
     std::vector<uint32_t> codes(1 << 16);
     for (uint32_t i = 0; i < codes.size(); ++i) codes[i] = i;
     const ImageData depth16 = depthImage(256, 256, 16, codes);
@@ -145,7 +138,7 @@ TEST_SUITE("image_io") {
   }
 
   TEST_CASE("half dumps keep every half bit pattern, NaN payloads included") {
-    TempFolder temp;
+    ImageTempFolder temp;
     std::vector<float> values(1 << 16);
     for (uint32_t bits = 0; bits < values.size(); ++bits) values[bits] = raster::format::floatFromHalf(uint16_t(bits));
     const ImageData half = floatImage(128, 128, TexelFormat::RGBA16F, values);   // 4 channels
@@ -160,7 +153,7 @@ TEST_SUITE("image_io") {
   }
 
   TEST_CASE("images that cannot be dumped exactly are refused, and nothing is written") {
-    TempFolder temp;
+    ImageTempFolder temp;
     const ImageData half = floatImage(2, 1, TexelFormat::RGBA16F, {0, 0, 0, 1, 0.1f, 0, 0, 1});
     CHECK_THROWS_WITH_AS(compare::writeExr(temp.file("h.exr"), half),
                          doctest::Contains("h.exr: value 0.100000 at pixel (1, 0) of a half image is not a half"),
@@ -173,7 +166,7 @@ TEST_SUITE("image_io") {
   }
 
   TEST_CASE("RGBA32F dumps keep every float's bits") {
-    TempFolder temp;
+    ImageTempFolder temp;
     std::mt19937 random(7);
     std::vector<float> values(64 * 32 * 4);
     for (float& v : values) v = std::bit_cast<float>(uint32_t(random()));
@@ -187,7 +180,7 @@ TEST_SUITE("image_io") {
   }
 
   TEST_CASE("files that are not such dumps are refused, naming the file and the problem") {
-    TempFolder temp;
+    ImageTempFolder temp;
     const ImageData depth = depthImage(3, 2, 24, {0, 1, 16777215, 12345678, 42, 8388608});
     const std::string good = temp.file("good.exr");
     compare::writeExr(good, depth);
@@ -255,7 +248,7 @@ TEST_SUITE("image_io") {
                    : t.image.format == TexelFormat::RGBA16F ? "half" : t.image.format == TexelFormat::RGBA32F ? "float" : "rgba8");
     CHECK(kinds == std::set<std::string>{"depth16", "depth24", "half", "float", "rgba8"});
 
-    TempFolder temp;
+    ImageTempFolder temp;
     const std::string folder = temp.file("dump");
     std::vector<std::string> written;
     compare::writeTargetDump(folder, targets, [&](const std::string& path) { written.push_back(path); });

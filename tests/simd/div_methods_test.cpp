@@ -5,12 +5,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
 
 #include "raster/simd/glsl.h"
+#include "tests/float_bits.h"
 
 namespace {
 
@@ -30,11 +30,7 @@ std::vector<float> positiveNormals() {
   return v;
 }
 
-uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using testing_support::bitsOf;
 
 }  // namespace
 

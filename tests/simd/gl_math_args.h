@@ -4,21 +4,14 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <random>
+
+#include "tests/float_bits.h"
 
 namespace gl_math_test {
 
-inline uint32_t bits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-inline float fromBits(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
+using testing_support::bitsOf;
+using testing_support::floatOf;
 
 inline float uniformIn(std::mt19937& rng, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 // +-m * 2^e, m in [1, 2), e in [lo, hi].
@@ -26,6 +19,6 @@ inline float magnitude(std::mt19937& rng, int lo, int hi) {
   const float m = std::ldexp(1.0f + uniformIn(rng, 0.0f, 1.0f), lo + int(rng() % unsigned(hi - lo + 1)));
   return (rng() & 1u) ? m : -m;
 }
-inline float anyBits(std::mt19937& rng) { return fromBits(rng()); }
+inline float anyBits(std::mt19937& rng) { return floatOf(rng()); }
 
 }  // namespace gl_math_test

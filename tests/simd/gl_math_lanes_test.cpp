@@ -79,13 +79,13 @@ TEST_SUITE("gl_math") {
 #endif
         for (int l = 0; l < 8; ++l) {
 #if RASTER_AVX2
-          if (bits(fastOut[l]) != bits(lanesOut[l]) && differing++ == 0)
+          if (bitsOf(fastOut[l]) != bitsOf(lanesOut[l]) && differing++ == 0)
             first = "x = " + std::to_string(xs[l]) + ", y = " + std::to_string(ys[l]) + ": Float8 " +
                     std::to_string(fastOut[l]) + ", Lanes<8> " + std::to_string(lanesOut[l]);
-          if ((bits(pairedOut[l]) != bits(fastOut[l]) || bits(pairedOut[l + 8]) != bits(swappedOut[l])) && differing++ == 0)
+          if ((bitsOf(pairedOut[l]) != bitsOf(fastOut[l]) || bitsOf(pairedOut[l + 8]) != bitsOf(swappedOut[l])) && differing++ == 0)
             first = "x = " + std::to_string(xs[l]) + ", y = " + std::to_string(ys[l]) + ": Float8x2 differs from Float8";
 #endif
-          scalarDiffering += bits(fn.scalar(xs[l], ys[l])) != bits(lanesOut[l]);
+          scalarDiffering += bitsOf(fn.scalar(xs[l], ys[l])) != bitsOf(lanesOut[l]);
         }
       }
       CAPTURE(first);
@@ -105,7 +105,7 @@ TEST_SUITE("gl_math") {
     auto plainBase = [&]() -> float {
       switch (rng() % 6u) {
         case 0: return 0.0f;
-        case 1: return fromBits(bits(1.0f) + (rng() % 64u) - 32u);   // log2 near 0
+        case 1: return floatOf(bitsOf(1.0f) + (rng() % 64u) - 32u);   // log2 near 0
         case 2: return std::fabs(magnitude(rng, -126, 127));
         case 3: return std::numeric_limits<float>::min();
         case 4: return std::numeric_limits<float>::max();
@@ -133,7 +133,7 @@ TEST_SUITE("gl_math") {
         alignas(64) float paired[16];
         fn(Float8x2{Float8::load(xs), Float8::load(xs)}, Float8x2{Float8::load(ys), Float8::load(ys)}).store(paired);
         for (int l = 0; l < 16; ++l)
-          if (bits(paired[l]) != bits(plain[l % 8]) && differing++ == 0)
+          if (bitsOf(paired[l]) != bitsOf(plain[l % 8]) && differing++ == 0)
             first = std::string(name) + "(" + std::to_string(xs[l % 8]) + ", " + std::to_string(ys[l % 8]) + ") as Float8x2";
         alignas(32) float xsBroken[8];
         std::memcpy(xsBroken, xs, sizeof xs);
@@ -141,7 +141,7 @@ TEST_SUITE("gl_math") {
         fn(Float8::load(xsBroken), Float8::load(ys)).store(full);
         ++groups;
         for (int l = 0; l < 8; ++l)
-          if (l != round % 8 && bits(plain[l]) != bits(full[l]) && differing++ == 0)
+          if (l != round % 8 && bitsOf(plain[l]) != bitsOf(full[l]) && differing++ == 0)
             first = std::string(name) + "(" + std::to_string(xs[l]) + ", " + std::to_string(ys[l]) + ")";
       }
     };

@@ -39,15 +39,15 @@ namespace {
 using namespace gl_math_test;
 using shaders::test::MathProbe;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using testing_support::kInf;
+using testing_support::kNaN;
 
 bool isDenormal(float f) { return f != 0.0f && std::fabs(f) < std::numeric_limits<float>::min(); }
 
 // Distance in units in the last place (on the ordered integer line of float bit patterns).
 int64_t ulpDistance(float a, float b) {
   auto ordered = [](float f) {
-    const int64_t i = int32_t(bits(f));
+    const int64_t i = int32_t(bitsOf(f));
     return i < 0 ? int64_t(INT32_MIN) - i : i;
   };
   return std::llabs(ordered(a) - ordered(b));
@@ -117,7 +117,7 @@ Args log2Args(std::mt19937& rng) {
   switch (rng() % 4u) {
     case 0: return {std::fabs(magnitude(rng, -126, 127)), 0.0f};
     case 1: return {uniformIn(rng, 0.0f, 2.0f), 0.0f};
-    case 2: return {fromBits(bits(1.0f) + (rng() % 64u) - 32u), 0.0f};
+    case 2: return {floatOf(bitsOf(1.0f) + (rng() % 64u) - 32u), 0.0f};
     default: return {anyBits(rng), 0.0f};
   }
 }
@@ -173,7 +173,7 @@ Args atan2Args(std::mt19937& rng) {
 Args acosAsinArgs(std::mt19937& rng) {
   switch (rng() % 4u) {
     case 0: return {uniformIn(rng, -1.1f, 1.1f), 0.0f};
-    case 1: return {fromBits(bits(1.0f) - (rng() % 4096u)) * ((rng() & 1u) ? 1.0f : -1.0f), 0.0f};
+    case 1: return {floatOf(bitsOf(1.0f) - (rng() % 4096u)) * ((rng() & 1u) ? 1.0f : -1.0f), 0.0f};
     case 2: return {magnitude(rng, -30, 0), 0.0f};
     default: return {anyBits(rng), 0.0f};
   }
@@ -296,16 +296,16 @@ Agreement compare(const scenes::ImageData& ours, const scenes::ImageData& gl, co
     const float* g = &gl.floats[i * 4];
     ++a.total;
     const float x = args[i].x.effective(), y = args[i].y.effective();
-    if (bits(o[0]) == bits(g[0])) {
+    if (bitsOf(o[0]) == bitsOf(g[0])) {
       ++a.exact;
     } else {
       a.maxUlp = std::max(a.maxUlp, ulpDistance(o[0], g[0]));
       if (a.firstDiff.empty()) {
         std::ostringstream s;
         s.precision(9);
-        s << "x = " << x << " (0x" << std::hex << bits(x) << "), y = " << std::dec << y << " (0x" << std::hex << bits(y)
-          << "): ours " << std::dec << o[0] << " (0x" << std::hex << bits(o[0]) << "), gl " << std::dec << g[0] << " (0x"
-          << std::hex << bits(g[0]) << ")";
+        s << "x = " << x << " (0x" << std::hex << bitsOf(x) << "), y = " << std::dec << y << " (0x" << std::hex << bitsOf(y)
+          << "): ours " << std::dec << o[0] << " (0x" << std::hex << bitsOf(o[0]) << "), gl " << std::dec << g[0] << " (0x"
+          << std::hex << bitsOf(g[0]) << ")";
         a.firstDiff = s.str();
       }
     }
@@ -315,12 +315,12 @@ Agreement compare(const scenes::ImageData& ours, const scenes::ImageData& gl, co
       for (const float* image : {o, g}) {
         const bool flushedByGl = image == g && isDenormal(sent);
         const float expected = flushedByGl ? std::copysign(0.0f, sent) : sent;
-        if (bits(image[c]) != bits(expected) && a.echoBroken++ == 0) {
+        if (bitsOf(image[c]) != bitsOf(expected) && a.echoBroken++ == 0) {
           const Arg& arg = c == 1 ? args[i].x : args[i].y;
           std::ostringstream s;
           s.precision(9);
           s << (image == g ? "gl" : "ours") << " echoed argument " << c << " = (" << arg.value << " * " << arg.scale << ") * "
-            << arg.scale2 << " as 0x" << std::hex << bits(image[c]) << ", expected 0x" << bits(expected);
+            << arg.scale2 << " as 0x" << std::hex << bitsOf(image[c]) << ", expected 0x" << bitsOf(expected);
           a.firstEchoBroken = s.str();
         }
       }
@@ -378,9 +378,9 @@ TEST_SUITE("gl_math") {
   TEST_CASE("edge cases follow llvmpipe, not the C library") {
     using namespace raster::glsl;
     // lp_build_pow: pow(0, y) = 0 for every y (x == 0, or NaN, selects 0).
-    CHECK(bits(pow(0.0f, -1.0f)) == bits(0.0f));
-    CHECK(bits(pow(0.0f, 0.0f)) == bits(0.0f));
-    CHECK(bits(pow(kNaN, 2.0f)) == bits(0.0f));
+    CHECK(bitsOf(pow(0.0f, -1.0f)) == bitsOf(0.0f));
+    CHECK(bitsOf(pow(0.0f, 0.0f)) == bitsOf(0.0f));
+    CHECK(bitsOf(pow(kNaN, 2.0f)) == bitsOf(0.0f));
     CHECK(std::isnan(pow(-2.0f, 2.0f)));        // log2 of a negative number is NaN
     CHECK(pow<2.0f>(-2.0f) == 4.0f);            // but the literal exponent 2 is folded to x * x
     CHECK(pow<4.0f>(-2.0f) == 16.0f);
@@ -395,9 +395,9 @@ TEST_SUITE("gl_math") {
     CHECK(std::isnan(log2(-1.0f)));
     CHECK(std::isnan(sin(kInf)));
     CHECK(std::isnan(cos(kNaN)));
-    CHECK(bits(sin(-0.0f)) == bits(-0.0f));
+    CHECK(bitsOf(sin(-0.0f)) == bitsOf(-0.0f));
     CHECK(cos(0.0f) == 1.0f);
-    CHECK(bits(atan(kNaN)) == bits(0.0f));      // fsign(NaN) = 0 (unordered compare)
+    CHECK(bitsOf(atan(kNaN)) == bitsOf(0.0f));      // fsign(NaN) = 0 (unordered compare)
     CHECK(atan(1.0f, -1.0f) > 2.35f);
   }
 }

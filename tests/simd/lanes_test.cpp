@@ -15,39 +15,33 @@
 
 #include "raster/simd/glsl.h"
 #include "raster/simd/lanes.h"
+#include "tests/float_bits.h"
 
 namespace {
 
 using raster::simd::Lanes;
 using L8 = Lanes<8>;
 
-uint32_t bits(float f) {
-  uint32_t b;
-  std::memcpy(&b, &f, sizeof b);
-  return b;
-}
+using testing_support::bitsOf;
+using testing_support::floatOf;
+
 std::string hex(uint32_t b) {
   char text[16];
   std::snprintf(text, sizeof text, "0x%08X", b);
   return text;
-}
-float fromBits(uint32_t b) {
-  float f;
-  std::memcpy(&f, &b, sizeof f);
-  return f;
 }
 
 // Random floats with the special classes well represented.
 float specialFloat(std::mt19937& rng) {
   static const float specials[] = {
       0.0f, -0.0f, INFINITY, -INFINITY, std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN(),
-      fromBits(0x7FC12345u), fromBits(0xFFA00001u), fromBits(0x7F800001u) /* signalling */, std::numeric_limits<float>::denorm_min(),
-      -std::numeric_limits<float>::denorm_min(), fromBits(0x007FFFFFu), std::numeric_limits<float>::min(),
+      floatOf(0x7FC12345u), floatOf(0xFFA00001u), floatOf(0x7F800001u) /* signalling */, std::numeric_limits<float>::denorm_min(),
+      -std::numeric_limits<float>::denorm_min(), floatOf(0x007FFFFFu), std::numeric_limits<float>::min(),
       std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(), 1.0f, -1.0f, 0.5f, 1.5f, -2.5f, 3.5f};
   switch (rng() % 4) {
     case 0: return specials[rng() % (sizeof specials / sizeof specials[0])];
-    case 1: return fromBits(uint32_t(rng()));                                     // any bit pattern
-    case 2: return fromBits(uint32_t(rng()) & 0x807FFFFFu);                       // denormals
+    case 1: return floatOf(uint32_t(rng()));                                      // any bit pattern
+    case 2: return floatOf(uint32_t(rng()) & 0x807FFFFFu);                        // denormals
     default: return std::uniform_real_distribution<float>(-100.0f, 100.0f)(rng);  // ordinary values
   }
 }
@@ -76,13 +70,13 @@ int differingLanes(const L8& ref, const Float8& fast, std::string& first, const 
   fast.store(f);
   int n = 0;
   for (int i = 0; i < 8; ++i) {
-    if (bits(ref.lane[i]) == bits(f[i])) continue;
+    if (bitsOf(ref.lane[i]) == bitsOf(f[i])) continue;
     if (std::isnan(ref.lane[i]) && std::isnan(f[i])) {
       ++nanPayload;
       continue;
     }
     if (n++ == 0 && first.empty())
-      first = std::string(what) + " lane " + std::to_string(i) + ": Lanes<8> " + hex(bits(ref.lane[i])) + " vs Float8 " + hex(bits(f[i]));
+      first = std::string(what) + " lane " + std::to_string(i) + ": Lanes<8> " + hex(bitsOf(ref.lane[i])) + " vs Float8 " + hex(bitsOf(f[i]));
   }
   return n;
 }
@@ -148,7 +142,7 @@ TEST_SUITE("simd") {
     for (int round = 0; round < 5000; ++round) {
       alignas(32) float nan[8], num[8], num2[8];
       for (int i = 0; i < 8; ++i) {
-        nan[i] = fromBits((uint32_t(rng()) & 0x807FFFFFu) | 0x7F800001u);   // any sign, payload, quiet or not
+        nan[i] = floatOf((uint32_t(rng()) & 0x807FFFFFu) | 0x7F800001u);   // any sign, payload, quiet or not
         do num[i] = specialFloat(rng); while (std::isnan(num[i]));
         do num2[i] = specialFloat(rng); while (std::isnan(num2[i]));
       }
@@ -229,13 +223,13 @@ TEST_SUITE("simd") {
       alignas(32) float out[kLanes];
       lanes.store(out);
       for (int i = 0; i < kLanes; ++i) {
-        if (bits(out[i]) == bits(scalar[i])) continue;
+        if (bitsOf(out[i]) == bitsOf(scalar[i])) continue;
         if (std::isnan(out[i]) && std::isnan(scalar[i])) {   // payload choice among several NaNs
           ++nanPayload;
           continue;
         }
         if (diffs++ == 0)
-          first = std::string(what) + " lane " + std::to_string(i) + ": " + hex(bits(out[i])) + " vs " + hex(bits(scalar[i]));
+          first = std::string(what) + " lane " + std::to_string(i) + ": " + hex(bitsOf(out[i])) + " vs " + hex(bitsOf(scalar[i]));
       }
     };
     for (int round = 0; round < 20000; ++round) {

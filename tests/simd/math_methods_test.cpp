@@ -26,26 +26,19 @@
 
 // gl_math.h includes fast_math.h and libm_math.h after the helpers they build on.
 #include "raster/simd/gl_math.h"
+#include "tests/float_bits.h"
 
 namespace {
 
 namespace fast = raster::glsl::fast;
 namespace libm = raster::glsl::libm;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+using testing_support::bitsOf;
+using testing_support::floatOf;
+using testing_support::kInf;
+using testing_support::kNaN;
 constexpr int kSamples = 300000;   // per distribution
 
-uint32_t bitsOf(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-float floatOf(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
 bool sameBits(float a, float b) { return bitsOf(a) == bitsOf(b); }
 
 const std::vector<float> kEdgeValues = {

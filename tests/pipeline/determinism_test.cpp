@@ -31,10 +31,10 @@ TEST_SUITE("determinism") {
 
   // Every scene, every thread count the issue names, with the SIMD lanes and with the plain
   // ones (--scalar): the bytes of one SIMD thread. The scene suites hold one thread to
-  // llvmpipe, so all of them match llvmpipe too; CI runs this again in the build without
-  // SIMD (tests/configs/simd-off.sh). Two cases, so that the ThreadSanitizer configuration can
-  // leave the plain lanes out (which lane type runs changes no thread's share of the work,
-  // and the plain lanes are the slowest under it: tests/configs/tsan.sh).
+  // llvmpipe, so all of them match llvmpipe too. Two cases, so that the sanitizer
+  // configurations can leave the plain lanes out (which lane type runs changes no thread's
+  // share of the work, and the plain lanes are the slowest under them: tests/configs/tsan.sh
+  // and asan-ubsan.sh say what covers them there).
   TEST_CASE("every scene: threads 1, 2 and 5 give identical bytes") {
     for (const std::string& scene : testing_support::scenesUnderTest()) {
       for (const auto& [w, h] : {std::pair{97, 61}, std::pair{640, 480}}) {

@@ -156,8 +156,6 @@ std::string readAssetFile(const std::string& path) {
   return data;
 }
 
-const uint8_t* bytesOf(const std::string& s) { return reinterpret_cast<const uint8_t*>(s.data()); }
-
 void checkImageSize(const std::string& path, long w, long h) {
   if (w <= 0 || h <= 0)
     fail(path, "not a readable image (it claims a size of " + std::to_string(w) + "x" + std::to_string(h) + ")");

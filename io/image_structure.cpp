@@ -9,8 +9,6 @@
 namespace scenes {
 namespace {
 
-const uint8_t* bytesOf(const std::string& s) { return reinterpret_cast<const uint8_t*>(s.data()); }
-
 // A chunk type from the file, made safe for a one-line message.
 std::string printable(std::string s) {
   for (char& c : s)

@@ -9,9 +9,13 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace scenes {
+
+// A file's bytes, read whole into a string, as the decoders and the walks below take them.
+inline const uint8_t* bytesOf(const std::string& data) { return reinterpret_cast<const uint8_t*>(data.data()); }
 
 // The format's signature at the start of the bytes.
 bool isJpeg(const std::string& data);

@@ -11,20 +11,20 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "raster/geometry/assemble.h"
 #include "raster/geometry/clip.h"
 #include "raster/geometry/vertex_stage.h"
+#include "tests/float_bits.h"
 #include "tests/geometry/geometry_test_helpers.h"
 
 namespace {
 
 using namespace geometry_test;
 constexpr float kEps = 1.0f / 1048576;   // 2^-20
-const float kInf = std::numeric_limits<float>::infinity();
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using testing_support::kInf;
+using testing_support::kNaN;
 
 // Checks a record's clip position, window position and varyings.
 void checkRecord(const float* r, std::array<float, 4> clip, std::array<float, 4> window, std::vector<float> varyings = {}) {

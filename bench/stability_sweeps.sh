@@ -34,7 +34,7 @@ while read -r kind scene param options; do
     common=(--size 320x240 --threads 2 --quiet --no-softpipe)
   else
     out="docs/stability/$scene-${param%%=*}"
-    common=(--methods gl,fast,precise --size 320x240 --threads 2 --quiet)
+    common=(--methods gl,fast,precise,draft --size 320x240 --threads 2 --quiet)
   fi
   # shellcheck disable=SC2086  # the options are words
   command=("$raster" sweep "$scene" --param "$param" "${common[@]}" $options --out "$out")

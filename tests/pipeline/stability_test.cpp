@@ -105,4 +105,16 @@ TEST_SUITE("stability_coarse") {
       CHECK(pointOf(s, "shading=2x2", value)["psnr_vs_llvmpipe_db"].get<double>() <
             pointOf(s, "shading=2x1", value)["psnr_vs_llvmpipe_db"].get<double>());
   }
+
+  TEST_CASE("draft (2x2 in offscreen post passes): hdr holds 30 dB at 640x480 and falls below it 149 wide") {
+    // draft's coarse bright pass samples the HDR target once per 4x4 texels of it, so the
+    // bloom it thresholds aliases; the smaller the image, the larger each cube is in those
+    // texels and the more of the final image the bloom's error covers (STABILITY.md).
+    const json s = sweep("hdr --param size=149:640:2 --methods fast,draft --threads 2");
+    CHECK(pointOf(s, "draft", 149.0)["fails"] == true);
+    CHECK(pointOf(s, "draft", 640.0)["fails"] == false);
+    CHECK(s["first_failure"]["draft"] == 149.0);
+    // fast has no coarse pass: it holds at both.
+    CHECK(s["first_failure"]["fast"] == nullptr);
+  }
 }

@@ -247,6 +247,22 @@ MethodSet presetMethods(std::string_view preset) {
   throw MethodError(std::string("unknown preset '").append(preset).append("' (presets: ").append(listOf(presetNames())).append(")"));
 }
 
+std::string_view presetPromise(std::string_view preset) {
+  if (preset == "gl") return "llvmpipe's bytes in every target: every scene, size, time and parameter swept";
+  if (preset == "precise")
+    return "each step's most accurate method: off llvmpipe's bytes wherever llvmpipe's own numerics are off "
+           "(STABILITY.md names where it parts from llvmpipe)";
+  if (preset == "fast")
+    return ">= 40 dB at every scene's defaults, 320x240 to 1920x1080; lower only at sweep extremes (deferred "
+           "31.8 dB at t = 1e10, 37.6 at a world offset of 316, 39.9 at 20x15) and where llvmpipe's frame is "
+           "not finite";
+  if (preset == "draft")
+    return ">= 30 dB at every scene's defaults at 320x240 and 640x480; hdr's coarse bloom holds it only from "
+           "about 640 pixels wide, below a bloom intensity of 3, and where llvmpipe's frame is finite (not "
+           "hdr at 1920x1080)";
+  throw MethodError(std::string("unknown preset '").append(preset).append("' (presets: ").append(listOf(presetNames())).append(")"));
+}
+
 void setMethod(MethodSet& set, std::string_view step, std::string_view method) {
   const StepRow& s = stepOf(step);
   std::vector<std::string> valid;

@@ -140,6 +140,9 @@ const std::vector<std::string>& presetNames();   // gl, precise, fast, draft
 
 // The set a preset names; MethodError for an unknown name.
 MethodSet presetMethods(std::string_view preset);
+// What a preset promises against llvmpipe and where that holds, as measured (TRADEOFF.md,
+// STABILITY.md): one line for `raster methods`; MethodError for an unknown name.
+std::string_view presetPromise(std::string_view preset);
 // Applies "STEP=NAME[,STEP=NAME...]" to `set`; MethodError for an unknown step or method.
 void applyMethodOverrides(MethodSet& set, std::string_view overrides);
 // step -> method name, every step, in catalog order.

@@ -72,7 +72,7 @@ void addMethodOptions(CLI::App& command, std::string& preset, std::string& metho
   for (const std::string& name : raster::presetNames()) presets.append(presets.empty() ? "" : "|").append(name);
   command.add_option("--preset", preset,
                      "This pipeline's method set: gl (llvmpipe's numerics, bit-exact), precise, fast (>= 40 dB), draft (>= 30 dB) "
-                     "(raster methods lists them)")
+                     "(raster methods lists them and where each promise holds)")
       ->type_name(presets)->capture_default_str();
   command.add_option("--method", method, "Override steps of the preset, e.g. math=fast,half=rne")
       ->type_name("STEP=NAME[,...]");

@@ -26,7 +26,7 @@ nlohmann::json paramsJson(const std::vector<scenes::ParamSpec>& specs) {
 }  // namespace
 
 // `raster methods`: every step, its methods (the default first) and what each trades; then
-// the presets as step=method lists.
+// the presets as step=method lists, each with what it promises and where.
 int listMethods() {
   for (const raster::StepInfo& step : raster::methodCatalog()) {
     std::cout << step.name << ": " << step.what << "\n";
@@ -39,7 +39,7 @@ int listMethods() {
     std::cout << "  " << preset << " ";
     for (const auto& [step, method] : raster::methodNames(raster::presetMethods(preset)))
       std::cout << " " << step << "=" << method;
-    std::cout << "\n";
+    std::cout << "\n    promise: " << raster::presetPromise(preset) << "\n";
   }
   return 0;
 }

@@ -169,7 +169,7 @@ TEST_SUITE("cli") {
                              "interp=perspective (default)", "interp=affine", "compare=bilinear (default)", "compare=nearest",
                              "shading=1x1 (default)", "shading=2x2", "shading=2x2-all",
                              "shading=2x2-local", "shading=2x2-offscreen", "lookup=linear (default)", "lookup=nearest",
-                             "  gl  math=llvmpipe", "  precise ", "  fast ", "  draft "})
+                             "  gl  math=llvmpipe", "  precise ", "  fast ", "  draft ", "    promise: llvmpipe's bytes"})
       CHECK(list.out.find(line) != std::string::npos);
     for (const char* command : {"render", "compare", "bench"}) {
       expectRefused(std::string(command) + " " + aScene() + " --preset turbo");

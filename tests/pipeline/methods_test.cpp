@@ -76,6 +76,8 @@ TEST_SUITE("methods") {
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "lookup=cubic"); }) ==
           "unknown method 'cubic' for step lookup (methods: linear, nearest)");
     CHECK(errorOf([] { raster::presetMethods("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast, draft)");
+    CHECK(errorOf([] { raster::presetPromise("turbo"); }) == "unknown preset 'turbo' (presets: gl, precise, fast, draft)");
+    for (const std::string& preset : raster::presetNames()) CHECK(!raster::presetPromise(preset).empty());
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=slow"); }) ==
           "unknown method 'slow' for step math (methods: llvmpipe, libm, fast, fast-fragment)");
     CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "blend=fast"); }) ==

@@ -94,6 +94,8 @@ enum class ShadingMethod : uint8_t {
   Rate2x2Local,       // 2x2 in post passes that sample only at or next to their pixel
   Rate2x2Offscreen,   // 2x2 in those of Rate2x2Local's passes that draw offscreen targets
   Rate4x4Offscreen,   // 4x4 in the same passes
+  Rate2x2Smooth,      // 2x2 in those of Rate2x2Offscreen's passes that minify no texture and
+                      // read only finite texels (blurs, upsamples)
 };
 
 // Which passes a shading rate applies to (Renderer::passShadingRate decides from the
@@ -105,6 +107,10 @@ enum class CoarsePasses : uint8_t {
                // per-pixel rotation, drawn again at each coarse centre, is all it shows)
   Offscreen,   // Local's passes that draw offscreen targets, not the window's: the final
                // image's own pass keeps its edges per pixel
+  Smooth,      // Offscreen's passes that read no texture larger than their target and no
+               // non-finite texel: a pass that minifies (a bright pass, a downsample) reads
+               // detail finer than its pixels, which one sample per coarse pixel aliases, and
+               // a coarse centre alone would decide which pixels a NaN or infinity reaches
 };
 
 struct MethodSet {
@@ -241,7 +247,8 @@ constexpr int coarsePixelWidth(ShadingMethod m) {
     case ShadingMethod::Rate2x2:
     case ShadingMethod::Rate2x2All:
     case ShadingMethod::Rate2x2Local:
-    case ShadingMethod::Rate2x2Offscreen: return 2;
+    case ShadingMethod::Rate2x2Offscreen:
+    case ShadingMethod::Rate2x2Smooth: return 2;
     case ShadingMethod::Rate4x4:
     case ShadingMethod::Rate4x4Offscreen: return 4;
   }
@@ -255,7 +262,8 @@ constexpr int coarsePixelHeight(ShadingMethod m) {
     case ShadingMethod::Rate2x2:
     case ShadingMethod::Rate2x2All:
     case ShadingMethod::Rate2x2Local:
-    case ShadingMethod::Rate2x2Offscreen: return 2;
+    case ShadingMethod::Rate2x2Offscreen:
+    case ShadingMethod::Rate2x2Smooth: return 2;
     case ShadingMethod::Rate4x4:
     case ShadingMethod::Rate4x4Offscreen: return 4;
   }
@@ -273,6 +281,7 @@ constexpr CoarsePasses coarsePasses(ShadingMethod m) {
     case ShadingMethod::Rate2x2Local: return CoarsePasses::Local;
     case ShadingMethod::Rate2x2Offscreen:
     case ShadingMethod::Rate4x4Offscreen: return CoarsePasses::Offscreen;
+    case ShadingMethod::Rate2x2Smooth: return CoarsePasses::Smooth;
   }
   return CoarsePasses::Post;
 }

@@ -30,6 +30,9 @@ class ProgramInstance final : public ShaderInstance {
   bool samplesTextures() const override { return raster::samplesTextures<Program>(); }
   bool lanesIndependent() const override { return raster::lanesIndependent<Program>(); }
   bool samplesAroundPixel() const override { return raster::samplesAroundPixel<Program>(); }
+  void appendSampledTextures(std::vector<const Texture*>& out) const override {
+    std::apply([&](auto... entry) { (appendSampled(entry, out), ...); }, Program::kUniformTable);
+  }
 
   void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {
     if (scalarLanes) shadeVerticesWith<ScalarLanes>(batch, out);
@@ -73,6 +76,11 @@ class ProgramInstance final : public ShaderInstance {
       const int count = batch.endVertex - first < F::kCount ? batch.endVertex - first : F::kCount;
       vertex_stage::shadeVertexGroup<Program, F>(uniforms_, batch, first, count, out);
     }
+  }
+  template <class Entry>
+  void appendSampled(Entry entry, std::vector<const Texture*>& out) const {
+    if constexpr (IsSamplerEntry<Entry>::value)
+      if (const Texture* texture = (uniforms_.*entry.member).texture) out.push_back(texture);
   }
   template <class F>
   [[gnu::always_inline]] void shade(const FragmentInput<F>& in, const F* varyings, FragmentOutput<F>& out) const {

@@ -12,6 +12,7 @@
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
 #include "raster/methods.h"
+#include "raster/texture/finite_texels.h"
 #include "raster/tile/coarse_tile.h"
 #include "raster/tile/inspect_tile.h"
 #include "raster/tile/rasterize_tile.h"
@@ -312,6 +313,24 @@ std::pair<int, int> passShadingRate(std::span<const DrawRecord> draws, const Fra
     case CoarsePasses::Offscreen:
       if (aroundPixel || framebuffer.flipY) return {1, 1};
       break;
+    // Of those, only passes that filter what is already at their scale. A pass that reads a
+    // texture larger than its target (a bright pass, a downsample) reads detail finer than
+    // its pixels: one sample per coarse pixel aliases it, and a threshold after it (hdr's
+    // bright pass) turns that into blobs the bloom spreads (STABILITY.md, "Coarse bloom").
+    // A non-finite texel spreads through a filter to every pixel whose footprint holds it;
+    // a coarse centre alone would decide which pixels of the coarse one that is, so a pass
+    // reading one keeps 1x1 and the NaNs of the frame land where GL's rules put them.
+    case CoarsePasses::Smooth: {
+      if (aroundPixel || framebuffer.flipY || depthTested) return {1, 1};
+      std::vector<const Texture*> sampled;
+      for (const DrawRecord& draw : draws)
+        if (colorOutputsWritten(draw, framebuffer) != 0) draw.shader->appendSampledTextures(sampled);
+      for (const Texture* texture : sampled)
+        if (texture->width > framebuffer.width || texture->height > framebuffer.height) return {1, 1};
+      for (const Texture* texture : sampled)
+        if (holdsNonFiniteTexels(*texture)) return {1, 1};
+      break;
+    }
   }
   if (depthTested) return {1, 1};
   return {width, height};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "raster/contract.h"
 #include "raster/shader/program.h"
@@ -27,6 +28,8 @@ class ShaderInstance {
   virtual bool lanesIndependent() const = 0;
   // Whether it samples around its pixel (raster::samplesAroundPixel, shader/program.h).
   virtual bool samplesAroundPixel() const = 0;
+  // Appends the textures its sampler uniforms are bound to for this draw (none unbound).
+  virtual void appendSampledTextures(std::vector<const Texture*>& out) const = 0;
   // Shades a batch of one instance's vertices into their records of `out`, with the
   // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;

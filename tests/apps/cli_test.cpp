@@ -168,7 +168,7 @@ TEST_SUITE("cli") {
                              "half=rtz (default)", "half=rne", "div=exact (default)", "div=approx",
                              "interp=perspective (default)", "interp=affine", "compare=bilinear (default)", "compare=nearest",
                              "shading=1x1 (default)", "shading=2x2", "shading=2x2-all",
-                             "shading=2x2-local", "shading=2x2-offscreen", "lookup=linear (default)", "lookup=nearest",
+                             "shading=2x2-local", "shading=2x2-offscreen", "shading=2x2-smooth", "lookup=linear (default)", "lookup=nearest",
                              "  gl  math=llvmpipe", "  precise ", "  fast ", "  draft ", "    promise: llvmpipe's bytes"})
       CHECK(list.out.find(line) != std::string::npos);
     for (const char* command : {"render", "compare", "bench"}) {
@@ -179,7 +179,7 @@ TEST_SUITE("cli") {
     }
     // A shading rate that is not one: refused with the rates.
     expectRefused("render " + aScene() + " --method shading=3x3",
-                  "(methods: 1x1, 2x1, 1x2, 2x2, 4x4, 2x2-all, 2x2-local, 2x2-offscreen, 4x4-offscreen)");
+                  "(methods: 1x1, 2x1, 1x2, 2x2, 4x4, 2x2-all, 2x2-local, 2x2-offscreen, 4x4-offscreen, 2x2-smooth)");
     // A lookup that is not one, and a preset that is not one: refused with the names.
     expectRefused("render " + aScene() + " --method lookup=cubic", "(methods: linear, nearest)");
     expectRefused("bench " + aScene() + " --preset drafty", "(presets: gl, precise, fast, draft)");

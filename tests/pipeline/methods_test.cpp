@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -157,5 +158,42 @@ TEST_SUITE("methods") {
     const compare::TargetStats pbr = finalAgainstLlvmpipe("pbr", offscreen, pbrGl, 160, 120);
     CHECK(pbr.maxAbs > 0);
     CHECK(pbr.psnr > 40.0);
+  }
+
+  TEST_CASE("shading=2x2-smooth: hdr's bright pass and downsamples stay 1x1, its upsamples go coarse; a NaN keeps them 1x1") {
+    // The bright pass and the downsamples read a mip larger than their target, so -smooth
+    // leaves them at 1x1 and every target up to the last downsample is fast's to the bit;
+    // the upsamples read a mip half their size and go coarse.
+    const raster::MethodSet fast = raster::presetMethods("fast");
+    raster::MethodSet smooth = fast;
+    smooth.shading = raster::ShadingMethod::Rate2x2Smooth;
+    CHECK(raster::presetMethods("draft") == smooth);
+    const auto full = renderWithMethods("hdr", fast, 160, 120);
+    const auto coarse = renderWithMethods("hdr", smooth, 160, 120);
+    REQUIRE(coarse.size() == full.size());
+    for (size_t i = 0; i < coarse.size(); ++i) {
+      INFO("target " << coarse[i].name);
+      const bool same = coarse[i].image.rgba8 == full[i].image.rgba8 && coarse[i].image.floats == full[i].image.floats &&
+                        coarse[i].image.depth == full[i].image.depth;
+      CHECK(same == !(coarse[i].name.starts_with("bloom_up") || coarse[i].name == "final"));
+    }
+    const auto gl = renderWithLlvmpipe("hdr", 1.0f, 160, 120);
+    CHECK(finalAgainstLlvmpipe("hdr", smooth, gl, 160, 120).psnr > 35.0);
+    // At 1920x1080, t = 1, the HDR target holds llvmpipe's NaN pixel (the case above), which
+    // the bright pass and the downsamples spread into the mips the upsamples read: those stay
+    // 1x1 too, so draft renders fast's bytes, NaNs included, where a coarse upsample would
+    // have redrawn the black block llvmpipe's bloom makes of it (25 dB).
+    const auto fastFrame = renderWithMethods("hdr", fast, 1920, 1080);
+    const auto draftFrame = renderWithMethods("hdr", smooth, 1920, 1080);
+    REQUIRE(draftFrame.size() == fastFrame.size());
+    for (size_t i = 0; i < draftFrame.size(); ++i) {
+      INFO("target " << draftFrame[i].name);
+      const auto& a = draftFrame[i].image;
+      const auto& b = fastFrame[i].image;
+      CHECK(a.rgba8 == b.rgba8);
+      CHECK(a.depth == b.depth);
+      REQUIRE(a.floats.size() == b.floats.size());
+      CHECK(std::memcmp(a.floats.data(), b.floats.data(), a.floats.size() * sizeof(float)) == 0);   // NaN != NaN
+    }
   }
 }

@@ -106,15 +106,19 @@ TEST_SUITE("stability_coarse") {
             pointOf(s, "shading=2x1", value)["psnr_vs_llvmpipe_db"].get<double>());
   }
 
-  TEST_CASE("draft (2x2 in offscreen post passes): hdr holds 30 dB at 640x480 and falls below it 149 wide") {
-    // draft's coarse bright pass samples the HDR target once per 4x4 texels of it, so the
-    // bloom it thresholds aliases; the smaller the image, the larger each cube is in those
-    // texels and the more of the final image the bloom's error covers (STABILITY.md).
-    const json s = sweep("hdr --param size=149:640:2 --methods fast,draft --threads 2");
-    CHECK(pointOf(s, "draft", 149.0)["fails"] == true);
-    CHECK(pointOf(s, "draft", 640.0)["fails"] == false);
-    CHECK(s["first_failure"]["draft"] == 149.0);
-    // fast has no coarse pass: it holds at both.
+  TEST_CASE("coarse bloom: fast with 2x2-offscreen holds hdr at 30 dB at 640x480 and fails 149 wide; 2x2-smooth (draft) holds at both") {
+    // 2x2-offscreen's coarse bright pass samples the HDR target once per 4x4 of its texels and
+    // thresholds what it reads, so the bloom aliases; the smaller the image, the more of it
+    // each cube's step covers (STABILITY.md, "Coarse bloom"). 2x2-smooth leaves the passes
+    // that minify (bright pass, downsamples) at 1x1 and shades only the upsamples coarse.
+    const std::string offscreen = "math=fast-fragment+compare=nearest+shading=2x2-offscreen";   // fast with it
+    const json s = sweep("hdr --param size=149:640:2 --methods fast," + offscreen + ",draft --threads 2");
+    CHECK(pointOf(s, offscreen, 149.0)["fails"] == true);
+    CHECK(pointOf(s, offscreen, 640.0)["fails"] == false);
+    CHECK(s["first_failure"][offscreen] == 149.0);
+    CHECK(s["first_failure"]["draft"] == nullptr);
     CHECK(s["first_failure"]["fast"] == nullptr);
+    for (double value : {149.0, 640.0})
+      CHECK(pointOf(s, "draft", value)["psnr_vs_llvmpipe_db"].get<double>() > 40.0);
   }
 }

@@ -10,6 +10,7 @@
 #if RASTER_AVX2
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sample_half_separable_avx512.h"
+#include "raster/texture/sample_nearest_avx512.h"
 #include "raster/texture/sample_rgba8_avx512.h"
 #include "raster/texture/sampler.h"
 
@@ -106,6 +107,7 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
 #if RASTER_ZMM_PAIRS
   simd::Float8x2 rgba[4];
   if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, 0xFFFF, rgba);   // inline (sample_half_avx512.h)
+  else if (isNearest32(texture)) sampleNearest32Pair(texture, uv.x, uv.y, rgba);   // inline (sample_nearest_avx512.h)
 #if RASTER_RGBA8_ZMM
   else if (isRgba8Bilinear(texture)) sampleRgba8Pair(texture, uv.x, uv.y, rgba);   // inline (sample_rgba8_avx512.h)
 #endif

@@ -18,6 +18,7 @@ inline raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::Te
   raster::Texture tex(w, h, format);
   for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
   for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+  for (uint32_t& code : tex.depth) code = uint32_t(rng()) & (format == raster::TexelFormat::Depth24 ? 0xFFFFFFu : 0xFFFFu);
   if (grey) {
     for (size_t i = 0; i < tex.rgba8.size(); i += 4) {
       tex.rgba8[i + 1] = tex.rgba8[i + 2] = tex.rgba8[i];

@@ -334,7 +334,8 @@ TEST_SUITE("texture") {
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
     long mismatches = 0, lookups = 0, awayFromEdge = 0;
     // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), grey,
-    // and kept in strips alone, as uploaded RGBA8 textures are (footprint_strips.h).
+    // and kept in strips alone, as uploaded RGBA8 textures are (footprint_strips.h); depth
+    // codes read through sampler2D (NEAREST inline, sample_nearest_avx512.h).
     struct Variant {
       raster::TexelFormat format;
       bool grey;
@@ -346,7 +347,9 @@ TEST_SUITE("texture") {
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Unorm8, true},
                                   Variant{raster::TexelFormat::RGBA8, true, raster::FilterMethod::Unorm8},
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float},
-                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float, true}}) {
+                                  Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float, true},
+                                  Variant{raster::TexelFormat::Depth24, false, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::Depth16, false, raster::FilterMethod::Unorm8}}) {
       const raster::TexelFormat format = variant.format;
       raster::MethodSet methods;
       methods.filter = variant.method;

@@ -37,5 +37,19 @@ namespace raster::sampling {
   return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
 }
 
+// The 4-byte values at base[index[lane]] for all sixteen lanes, in lane order: what
+// _mm512_i32gather_epi32 of those indices returns.
+[[gnu::always_inline]] inline __m512i loadSixteenLanes32(const uint32_t* base, const int (&index)[16]) {
+  auto four = [&](int lane) __attribute__((always_inline)) {   // lanes lane..lane + 3
+    __m128i v = _mm_cvtsi32_si128(int(base[index[lane]]));
+    v = _mm_insert_epi32(v, int(base[index[lane + 1]]), 1);
+    v = _mm_insert_epi32(v, int(base[index[lane + 2]]), 2);
+    return _mm_insert_epi32(v, int(base[index[lane + 3]]), 3);
+  };
+  const __m256i low = _mm256_inserti128_si256(_mm256_castsi128_si256(four(0)), four(4), 1);
+  const __m256i high = _mm256_inserti128_si256(_mm256_castsi128_si256(four(8)), four(12), 1);
+  return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+}
+
 }  // namespace raster::sampling
 #endif

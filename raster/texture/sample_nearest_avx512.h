@@ -16,6 +16,7 @@
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
 #include "raster/simd/intrinsics.h"
+#include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/lookup_filter.h"
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
@@ -31,20 +32,51 @@ inline bool isNearest32(const Texture& t) {
   return t.isDepth() || (t.format == TexelFormat::RGBA8 && !t.rgba8.empty());
 }
 
-// One 32-bit texel a lane (an RGBA8 texel or a depth code), gathered, as float channels.
+// Each lane's texel offset from lane 0's where the sixteen lanes read a 4x4 block of texels
+// as raster/tile/lane_layout.h lays a block's pixels out (2x2 quads; rows 0-1 in lanes
+// 0-7, rows 2-3 in lanes 8-15, memory rows upward): what a post pass reads at its own
+// pixel, or at one a whole number of texels away, in an offscreen target.
+[[gnu::always_inline]] inline __m512i blockOffsets16(int width) {
+  const __m512i dx = _mm512_setr_epi32(0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3);
+  const __m512i dy = _mm512_setr_epi32(0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3);
+  return _mm512_add_epi32(_mm512_mullo_epi32(dy, _mm512_set1_epi32(width)), dx);
+}
+
+// The 32-bit texels at base[index[lane]], in lane order. Where the lanes read a 4x4 block
+// (blockOffsets16), four 16-byte row loads and two shuffles a half take the place of
+// sixteen loads: the blur's lookups all do, SSAO's own-pixel lookups too. Every texel of
+// the block is some lane's, so the row loads stay inside the texture.
+[[gnu::always_inline]] inline __m512i loadTexels32(const uint32_t* base, __m512i index, int width) {
+  const int first = _mm_cvtsi128_si32(_mm512_castsi512_si128(index));
+  if (_mm512_cmpeq_epi32_mask(index, _mm512_add_epi32(_mm512_set1_epi32(first), blockOffsets16(width))) == 0xFFFF) {
+    const uint32_t* block = base + first;
+    auto row = [&](int r) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(block + ptrdiff_t(r) * width)); };
+    // Rows r and r + 1 in one half's lane order: [r c0, r c1, r+1 c0, r+1 c1, r c2, r c3, r+1 c2, r+1 c3].
+    auto half = [&](int r) {
+      const __m128i top = row(r), bottom = row(r + 1);
+      return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi64(top, bottom)), _mm_unpackhi_epi64(top, bottom), 1);
+    };
+    return _mm512_inserti64x4(_mm512_castsi256_si512(half(0)), half(2), 1);
+  }
+  alignas(64) int at[16];
+  storeLaneIndices16(index, at);
+  return loadSixteenLanes32(base, at);
+}
+
+// One 32-bit texel a lane (an RGBA8 texel or a depth code) as float channels.
 [[gnu::always_inline]] inline void sampleNearest32Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                        simd::Float8x2 out[4]) {
   const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
   if (t.isDepth()) {
-    const __m512i code = _mm512_i32gather_epi32(index, t.depth.data(), 4);
+    const __m512i code = loadTexels32(t.depth.data(), index, t.width);
     out[0] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(code), _mm512_set1_ps(depthCodeScale(t))));
     out[1] = out[2] = simd::Float8x2(0.0f);
     out[3] = simd::Float8x2(1.0f);
     return;
   }
-  const __m512i texel = _mm512_i32gather_epi32(index, t.rgba8.data(), 4);
+  const __m512i texel = loadTexels32(reinterpret_cast<const uint32_t*>(t.rgba8.data()), index, t.width);
   const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
   for (int c = 0; c < 4; ++c) {
     const __m512i value = _mm512_and_si512(_mm512_srli_epi32(texel, 8 * c), _mm512_set1_epi32(0xFF));

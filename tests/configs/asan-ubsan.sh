@@ -53,7 +53,7 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppress
 # And one case, determinism's plain lanes against SIMD lanes on every scene (34 of the
 # suites' 395 seconds here): what it adds to the cases kept is bytes, which the default
 # build holds, and the plain lanes on 640x480's interior tiles. Their memory accesses at the
-# frame's edges, under every method, on one thread and three, are checked here by
-# determinism_paths' every-method case (97x61, plain lanes included).
+# frame's edges, under every method, are checked here by determinism_paths' every-method
+# case (97x61: SIMD lanes on one thread and three, plain lanes on one).
 export RASTER_TEST_CASE_EXCLUDE="every scene: scalar lanes*"
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -LE '^(micro|harness)$'

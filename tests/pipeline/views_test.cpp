@@ -173,11 +173,20 @@ TEST_SUITE("views") {
   TEST_CASE("raster render --view: the image's bytes stay, the sidecar's totals are the counters'") {
     using namespace cli_test;
     TempFolder temp;
-    for (const std::string& scene : testing_support::scenesUnderTest()) {
+    // Every view of the first scene, and one view of each other scene, a different one each
+    // (a run of the program per view and scene: 24 runs took 29 of this suite's 66 seconds
+    // under ASan + UBSan). That every view leaves every scene's bytes unchanged is checked
+    // in-process above; what this adds is the program's files.
+    const std::vector<std::string> views = {"overdraw", "depth-kills", "helpers", "tile-cost", "triangles"};
+    const std::vector<std::string> scenesTested = testing_support::scenesUnderTest();
+    for (size_t s = 0; s < scenesTested.size(); ++s) {
+      const std::string& scene = scenesTested[s];
       const std::string plain = std::string(scene) + "-plain.png";
       const RunResult base = runCli(temp.path, std::string("render ") + scene + " --size 64x48 --threads 2 --quiet --out " + plain);
       REQUIRE(base.status == 0);
-      for (const std::string view : {"overdraw", "depth-kills", "helpers", "tile-cost", "triangles"}) {
+      std::vector<std::string> viewsHere = views;
+      if (s > 0) viewsHere = {views[s % views.size()]};
+      for (const std::string& view : viewsHere) {
         INFO(scene << " --view " << view);
         const std::string out = std::string(scene) + "-" + view + ".png", dump = std::string(scene) + "-" + view;
         const RunResult r = runCli(temp.path, std::string("render ") + scene + " --size 64x48 --threads 2 --quiet --view " + view +

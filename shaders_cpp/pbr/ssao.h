@@ -1,5 +1,6 @@
-// C++ port of post.vert / ssao.frag (seed 004, SSAO pass), line by line; the sample loop is
-// split in two, with the same operations per sample (see fragment()).
+// C++ port of post.vert / ssao.frag (seed 004, SSAO pass), line by line; the sample loop runs
+// in chunks of eight, each split in three, with the same operations per sample (see
+// fragment()).
 #pragma once
 
 #include <array>
@@ -20,6 +21,8 @@ struct SsaoPass : PostProgram {
   // the pipeline shades its tiles in an order that keeps neighbours together.
   static constexpr bool kSamplesAroundPixel = true;
   static constexpr int KERNEL_SIZE = 64;
+  static constexpr int kChunk = 8;   // samples whose depth lookups are issued together
+  static_assert(KERNEL_SIZE % kChunk == 0);
   struct Uniforms {
     std::array<glm::vec3, KERNEL_SIZE> uSamples{};
     raster::Sampler2D uDepth, uNormal, uNoise;
@@ -102,20 +105,32 @@ struct SsaoPass : PostProgram {
     const vec4<F> fragView = u.uInvProjection * fragClip;
     const vec3<F> fragPos = fragView.xyz() / fragView.w;
     const glm::mat4& p = u.uProjection;
-    for (int i = 0; i < KERNEL_SIZE; ++i) {
-      const glm::vec3 s = u.uSamples[size_t(i)];
-      // TBN * uSamples[i]: column by column (docs/porting.md, row mat-vec), then * uRadius.
-      const vec3<F> rotated = (tangent * F(s.x) + bitangent * F(s.y)) + normal * F(s.z);
-      const vec3<F> samplePos = fragPos + rotated * F(u.uRadius);
-      F ox = ((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]);
-      F oy = ((F(p[0][1]) * samplePos.x + F(p[1][1]) * samplePos.y) + F(p[2][1]) * samplePos.z) + F(p[3][1]);
-      const F ow = ((F(p[0][3]) * samplePos.x + F(p[1][3]) * samplePos.y) + F(p[2][3]) * samplePos.z) + F(p[3][3]);
-      ox = ox / ow;
-      oy = oy / ow;
-      const vec2<F> offset = vec2<F>(ox * F(0.5f) + F(0.5f), oy * F(0.5f) + F(0.5f));
-      const F sampleDepth = ReconstructViewZ(u, offset);
-      const auto occludes = sampleDepth >= samplePos.z + F(u.uBias);
-      occlusion = occlusion + select(occludes, rangeCheck(u, abs(fragPos.z - sampleDepth), occludes), F(0.0f));
+    // The GLSL loop in chunks of kChunk samples, each split in three with the same
+    // operations per sample, in the same order of the sum: the chunk's sample points, then
+    // their depth lookups, then the tests. A GLSL compiler unrolls this constant loop and is
+    // free to order it so; here it lets a chunk's lookups be in flight together instead of
+    // each waiting behind the previous sample's tests.
+    for (int first = 0; first < KERNEL_SIZE; first += kChunk) {
+      vec2<F> offsets[kChunk];
+      F sampleZ[kChunk], sampleDepth[kChunk];   // samplePos.z and the stored point's view z
+      for (int k = 0; k < kChunk; ++k) {
+        const glm::vec3 s = u.uSamples[size_t(first + k)];
+        // TBN * uSamples[i]: column by column (docs/porting.md, row mat-vec), then * uRadius.
+        const vec3<F> rotated = (tangent * F(s.x) + bitangent * F(s.y)) + normal * F(s.z);
+        const vec3<F> samplePos = fragPos + rotated * F(u.uRadius);
+        F ox = ((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]);
+        F oy = ((F(p[0][1]) * samplePos.x + F(p[1][1]) * samplePos.y) + F(p[2][1]) * samplePos.z) + F(p[3][1]);
+        const F ow = ((F(p[0][3]) * samplePos.x + F(p[1][3]) * samplePos.y) + F(p[2][3]) * samplePos.z) + F(p[3][3]);
+        ox = ox / ow;
+        oy = oy / ow;
+        offsets[k] = vec2<F>(ox * F(0.5f) + F(0.5f), oy * F(0.5f) + F(0.5f));
+        sampleZ[k] = samplePos.z;
+      }
+      for (int k = 0; k < kChunk; ++k) sampleDepth[k] = ReconstructViewZ(u, offsets[k]);
+      for (int k = 0; k < kChunk; ++k) {
+        const auto occludes = sampleDepth[k] >= sampleZ[k] + F(u.uBias);
+        occlusion = occlusion + select(occludes, rangeCheck(u, abs(fragPos.z - sampleDepth[k]), occludes), F(0.0f));
+      }
     }
     const F ao = F(1.0f) - occlusion / F(float(KERNEL_SIZE));
     out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));

@@ -54,7 +54,8 @@ struct SsaoPass : PostProgram {
     return uv * F(2.0f) - vec2<F>(F(1.0f));
   }
   template <class F>
-  static F ReconstructViewZ(const Uniforms& u, vec2<F> uv) {
+  // Inline (GCC called it): a call spills every live vector register, the chunk's lanes.
+  [[gnu::always_inline]] static F ReconstructViewZ(const Uniforms& u, vec2<F> uv) {
     const F depth = raster::texture(u.uDepth, uv).x;
     const vec2<F> xy = clipXY(uv);
     const F z = depth * F(2.0f) - F(1.0f);

@@ -53,8 +53,8 @@ struct SsaoPass : PostProgram {
   static vec2<F> clipXY(vec2<F> uv) {
     return uv * F(2.0f) - vec2<F>(F(1.0f));
   }
-  template <class F>
   // Inline (GCC called it): a call spills every live vector register, the chunk's lanes.
+  template <class F>
   [[gnu::always_inline]] static F ReconstructViewZ(const Uniforms& u, vec2<F> uv) {
     const F depth = raster::texture(u.uDepth, uv).x;
     const vec2<F> xy = clipXY(uv);

@@ -21,6 +21,7 @@
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 #include "raster/texture/texture.h"
+#include "raster/tile/lane_layout.h"
 
 namespace raster::sampling {
 
@@ -33,12 +34,23 @@ inline bool isNearest32(const Texture& t) {
 }
 
 // Each lane's texel offset from lane 0's where the sixteen lanes read a 4x4 block of texels
-// as raster/tile/lane_layout.h lays a block's pixels out (2x2 quads; rows 0-1 in lanes
-// 0-7, rows 2-3 in lanes 8-15, memory rows upward): what a post pass reads at its own
-// pixel, or at one a whole number of texels away, in an offscreen target.
+// as raster/tile/lane_layout.h lays a block's pixels out (two 8-lane groups, quads of 2x2,
+// memory rows upward): what a post pass reads at its own pixel, or at one a whole number of
+// texels away, in an offscreen target.
 [[gnu::always_inline]] inline __m512i blockOffsets16(int width) {
-  const __m512i dx = _mm512_setr_epi32(0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3);
-  const __m512i dy = _mm512_setr_epi32(0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3);
+  struct Lanes {
+    alignas(64) int dx[16];
+    alignas(64) int dy[16];
+  };
+  static constexpr Lanes kLanes = [] {
+    Lanes lanes{};
+    for (int lane = 0; lane < 16; ++lane) {
+      lanes.dx[lane] = LaneLayout<simd::Float8>::originX(lane / 8) + laneDx(lane % 8);
+      lanes.dy[lane] = LaneLayout<simd::Float8>::originY(lane / 8) + laneDy(lane % 8);
+    }
+    return lanes;
+  }();
+  const __m512i dx = _mm512_load_si512(kLanes.dx), dy = _mm512_load_si512(kLanes.dy);
   return _mm512_add_epi32(_mm512_mullo_epi32(dy, _mm512_set1_epi32(width)), dx);
 }
 

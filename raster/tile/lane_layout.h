@@ -23,6 +23,11 @@ struct GroupAt {
   unsigned laneMask;
 };
 
+// Lane i's pixel offset from its group's origin, rows in GL's order (a window-system buffer
+// swaps a quad's rows in memory: LaneLayout's flipY): quads side by side, each TL, TR, BL, BR.
+constexpr int laneDx(int i) { return (i / 4) * 2 + (i & 1); }
+constexpr int laneDy(int i) { return (i >> 1) & 1; }
+
 template <class F>
 struct LaneLayout {
   static constexpr int kLanes = F::kCount;
@@ -34,8 +39,8 @@ struct LaneLayout {
   LaneLayout(bool flipY, int width) {
     alignas(32) float fx[kLanes], fy[kLanes];
     for (int i = 0; i < kLanes; ++i) {
-      dx[i] = (i / 4) * 2 + (i & 1);
-      dy[i] = flipY ? 1 - ((i >> 1) & 1) : (i >> 1) & 1;
+      dx[i] = laneDx(i);
+      dy[i] = flipY ? 1 - laneDy(i) : laneDy(i);
       fx[i] = float(dx[i]);
       fy[i] = float(dy[i]);
       texel[i] = size_t(dy[i]) * size_t(width) + size_t(dx[i]);
@@ -44,8 +49,8 @@ struct LaneLayout {
     dyLanes = F::load(fy);
   }
   // Group g's origin inside a 4x4 block: 8 lanes cover rows 0-1 then 2-3; 4 lanes one quad.
-  static int originX(int g) { return kQuads == 2 ? 0 : (g & 1) * 2; }
-  static int originY(int g) { return kQuads == 2 ? g * 2 : (g >> 1) * 2; }
+  static constexpr int originX(int g) { return kQuads == 2 ? 0 : (g & 1) * 2; }
+  static constexpr int originY(int g) { return kQuads == 2 ? g * 2 : (g >> 1) * 2; }
   // Lane mask of group g from the block's coverage (bit row * 4 + col).
   unsigned laneMask(uint32_t coverage, int g) const {
     unsigned mask = 0;

@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 
 #include "raster/texture/format.h"
@@ -11,6 +12,10 @@
 #include "tests/gl_compare_helpers.h"
 
 namespace gltest {
+
+// A SIMD lookup's channel against the scalar one's: the same bits, or NaN against NaN (which
+// NaN's sign survives an fma of NaNs may differ).
+inline bool sameLookup(float got, float ref) { return bitsOf(got) == bitsOf(ref) || (std::isnan(got) && std::isnan(ref)); }
 
 // A w x h texture of random texels: any RGBA8 bytes, or halves of values in [-8, 8]. A grey
 // one has r = g = b and alpha 255 at every texel, and so also the samplers' one-byte copy.

@@ -225,7 +225,8 @@ class RasterBackend final : public Backend {
     const raster::PipelineCounters& c = renderer_.counters();
     return {{"triangles_in", double(c.trianglesIn)},         {"triangles_clipped", double(c.trianglesClipped)},
             {"triangles_rejected", double(c.trianglesRejected)}, {"triangles_set_up", double(c.trianglesSetUp)},
-            {"tile_bin_entries", double(c.tileBinEntries)},    {"lane_groups_shaded", double(c.laneGroupsShaded)},
+            {"tile_bin_entries", double(c.tileBinEntries)},    {"depth_range_walks", double(c.depthRangeWalks)},
+            {"lane_groups_shaded", double(c.laneGroupsShaded)},
             {"lanes_shaded", double(c.lanesShaded)},           {"lanes_covered", double(c.lanesCovered)},
             {"cycles_vertex", double(c.vertexCycles)},         {"cycles_clip_setup", double(c.setupCycles)},
             {"cycles_bin", double(c.binCycles)},               {"cycles_raster", double(c.rasterCycles)},

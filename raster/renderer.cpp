@@ -30,6 +30,7 @@ PipelineCounters& PipelineCounters::operator+=(const PipelineCounters& o) {
   trianglesRejected += o.trianglesRejected;
   trianglesSetUp += o.trianglesSetUp;
   tileBinEntries += o.tileBinEntries;
+  depthRangeWalks += o.depthRangeWalks;
   laneGroupsShaded += o.laneGroupsShaded;
   lanesShaded += o.lanesShaded;
   lanesCovered += o.lanesCovered;
@@ -347,15 +348,15 @@ std::pair<int, int> passShadingRate(std::span<const DrawRecord> draws, const Fra
 void Renderer::orderAlongHilbertCurve() {
   const int tilesX = bins_.tilesX(), tilesY = bins_.tilesY();
   const uint32_t side = hilbertSide(uint32_t(std::max(tilesX, tilesY)));
-  auto key = [&](const WorkItem& item) {
+  auto key = [&](const TileWorkItem& item) {
     const uint32_t x = uint32_t(item.tile % tilesX), y = uint32_t(item.tile / tilesX);
     return std::pair(hilbertIndex(x, y, side), item.bounds.y0);
   };
-  std::sort(workItems_.begin(), workItems_.end(), [&](const WorkItem& a, const WorkItem& b) { return key(a) < key(b); });
+  std::sort(workItems_.begin(), workItems_.end(), [&](const TileWorkItem& a, const TileWorkItem& b) { return key(a) < key(b); });
 }
 
-// 5-6. Every tile of the pass (or band of one), in parallel: its share of the clear, then
-// its triangles through tile/ and merge/.
+// 5-6. Every tile of the pass (or band of one, or range of its triangles), in parallel: its
+// share of the clear, then its triangles through tile/ and merge/.
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
@@ -395,6 +396,11 @@ void Renderer::flush() {
       for (int y = whole.y0; y <= whole.y1; y += bandRows)
         workItems_.push_back({tile, TileBounds{whole.x0, y, whole.x1, std::min(y + bandRows - 1, whole.y1)}});
     }
+    // A depth-only pass's heavy tiles walk their triangles in ranges on several threads, the
+    // later ranges into copies of the depth target folded in after the loop (tile/depth_ranges.h).
+    if (pool_.threads() > 1 && !coarse && !viewRecorder_ && !history_ && depthOnlyPass(draws_, framebuffer_))
+      if (const int ranges = cutHeavyTiles(workItems_, bins_, pool_.threads()); ranges > 1)
+        depthCopies_.prepare(framebuffer_, ranges - 1);
     if (std::any_of(draws_.begin(), draws_.end(), [](const DrawRecord& d) { return d.samplesAroundPixel; }))
       orderAlongHilbertCurve();
     std::vector<PipelineCounters> itemCounters(workItems_.size());
@@ -407,9 +413,18 @@ void Renderer::flush() {
     const int tracedTile = traced ? (traced->y / limits::kTileSize) * bins_.tilesX() + traced->x / limits::kTileSize : -1;
     pool_.parallelFor(int(workItems_.size()), [&](int item) {
       const uint64_t viewStart = view ? cycleCount() : 0;
-      const int tile = workItems_[size_t(item)].tile;
-      const TileBounds bounds = workItems_[size_t(item)].bounds;
-      const std::span<const uint32_t> bin = bins_.bin(tile);
+      const TileWorkItem& work = workItems_[size_t(item)];
+      const int tile = work.tile;
+      const TileBounds bounds = work.bounds;
+      const std::span<const uint32_t> bin = work.triangles(bins_.bin(tile));
+      if (work.range > 0) {   // a later range: into its copy, no clear
+        TileJob rangeJob = job;
+        rangeJob.framebuffer = &depthCopies_.beginRange(work.range - 1, bounds);
+        if (scalarOnly_) rasterizeTile<ScalarLanes>(rangeJob, bounds, bin, itemCounters[size_t(item)]);
+        else rasterizeTile<FastLanes>(rangeJob, bounds, bin, itemCounters[size_t(item)]);
+        ++itemCounters[size_t(item)].depthRangeWalks;
+        return;
+      }
       // A coarse-rate pass: the whole clear, then the coarse walk (tile/coarse_tile.h), or
       // its traced (trace_tile.h) or counted (inspect_tile.h) copy, which leave its bytes.
       if (coarse) {
@@ -449,6 +464,8 @@ void Renderer::flush() {
       }
       if (view) view->tileCycles[size_t(tile)] = cycleCount() - viewStart;
     });
+    for (const TileWorkItem& work : workItems_)
+      if (work.range > 0) depthCopies_.fold(work.range - 1, framebuffer_, work.bounds);
     // Which tiles of the colour targets still hold only the clear: those no triangle reached.
     std::vector<uint8_t> touched(size_t(bins_.tileCount()));
     for (int tile = 0; tile < bins_.tileCount(); ++tile) touched[size_t(tile)] = !bins_.bin(tile).empty();

@@ -11,7 +11,8 @@
 //   geometry/vertex_stage -> geometry/assemble (clip, setup) -> geometry/bin
 //   -> tile/rasterize_tile (coverage, early depth, interpolation, shading) -> merge/color_write
 // Each tile is rasterized by one task, walking its triangles in API order, so the output
-// does not depend on the thread count.
+// does not depend on the thread count; a depth-only pass's heavy tile is walked in ranges of
+// its triangles by several, whose least codes are the same (tile/depth_ranges.h).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,7 @@
 #include "raster/geometry/setup.h"
 #include "raster/pixel_history.h"
 #include "raster/shader/shader_instance.h"
+#include "raster/tile/depth_ranges.h"
 #include "raster/util/parallel.h"
 #include "raster/view_recorder.h"
 
@@ -94,12 +96,10 @@ class Renderer {
   PlaneList varyingPlanes_;
   std::vector<uint32_t> triangleOrigins_;   // beside triangles_, only while pixel history is on
   TileBins bins_;
-  // flush()'s items: the pass's tiles, or bands of them where the tiles are few.
-  struct WorkItem {
-    int tile;
-    TileBounds bounds;
-  };
-  std::vector<WorkItem> workItems_;
+  // flush()'s items: the pass's tiles, bands of them where the tiles are few, or ranges of
+  // a heavy depth-only tile's triangles (tile/depth_ranges.h), and those ranges' copies.
+  std::vector<TileWorkItem> workItems_;
+  DepthRangeCopies depthCopies_;
   std::vector<TileBins> binParts_;   // a large draw's parts, binned in parallel, then appended to bins_
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew
   std::vector<SetupChunk> setupChunks_;

@@ -4,7 +4,8 @@
 // window z. The passthrough program (shaders_cpp/test/passthrough.*); every byte must
 // match. Cases: (f) depth-only targets: depth codes alone, inside and straddled regions,
 // with and without polygon offset; (g) colour clears under a first triangle that covers a
-// tile, or nearly; (h) a NaN window z. Fixed seeds.
+// tile, or nearly; (h) a NaN window z; (i) a depth-only tile crowded with triangles, walked
+// in ranges on several threads (tile/depth_ranges.h). Fixed seeds.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -166,6 +167,60 @@ TEST_SUITE("raster_vs_gl") {
       CHECK(depth.diffs == 0);
       CHECK(color.coveredB == (func == scenes::DepthFunc::Less ? 0 : 1));   // the pixel the sliver covers
       CHECK(std::count(both.raster.depth->depth.begin(), both.raster.depth->depth.end(), 0xFFFFFFu) == 64 * 64);
+    }
+  }
+
+  // A shadow map's tile that holds most of the pass's triangles is walked in triangle ranges
+  // on several threads, and the ranges' least codes folded together: every code must be the
+  // one GL (and one thread) gives, under LESS and LEQUAL mixed in the pass, with polygon
+  // offset, repeated triangles (LEQUAL's equal codes) and triangles over the tile's edges.
+  // A pass with a draw that does not write depth keeps its tiles whole.
+  TEST_CASE("(i) a depth-only tile crowded with triangles, walked in ranges: identical depth codes") {
+    std::mt19937 rng(9090);
+    const TargetDesc target{200, 150, std::nullopt, TexelFormat::Depth24};
+    auto smallTriangles = [&](int count, glm::vec2 lo, glm::vec2 hi) {
+      std::vector<Vertex> vertices;
+      for (int i = 0; i < count; ++i) {
+        const glm::vec2 c(uniform(rng, lo.x, hi.x), uniform(rng, lo.y, hi.y));
+        const float ndcZ = uniform(rng, -0.9f, 0.9f);
+        for (int v = 0; v < 3; ++v) {
+          const glm::vec2 p = clampToTarget(c + glm::vec2(uniform(rng, -6.0f, 6.0f), uniform(rng, -6.0f, 6.0f)), target.width, target.height);
+          vertices.push_back({clipFromWindow(p, ndcZ + uniform(rng, -0.05f, 0.05f), 1.0f, target.width, target.height), glm::vec4(1.0f)});
+        }
+        if (i % 7 == 0) vertices.insert(vertices.end(), vertices.end() - 3, vertices.end());   // the same triangle again
+      }
+      return makeMesh(vertices);
+    };
+    DrawCall crowd, more, spread;
+    crowd.mesh = smallTriangles(1200, {60.0f, 60.0f}, {132.0f, 132.0f});   // tile (1, 1) and over its edges
+    more.mesh = smallTriangles(500, {64.0f, 64.0f}, {128.0f, 128.0f});
+    more.state.depthFunc = scenes::DepthFunc::Lequal;
+    more.state.polygonOffset = true;
+    more.state.offsetFactor = 1.0f;
+    more.state.offsetUnits = 2.0f;
+    spread.mesh = smallTriangles(60, {0.0f, 0.0f}, {200.0f, 150.0f});
+    const auto walks = [](const Backend& backend) {
+      for (const auto& [name, value] : backend.statistics())
+        if (name == "depth_range_walks") return value;
+      return -1.0;
+    };
+    for (const bool writesEverywhere : {true, false}) {
+      DrawCall readOnly = spread;
+      readOnly.state.depthWrite = writesEverywhere;
+      const std::vector<DrawCall> draws = {spread, crowd, readOnly, more};
+      const std::unique_ptr<Backend> gl = scenes::makeGlBackend();
+      const Rendered reference = render(*gl, target, draws, clearAll());
+      for (const int threads : {1, 2, 3, 8}) {
+        CAPTURE(threads);
+        CAPTURE(writesEverywhere);
+        const std::unique_ptr<Backend> raster = scenes::makeRasterBackend(threads);
+        const Rendered ours = render(*raster, target, draws, clearAll());
+        const DepthComparison z = compareDepth(*ours.depth, *reference.depth);
+        CAPTURE(z.firstDiff);
+        CHECK(z.diffs == 0);
+        // Walked in ranges where it may be, whole where it may not.
+        CHECK((walks(*raster) > 0) == (threads > 1 && writesEverywhere));
+      }
     }
   }
 }

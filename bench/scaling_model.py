@@ -19,8 +19,10 @@ The model, from medians of the runs:
         least over several frames).
   L_p(N) the makespan of pass p's tiles on N workers, as a share of their sum: tiles cut
         into 16-row bands where the renderer cuts them (more than one thread, fewer tiles
-        than 8 x threads, a fullscreen pass), handed in the renderer's order to whichever
-        worker is free first. A pass of few tiles, or one heavy tile, cannot use N.
+        than 8 x threads, a fullscreen pass), and a depth-only pass's heavy tile into
+        triangle ranges (DEPTH_ONLY below), handed in the renderer's order to whichever
+        worker is free first. A pass of few tiles, or one heavy tile of a pass that draws
+        colour, cannot use N.
   T_N   T1 (e + (1 - e) sum_p f_p L_p(N) / sum_p f_p L_p(2) / 2): Amdahl with the
         measured e, the parallel part slowed by each pass's tile limit relative to 2
         threads (where e was measured; at N = 2 the model gives T2).
@@ -107,7 +109,16 @@ BANDABLE = {
             "bloom_up_3", "bloom_up_2", "bloom_up_1", "bloom_up_0", "final"},
     "pbr": {"ssao", "ssao_blur_h", "ssao_blur", "final"},
 }
-TILE, REGION, LP_MAX_THREADS = 64, 16, 32
+# Depth-only passes, whose heavy tiles the renderer walks in triangle ranges on several
+# threads (raster/tile/depth_ranges.h): a tile holding more than 1 / (2 x threads) of the
+# pass is cut into min(threads, 4) ranges (the model takes a tile's cost for its share of
+# triangles, and its ranges as equal). The shadow scene's map is left out: its 28 triangles
+# never make a range (64 triangles at least).
+DEPTH_ONLY = {
+    "deferred": {"shadow_map"},
+    "pbr": {"shadow_cascade0", "shadow_cascade1", "shadow_cascade2"},
+}
+TILE, REGION, LP_MAX_THREADS, MAX_DEPTH_RANGES = 64, 16, 32, 4
 
 
 def load_runs(folder, scene, threads):
@@ -143,9 +154,19 @@ def load_tiles(folder, scene):
     return passes
 
 
-def work_items(tiles, bandable, threads):
-    """The renderer's work items for `threads`: whole tiles, or 16-row bands of equal cost."""
+def work_items(tiles, bandable, threads, depth_only=False):
+    """The renderer's work items for `threads`: whole tiles, 16-row bands of equal cost, or a
+    depth-only pass's heavy tile in equal triangle ranges (the first range where the tile was,
+    the others k / ranges of the way down the list, as raster/tile/depth_ranges.cpp places them)."""
     costs, tx, ty, height = tiles["costs"], tiles["tiles_x"], tiles["tiles_y"], tiles["height"]
+    if depth_only and threads > 1:
+        total = sum(costs) or 1.0
+        placed = []
+        for i, c in enumerate(costs):
+            ranges = min(threads, MAX_DEPTH_RANGES) if c * 2 * threads > total else 1
+            for k in range(ranges):
+                placed.append((2 * i if k == 0 else 2 * (len(costs) * k // ranges) + 1, c / ranges))
+        return [c for _, c in sorted(placed, key=lambda item: item[0])]
     banded = bandable and threads > 1 and len(costs) < 8 * threads
     if not banded:
         return list(costs)
@@ -202,7 +223,9 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
         tp = tile_passes[label]
         costs = tile_ms(tp)
         bandable = label in BANDABLE.get(scene, set())
-        share = {n: makespan(work_items({**tp, "costs": costs}, bandable, n), n) / (sum(costs) or 1.0) for n in thread_list}
+        depth_only = label in DEPTH_ONLY.get(scene, set())
+        share = {n: makespan(work_items({**tp, "costs": costs}, bandable, n, depth_only), n) / (sum(costs) or 1.0)
+                 for n in thread_list}
         lp_share = {n: makespan(costs, min(n, LP_MAX_THREADS)) / (sum(costs) or 1.0) for n in thread_list}
         passes.append({"label": label, "kind": kind, "bound_ms": bound, "binds": why, "t1_ms": t1[i], "t2_ms": t2[i],
                        "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "tile_work_ms": sum(costs),

@@ -398,7 +398,7 @@ void Renderer::flush() {
     }
     // A depth-only pass's heavy tiles walk their triangles in ranges on several threads, the
     // later ranges into copies of the depth target folded in after the loop (tile/depth_ranges.h).
-    if (pool_.threads() > 1 && !coarse && !viewRecorder_ && !history_ && depthOnlyPass(draws_, framebuffer_))
+    if (pool_.threads() > 1 && !coarse && !viewRecorder_ && !history_ && mayWalkDepthRanges(draws_, framebuffer_))
       if (const int ranges = cutHeavyTiles(workItems_, bins_, pool_.threads()); ranges > 1)
         depthCopies_.prepare(framebuffer_, ranges - 1);
     if (std::any_of(draws_.begin(), draws_.end(), [](const DrawRecord& d) { return d.samplesAroundPixel; }))

@@ -15,8 +15,9 @@ constexpr uint32_t kAboveEveryCode = 1u << 24;
 
 }  // namespace
 
-bool depthOnlyPass(std::span<const DrawRecord> draws, const Framebuffer& framebuffer) {
-  if (!framebuffer.depth || draws.empty()) return false;
+bool mayWalkDepthRanges(std::span<const DrawRecord> draws, const Framebuffer& framebuffer) {
+  const Texture* depth = framebuffer.depth;
+  if (!depth || draws.empty() || size_t(depth->width) * size_t(depth->height) > kMaxDepthRangeTexels) return false;
   return std::all_of(draws.begin(), draws.end(), [&](const DrawRecord& draw) {
     return draw.state.depthTest && draw.state.depthWrite && colorOutputsWritten(draw, framebuffer) == 0;
   });

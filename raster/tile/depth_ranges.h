@@ -16,7 +16,8 @@
 //
 // A copy is the depth target's size (the walk addresses the buffer by pixel), kept between
 // passes; at most kMaxDepthRanges - 1 of them, one per range after the first, each shared by
-// every split tile (tiles do not overlap): 4 MiB a copy for a 1024x1024 map.
+// every split tile (tiles do not overlap): 4 MiB a copy for a 1024x1024 map, and no target
+// larger than kMaxDepthRangeTexels is split.
 #pragma once
 
 #include <cstddef>
@@ -49,9 +50,12 @@ struct TileWorkItem {
 constexpr int kMaxDepthRanges = 4;
 constexpr size_t kMinDepthRangeTriangles = 64;
 
-// Whether the pass's tiles may be walked in ranges: a depth target, and every draw tests
-// and writes depth and writes no colour target.
-bool depthOnlyPass(std::span<const DrawRecord> draws, const Framebuffer& framebuffer);
+// Whether the pass's tiles may be walked in ranges: a depth target of at most
+// kMaxDepthRangeTexels, and every draw tests and writes depth and writes no colour target.
+// The cap bounds the copies' memory, which no --max-memory charge covers: at most 16 MiB a
+// copy, three copies (the scenes' shadow maps are 1024x1024, 4 MiB).
+constexpr size_t kMaxDepthRangeTexels = size_t(2048) * 2048;
+bool mayWalkDepthRanges(std::span<const DrawRecord> draws, const Framebuffer& framebuffer);
 
 // The ranges a tile of `binSize` triangles is walked in, in a pass of `passEntries` bin
 // entries on `threads` threads: one, unless the tile holds more than 1 / (2 x threads) of

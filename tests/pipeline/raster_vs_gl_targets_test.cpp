@@ -222,5 +222,26 @@ TEST_SUITE("raster_vs_gl") {
         CHECK((walks(*raster) > 0) == (threads > 1 && writesEverywhere));
       }
     }
+    // A depth target over kMaxDepthRangeTexels keeps its tiles whole: the copies' memory
+    // stays bounded. The same crowd, in the corner tile of a 2049x2048 map.
+    const TargetDesc large{2049, 2048, std::nullopt, TexelFormat::Depth24};
+    DrawCall corner;
+    corner.mesh = makeMesh([&] {
+      std::vector<Vertex> vertices;
+      for (int i = 0; i < 800; ++i) {
+        const glm::vec2 c(uniform(rng, 4.0f, 60.0f), uniform(rng, 4.0f, 60.0f));
+        const float ndcZ = uniform(rng, -0.9f, 0.9f);
+        for (int v = 0; v < 3; ++v)
+          vertices.push_back({clipFromWindow(c + glm::vec2(uniform(rng, -4.0f, 4.0f), uniform(rng, -4.0f, 4.0f)), ndcZ, 1.0f,
+                                             large.width, large.height), glm::vec4(1.0f)});
+      }
+      return vertices;
+    }());
+    const std::unique_ptr<Backend> gl = scenes::makeGlBackend();
+    const std::unique_ptr<Backend> raster = scenes::makeRasterBackend(4);
+    const Rendered reference = render(*gl, large, {corner}, clearAll());
+    const Rendered ours = render(*raster, large, {corner}, clearAll());
+    CHECK(compareDepth(*ours.depth, *reference.depth).diffs == 0);
+    CHECK(walks(*raster) == 0);
   }
 }

@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <random>
 
 #include "raster/texture/format.h"
@@ -43,6 +45,14 @@ inline float lookupCoordinate(std::mt19937& rng, int size) {
     case 3: return float(int(rng() % unsigned(size + 1))) / float(size);             // texel edge
     default: return (float(int(rng() % unsigned(8 * size))) + 0.5f) / float(8 * size);  // 1/8 texel steps
   }
+}
+
+// A coordinate for the vector-against-scalar lookup cases: one lane in eight a special value
+// (zeros of both signs, texel edges, past any int, NaN, infinities), the rest in [-3, 3].
+inline float laneCoordinate(std::mt19937& rng) {
+  static const float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e30f, -1e30f, 3e9f, std::nanf(""),
+                                   std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+  return rng() % 8 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, -3.0f, 3.0f);
 }
 
 // Draws test/color_lookup over `mesh` (a grid whose cells carry lookup coordinates) into a

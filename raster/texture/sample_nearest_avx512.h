@@ -1,8 +1,9 @@
 // NEAREST lookups of RGBA8 and depth textures for Float8x2 lanes held in one 512-bit
 // register, sixteen lanes at a time: pbr's SSAO reads its depth texture 65 times a pixel
-// through sampler2D, and its blur an RGBA8 target 9 times. Inline, so that a port's lookup
-// costs no call and no trip of four channel planes through memory, and the shader's compiler
-// drops the channels it never reads (both read r only). The wraps and conversions are the
+// through sampler2D, and its blur an RGBA8 target 9 times (a line of taps that share their
+// loads: sampleNearest32Line). Inline, so that a port's lookup costs no call and no trip of
+// four channel planes through memory, and the shader's compiler drops the channels it never
+// reads (both read r only). The wraps and conversions are the
 // 8-lane sampler's (sample_color_avx2.cpp: sampleRgba8, sampleRgba8Float and its depth
 // branch) on 16 lanes at once, so every value is the same:
 //   - RGBA8: each channel as unorm8 * float(1/255). The fixed-point path floors before its
@@ -75,25 +76,105 @@ inline bool isNearest32(const Texture& t) {
   return loadSixteenLanes32(base, at);
 }
 
+// The texels of isNearest32 texture t: depth codes or RGBA8 texels.
+[[gnu::always_inline]] inline const uint32_t* texels32(const Texture& t) {
+  return t.isDepth() ? t.depth.data() : reinterpret_cast<const uint32_t*>(t.rgba8.data());
+}
+
+// Sixteen 32-bit texels of t (an RGBA8 texel or a depth code each) as float channels.
+[[gnu::always_inline]] inline void texelChannels32(const Texture& t, __m512i texel, simd::Float8x2 out[4]) {
+  if (t.isDepth()) {
+    out[0] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(texel), _mm512_set1_ps(depthCodeScale(t))));
+    out[1] = out[2] = simd::Float8x2(0.0f);
+    out[3] = simd::Float8x2(1.0f);
+    return;
+  }
+  const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
+  for (int c = 0; c < 4; ++c) {
+    const __m512i value = _mm512_and_si512(_mm512_srli_epi32(texel, 8 * c), _mm512_set1_epi32(0xFF));
+    out[c] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
+  }
+}
+
 // One 32-bit texel a lane (an RGBA8 texel or a depth code) as float channels.
 [[gnu::always_inline]] inline void sampleNearest32Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                        simd::Float8x2 out[4]) {
   const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
-  if (t.isDepth()) {
-    const __m512i code = loadTexels32(t.depth.data(), index, t.width);
-    out[0] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(code), _mm512_set1_ps(depthCodeScale(t))));
-    out[1] = out[2] = simd::Float8x2(0.0f);
-    out[3] = simd::Float8x2(1.0f);
-    return;
+  texelChannels32(t, loadTexels32(texels32(t), index, t.width), out);
+}
+
+// textureLine's N = 2R + 1 taps (sampler.h) where sampleNearest32Pair is the lookup, the
+// line runs along x or along y (step.y or step.x is zero, as a separable filter's passes
+// are), and the sixteen lanes are a 4x4 block (blockOffsets16) whose tap i lands i texels
+// up the axis: out[i + R] = sampleNearest32Pair at uv + float(i) * step, bit for bit, and
+// true.
+// False, with nothing written, where the lanes or the line are otherwise.
+//
+// Every tap's index is still computed as the lone lookup computes it; only the loads are
+// shared. Along x the taps read one window of 4 + 2R texels in each of the block's 4 rows,
+// along y one 4-texel row in each of 4 + 2R rows, so a tap costs two permutes or one insert
+// instead of four row loads and five shuffles. The offset along the other axis, 0 * i, adds
+// +0 or -0: the coordinate itself, or a zero of the other sign, which wraps to the same
+// texel (floor(0 * size) = 0 in every wrap), so that axis's index is computed once.
+template <int N>
+[[gnu::always_inline]] inline bool sampleNearest32Line(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
+                                                       glm::vec2 step, simd::Float8x2 (&out)[N][4]) {
+  constexpr int R = N / 2;
+  static_assert(N % 2 == 1 && N <= 13, "a window of 4 + 2R texels fits one 512-bit register");
+  const bool alongX = step.y == 0.0f, alongY = step.x == 0.0f;
+  if (alongX == alongY) return false;   // a diagonal line, or no step at all
+  const __m512 along = alongX ? s.v : tc.v;
+  const float stride = alongX ? step.x : step.y;
+  const int size = alongX ? t.width : t.height;
+  const Wrap wrap = alongX ? t.sampler.wrapS : t.sampler.wrapT;
+  // The coordinates along the line exactly as the lone lookups compute them: uv + step * i,
+  // uv - step * i.
+  __m512i line[N];
+  line[R] = wrapNearest16(along, size, wrap);
+  __mmask16 apart = 0xFFFF;   // lanes whose taps are each 1 texel beyond the last
+  for (int i = 1; i <= R; ++i) {
+    const __m512 offset = _mm512_set1_ps(stride * float(i));
+    line[R + i] = wrapNearest16(_mm512_add_ps(along, offset), size, wrap);
+    line[R - i] = wrapNearest16(_mm512_sub_ps(along, offset), size, wrap);
+    apart &= _mm512_cmpeq_epi32_mask(line[R + i], _mm512_add_epi32(line[R], _mm512_set1_epi32(i)));
+    apart &= _mm512_cmpeq_epi32_mask(line[R - i], _mm512_sub_epi32(line[R], _mm512_set1_epi32(i)));
   }
-  const __m512i texel = loadTexels32(reinterpret_cast<const uint32_t*>(t.rgba8.data()), index, t.width);
-  const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
-  for (int c = 0; c < 4; ++c) {
-    const __m512i value = _mm512_and_si512(_mm512_srli_epi32(texel, 8 * c), _mm512_set1_epi32(0xFF));
-    out[c] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
+  const __m512i across = alongX ? wrapNearest16(tc.v, t.height, t.sampler.wrapT) : wrapNearest16(s.v, t.width, t.sampler.wrapS);
+  const __m512i x = alongX ? line[R] : across, y = alongX ? across : line[R];
+  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
+  const int first = _mm_cvtsi128_si32(_mm512_castsi512_si128(index));
+  const __mmask16 block = _mm512_cmpeq_epi32_mask(index, _mm512_add_epi32(_mm512_set1_epi32(first), blockOffsets16(t.width)));
+  if ((apart & block) != 0xFFFF) return false;
+  // From here every texel read is some tap's: the block's 4x4 texels moved by -R..R.
+  const uint32_t* centre = texels32(t) + first;
+  if (alongX) {
+    // rows[r]: texels -R .. 3 + R of the block's row r (a masked load reads no further).
+    constexpr __mmask16 kWindow = __mmask16((1u << (4 + 2 * R)) - 1);
+    __m512i rows[4];
+    for (int r = 0; r < 4; ++r) rows[r] = _mm512_maskz_loadu_epi32(kWindow, centre + ptrdiff_t(r) * t.width - R);
+    for (int i = -R; i <= R; ++i) {
+      // A half's lanes from rows r and r + 1: [r c0, r c1, r+1 c0, r+1 c1, r c2, r c3, r+1 c2, r+1 c3].
+      const int c = i + R;
+      const __m512i pick = _mm512_setr_epi32(c, c + 1, 16 + c, 17 + c, c + 2, c + 3, 18 + c, 19 + c, 0, 0, 0, 0, 0, 0, 0, 0);
+      const __m512i low = _mm512_permutex2var_epi32(rows[0], pick, rows[1]);
+      const __m512i high = _mm512_permutex2var_epi32(rows[2], pick, rows[3]);
+      texelChannels32(t, _mm512_inserti64x4(low, _mm512_castsi512_si256(high), 1), out[i + R]);
+    }
+    return true;
   }
+  // halves[k]: rows k - R and k - R + 1 of the block's 4 columns, in a half's lane order.
+  __m256i halves[N + 2];
+  __m128i row = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre - ptrdiff_t(R) * t.width));
+  for (int k = 0; k < N + 2; ++k) {
+    const __m128i next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre + ptrdiff_t(k + 1 - R) * t.width));
+    halves[k] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi64(row, next)), _mm_unpackhi_epi64(row, next), 1);
+    row = next;
+  }
+  for (int i = -R; i <= R; ++i)
+    texelChannels32(t, _mm512_inserti64x4(_mm512_castsi256_si512(halves[i + R]), halves[i + R + 2], 1), out[i + R]);
+  return true;
 }
 
 }  // namespace raster::sampling

@@ -115,6 +115,19 @@ void lookupColorGrid3x3(const Texture& texture, glsl::vec2<F> uv, glm::vec2 step
       taps[j + 1][i + 1] = lookupColor(texture, uv + glsl::vec2<F>(F(float(i) * step.x), F(float(j) * step.y)));
 }
 
+// taps[i + R] = the lookup at uv + float(i) * step, i in -R..R (N = 2R + 1); taps[R] at uv
+// itself.
+template <int N, class F>
+void lookupColorLine(const Texture& texture, glsl::vec2<F> uv, glm::vec2 step, glsl::vec4<F> (&taps)[N]) {
+  constexpr int R = N / 2;
+  taps[R] = lookupColor(texture, uv);
+  for (int i = 1; i <= R; ++i) {
+    const glsl::vec2<F> offset(F(step.x * float(i)), F(step.y * float(i)));
+    taps[R + i] = lookupColor(texture, uv + offset);
+    taps[R - i] = lookupColor(texture, uv - offset);
+  }
+}
+
 // taps[j + R][i + R] = the compare lookup at (origin + (i, j) * step) + base, i and j in -R..R
 // (N = 2R + 1), each constant offset folded in float first.
 template <int N, class F>
@@ -175,6 +188,18 @@ template <class F>
 [[gnu::always_inline]] inline void textureGrid3x3(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step,
                                                   glsl::vec4<F> (&taps)[3][3]) {
   sampling::lookupColorGrid3x3(*sampler.texture, uv, step, taps);
+}
+
+// The 2R + 1 colour lookups of a separable filter's loop, one step apart along a line:
+//   taps[R] = texture(sampler, uv),
+//   taps[R + i] = texture(sampler, uv + step * float(i)),
+//   taps[R - i] = texture(sampler, uv - step * float(i)),  i in 1..R,
+// each bit-identical to that lone lookup. Made at once, a lookup's choice of sampler (format,
+// filter, wrap) is made once for all the taps, not once a tap.
+template <int R, class F>
+[[gnu::always_inline]] inline void textureLine(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step,
+                                               glsl::vec4<F> (&taps)[2 * R + 1]) {
+  sampling::lookupColorLine(*sampler.texture, uv, step, taps);
 }
 
 // The PCF loops of the seeds' shaders, their lookups made at once:

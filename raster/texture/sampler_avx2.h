@@ -190,6 +190,36 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
   for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = joinHalves(lo[k], hi[k]);
 }
 
+// textureLine's taps (sampler.h) on 16 lanes: a block's line along x or y of a NEAREST RGBA8 or
+// depth texture shares its texel loads (sampleNearest32Line); every other line, and every
+// other texture, is the lone lookups one tap at a time.
+template <int N>
+[[gnu::always_inline]] inline void lookupColorLine(const Texture& texture, glsl::vec2<simd::Float8x2> uv,
+                                                   glm::vec2 step, glsl::vec4<simd::Float8x2> (&taps)[N]) {
+  using simd::Float8x2;
+  constexpr int R = N / 2;
+  const auto at = [&](int i) -> glsl::vec2<Float8x2> {
+    if (i == 0) return uv;
+    const glsl::vec2<Float8x2> offset(Float8x2(step.x * float(i < 0 ? -i : i)), Float8x2(step.y * float(i < 0 ? -i : i)));
+    return i > 0 ? uv + offset : uv - offset;
+  };
+#if RASTER_ZMM_PAIRS
+  if (isNearest32(texture)) {
+    Float8x2 rgba[N][4];
+    if (sampleNearest32Line(texture, uv.x, uv.y, step, rgba))
+      for (int k = 0; k < N; ++k) taps[k] = {rgba[k][0], rgba[k][1], rgba[k][2], rgba[k][3]};
+    else
+      for (int i = -R; i <= R; ++i) {
+        const glsl::vec2<Float8x2> tap = at(i);
+        sampleNearest32Pair(texture, tap.x, tap.y, rgba[0]);
+        taps[i + R] = {rgba[0][0], rgba[0][1], rgba[0][2], rgba[0][3]};
+      }
+    return;
+  }
+#endif
+  for (int i = -R; i <= R; ++i) taps[i + R] = lookupColor(texture, at(i));
+}
+
 template <int N>
 void lookupCompareGrid(const Texture& depth, glsl::vec2<simd::Float8> base, float origin, float step, simd::Float8 ref,
                        simd::Float8 (&taps)[N][N]) {

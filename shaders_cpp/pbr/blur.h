@@ -27,12 +27,15 @@ struct BlurPass : PostProgram {
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
-    F result = raster::texture(u.uInput, in.fragUV).x * F(WEIGHTS[0]);
+    // The nine texture() calls, made at once so the sampler is chosen once, not nine times:
+    // taps[4 + i] is texture(uInput, fragUV + uDirection * float(i)), and taps[4 - i] the one
+    // at fragUV - uDirection * float(i), bit for bit.
+    vec4<F> taps[9];
+    raster::textureLine<4>(u.uInput, in.fragUV, u.uDirection, taps);
+    F result = taps[4].x * F(WEIGHTS[0]);
     for (int i = 1; i < 5; ++i) {
-      // uDirection * float(i): a uniform times a constant, the same float product per lane.
-      const vec2<F> step = vec2<F>(F(u.uDirection.x * float(i)), F(u.uDirection.y * float(i)));
-      result = result + raster::texture(u.uInput, in.fragUV + step).x * F(WEIGHTS[i]);
-      result = result + raster::texture(u.uInput, in.fragUV - step).x * F(WEIGHTS[i]);
+      result = result + taps[4 + i].x * F(WEIGHTS[i]);
+      result = result + taps[4 - i].x * F(WEIGHTS[i]);
     }
     out.color[0] = vec4<F>(result, result, result, F(1.0f));
   }

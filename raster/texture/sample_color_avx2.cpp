@@ -520,9 +520,12 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]) {
   if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
-  if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Linear &&
-      texture.sampler.wrapS == Wrap::ClampToEdge && texture.width >= 2) {
-    // Both groups' taps joined, for the 16-lane blend (sample_half_avx512.h); any wrap of t.
+  if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Linear && texture.width >= 2) {
+    // Both groups' taps joined, for the 16-lane blend (sample_half_avx512.h), any wraps: it
+    // declines a group with a footprint at the last column, which CLAMP_TO_EDGE repeats and
+    // REPEAT splits across its seam (the environment maps repeat along s). Here, not in
+    // the ports' inline lookup: there it made the hdr frame, which never takes it, about 3%
+    // slower (its code beside the composite's lookups; 9 alternated rounds, 7 lost).
     LinearTaps8 x[2], y[2];
     for (int h = 0; h < 2; ++h) {
       x[h] = wrapLinearFloat(sHalves[h].v, texture.width, texture.sampler.wrapS);

@@ -109,7 +109,7 @@ TEST_SUITE("texture") {
   TEST_CASE("Float8x2 lookups in one AVX-512 register, for all lanes or some, equal the scalar reference, at the right edge or not") {
     std::mt19937 rng(79);
     const float specials[] = {-0.0f, 1.0f, 1e30f, -1e30f, 3e9f, std::nanf(""), std::numeric_limits<float>::infinity()};
-    long mismatches = 0, lookups = 0, awayFromEdge = 0;
+    long mismatches = 0, lookups = 0, awayFromEdge = 0, repeatInline = 0;
     // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), grey,
     // and kept in strips alone, as uploaded RGBA8 textures are (footprint_strips.h); depth
     // codes read through sampler2D (NEAREST inline, sample_nearest_avx512.h).
@@ -134,11 +134,13 @@ TEST_SUITE("texture") {
       for (const auto& [w, h] : {std::pair{320, 240}, std::pair{13, 7}, std::pair{2, 2}, std::pair{1, 3}, std::pair{16, 8}}) {
         raster::Texture tex = randomTexture(rng, w, h, format, variant.grey);
         for (raster::Filter filter : {raster::Filter::Linear, raster::Filter::Nearest})
-          // Both axes alike, and CLAMP_TO_EDGE along s with REPEAT along t (sampleColor8x2
-          // blends those in one register too; the ports' inline lookup takes only the first).
+          // Both axes alike, and each wrap along s with the other along t (an environment
+          // map repeats along s and clamps along t); the ports' inline RGBA16F lookup takes
+          // every one, sampleColor8x2 blends CLAMP_TO_EDGE along s in one register.
           for (const auto& [wrap, wrapT] : {std::pair{raster::Wrap::ClampToEdge, raster::Wrap::ClampToEdge},
                                             std::pair{raster::Wrap::Repeat, raster::Wrap::Repeat},
-                                            std::pair{raster::Wrap::ClampToEdge, raster::Wrap::Repeat}}) {
+                                            std::pair{raster::Wrap::ClampToEdge, raster::Wrap::Repeat},
+                                            std::pair{raster::Wrap::Repeat, raster::Wrap::ClampToEdge}}) {
             tex.sampler = {filter, wrap, wrapT, false};
             // The strip variant samples a copy kept in strips alone, as an upload is
             // (footprint_strips.h), under every sampler state; the reference reads the rows.
@@ -220,13 +222,58 @@ TEST_SUITE("texture") {
               // The cases the one-register path takes (the others fall back to two halves).
               awayFromEdge += !edge && format == raster::TexelFormat::RGBA16F && filter == raster::Filter::Linear &&
                               wrap == raster::Wrap::ClampToEdge && w >= 2;
+              // and with REPEAT along s, where every lane's footprint is inside the texture's
+              // columns (s in [1.5, w - 1.5] texels), none split by the seam
+              const bool inside = std::all_of(s16, s16 + 16, [&](float v) {
+                return v >= 1.5f / float(w) && v <= (float(w) - 1.5f) / float(w);
+              });
+              repeatInline += inside && format == raster::TexelFormat::RGBA16F && filter == raster::Filter::Linear &&
+                              wrap == raster::Wrap::Repeat && w >= 2;
             }
           }
       }
     }
-    MESSAGE(lookups << " lookups, " << awayFromEdge << " groups on the one-register path, " << mismatches
-                    << " channel mismatches");
+    MESSAGE(lookups << " lookups; on the one-register path " << awayFromEdge << " groups clamping along s, " << repeatInline
+                    << " repeating; " << mismatches << " channel mismatches");
     CHECK(awayFromEdge > 200);   // the one-register path ran, not only the fallback
+    CHECK(repeatInline > 200);
+    CHECK(mismatches == 0);
+  }
+
+  TEST_CASE("a REPEAT lookup in a tile that holds only a clear: a NaN or infinite coordinate still blends to NaN") {
+    // The inline RGBA16F lookup returns a cleared tile's value without a fetch
+    // (cleared_tiles.h), which holds only for finite weights. CLAMP_TO_EDGE's always are;
+    // REPEAT's weight for a NaN or infinite coordinate is NaN, and the blend of four equal
+    // texels with it is NaN, so a REPEAT lookup must not take that shortcut.
+    raster::Texture tex(64, 64, raster::TexelFormat::RGBA16F);
+    const float value[4] = {0.25f, 1.5f, -3.0f, 0.75f};
+    for (size_t i = 0; i < tex.half.size(); ++i) tex.half[i] = raster::format::halfFromFloatTowardZero(value[i % 4]);
+    tex.clearedTiles.tilesX = 1;
+    tex.clearedTiles.cleared = {1};
+    for (int c = 0; c < 4; ++c) tex.clearedTiles.value[c] = value[c];
+    std::mt19937 rng(80);
+    long mismatches = 0;
+    for (raster::Wrap wrap : {raster::Wrap::Repeat, raster::Wrap::ClampToEdge}) {
+      tex.sampler = {raster::Filter::Linear, wrap, wrap, false};
+      const float specials[] = {std::nanf(""), std::numeric_limits<float>::infinity(),
+                                -std::numeric_limits<float>::infinity(), 0.3f};
+      for (int round = 0; round < 64; ++round) {
+        alignas(64) float s16[16], t16[16];
+        for (int i = 0; i < 16; ++i) {
+          s16[i] = rng() % 4 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, 0.1f, 0.4f);
+          t16[i] = rng() % 4 == 0 ? specials[rng() % std::size(specials)] : uniform(rng, 0.1f, 0.4f);
+        }
+        const raster::glsl::vec2<raster::simd::Float8x2> uv{raster::simd::Float8x2::load(s16),
+                                                            raster::simd::Float8x2::load(t16)};
+        const auto got = raster::sampling::lookupColor(tex, uv);
+        const raster::simd::Float8x2 planes[4] = {got.x, got.y, got.z, got.w};
+        for (int i = 0; i < 16; ++i) {
+          float ref[4];
+          raster::sampling::sampleColor(tex, s16[i], t16[i], ref);
+          for (int c = 0; c < 4; ++c) mismatches += !sameLookup(planes[c][i], ref[c]);
+        }
+      }
+    }
     CHECK(mismatches == 0);
   }
 #endif

@@ -194,8 +194,9 @@ template <class F>
 //   taps[R] = texture(sampler, uv),
 //   taps[R + i] = texture(sampler, uv + step * float(i)),
 //   taps[R - i] = texture(sampler, uv - step * float(i)),  i in 1..R,
-// each bit-identical to that lone lookup. Made at once, a lookup's choice of sampler (format,
-// filter, wrap) is made once for all the taps, not once a tap.
+// each bit-identical to that lone lookup. Made at once, the taps can share their texel loads:
+// the 16-lane form reads a block's line along x or y of a NEAREST RGBA8 or depth texture
+// from one window of texels (sampleNearest32Line).
 template <int R, class F>
 [[gnu::always_inline]] inline void textureLine(const Sampler2D& sampler, glsl::vec2<F> uv, glm::vec2 step,
                                                glsl::vec4<F> (&taps)[2 * R + 1]) {

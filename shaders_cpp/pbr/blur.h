@@ -27,7 +27,7 @@ struct BlurPass : PostProgram {
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
-    // The nine texture() calls, made at once so the sampler is chosen once, not nine times:
+    // The nine texture() calls, made at once so that a block's taps share their texel loads:
     // taps[4 + i] is texture(uInput, fragUV + uDirection * float(i)), and taps[4 - i] the one
     // at fragUV - uDirection * float(i), bit for bit.
     vec4<F> taps[9];

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <iterator>
 #include <random>
 
 #include "raster/texture/sampler.h"
@@ -26,7 +27,7 @@ TEST_SUITE("texture") {
   // Every tap of textureLine<R> for `Lanes` (Float8, or Float8x2 with its 16-lane path)
   // against its lone scalar lookup at uv + step * float(i) or uv - step * float(i).
   template <class Lanes, int R>
-  LineCounts lineTapsAgainstScalar(std::mt19937 & rng) {
+  LineCounts lineTapsAgainstScalar(std::mt19937& rng) {
     constexpr int kLanes = int(sizeof(Lanes) / sizeof(float)), N = 2 * R + 1;
     const raster::LaneLayout<raster::simd::Float8> layout(false, 0);   // a block's lanes, as the pipeline lays them out
     LineCounts counts;

@@ -55,21 +55,29 @@ inline bool isNearest32(const Texture& t) {
   return _mm512_add_epi32(_mm512_mullo_epi32(dy, _mm512_set1_epi32(width)), dx);
 }
 
+// Lane 0's texel index, and the lanes whose index is lane 0's plus their blockOffsets16:
+// all sixteen where the lanes read a 4x4 block of texels.
+[[gnu::always_inline]] inline __mmask16 lanesInBlock16(__m512i index, int width, int& first) {
+  first = _mm_cvtsi128_si32(_mm512_castsi512_si128(index));
+  return _mm512_cmpeq_epi32_mask(index, _mm512_add_epi32(_mm512_set1_epi32(first), blockOffsets16(width)));
+}
+
+// Two texel rows of four (columns c0..c3) in one half's lane order:
+// [top c0, top c1, bottom c0, bottom c1, top c2, top c3, bottom c2, bottom c3].
+[[gnu::always_inline]] inline __m256i rowPairHalf(__m128i top, __m128i bottom) {
+  return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi64(top, bottom)), _mm_unpackhi_epi64(top, bottom), 1);
+}
+
 // The 32-bit texels at base[index[lane]], in lane order. Where the lanes read a 4x4 block
 // (blockOffsets16), four 16-byte row loads and two shuffles a half take the place of
 // sixteen loads: the blur's lookups all do, SSAO's own-pixel lookups too. Every texel of
 // the block is some lane's, so the row loads stay inside the texture.
 [[gnu::always_inline]] inline __m512i loadTexels32(const uint32_t* base, __m512i index, int width) {
-  const int first = _mm_cvtsi128_si32(_mm512_castsi512_si128(index));
-  if (_mm512_cmpeq_epi32_mask(index, _mm512_add_epi32(_mm512_set1_epi32(first), blockOffsets16(width))) == 0xFFFF) {
+  int first;
+  if (lanesInBlock16(index, width, first) == 0xFFFF) {
     const uint32_t* block = base + first;
     auto row = [&](int r) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(block + ptrdiff_t(r) * width)); };
-    // Rows r and r + 1 in one half's lane order: [r c0, r c1, r+1 c0, r+1 c1, r c2, r c3, r+1 c2, r+1 c3].
-    auto half = [&](int r) {
-      const __m128i top = row(r), bottom = row(r + 1);
-      return _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi64(top, bottom)), _mm_unpackhi_epi64(top, bottom), 1);
-    };
-    return _mm512_inserti64x4(_mm512_castsi256_si512(half(0)), half(2), 1);
+    return _mm512_inserti64x4(_mm512_castsi256_si512(rowPairHalf(row(0), row(1))), rowPairHalf(row(2), row(3)), 1);
   }
   alignas(64) int at[16];
   storeLaneIndices16(index, at);
@@ -144,9 +152,8 @@ template <int N>
   const __m512i across = alongX ? wrapNearest16(tc.v, t.height, t.sampler.wrapT) : wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i x = alongX ? line[R] : across, y = alongX ? across : line[R];
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
-  const int first = _mm_cvtsi128_si32(_mm512_castsi512_si128(index));
-  const __mmask16 block = _mm512_cmpeq_epi32_mask(index, _mm512_add_epi32(_mm512_set1_epi32(first), blockOffsets16(t.width)));
-  if ((apart & block) != 0xFFFF) return false;
+  int first;
+  if ((apart & lanesInBlock16(index, t.width, first)) != 0xFFFF) return false;
   // From here every texel read is some tap's: the block's 4x4 texels moved by -R..R.
   const uint32_t* centre = texels32(t) + first;
   if (alongX) {
@@ -169,7 +176,7 @@ template <int N>
   __m128i row = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre - ptrdiff_t(R) * t.width));
   for (int k = 0; k < N + 2; ++k) {
     const __m128i next = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre + ptrdiff_t(k + 1 - R) * t.width));
-    halves[k] = _mm256_inserti128_si256(_mm256_castsi128_si256(_mm_unpacklo_epi64(row, next)), _mm_unpackhi_epi64(row, next), 1);
+    halves[k] = rowPairHalf(row, next);
     row = next;
   }
   for (int i = -R; i <= R; ++i)

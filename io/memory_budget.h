@@ -6,7 +6,8 @@
 //
 // The cap is --max-memory, by default three quarters of the machine's physical memory (the
 // rest is left to the program's own code, Mesa's, and the system). Buffers of a few
-// kilobytes per draw (vertex records, bins) are not counted.
+// kilobytes per draw (vertex records, bins) are not counted, nor a draw's texel planes
+// (raster/shader/texel_planes.h: one float a texel of a texture already counted, 64 MiB at most).
 #pragma once
 
 #include <cstdint>

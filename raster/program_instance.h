@@ -10,6 +10,7 @@
 #include "raster/geometry/vertex_stage.h"
 #include "raster/shader/program.h"
 #include "raster/shader/shader_instance.h"
+#include "raster/shader/texel_planes.h"
 #include "raster/tile/covered_tile.h"
 
 namespace raster {
@@ -32,6 +33,13 @@ class ProgramInstance final : public ShaderInstance {
   bool samplesAroundPixel() const override { return raster::samplesAroundPixel<Program>(); }
   void appendSampledTextures(std::vector<const Texture*>& out) const override {
     std::apply([&](auto... entry) { (appendSampled(entry, out), ...); }, Program::kUniformTable);
+  }
+
+  void makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) override {
+    if constexpr (hasTexelPlanes<Program>()) {
+      TexelPlaneMaker<typename Program::Uniforms> make(uniforms_, pool, target, scalarLanes);
+      Program::texelPlanes(make);
+    }
   }
 
   void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {

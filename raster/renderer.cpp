@@ -133,6 +133,11 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
       throw std::out_of_range("index " + std::to_string(index) + " past the vertex buffer (" +
                               std::to_string(vertices.vertexCount) + " vertices)");
 
+  // Values the fragments would make of single texels, made once a texel (shader/texel_planes.h).
+  const uint64_t planesStart = cycleCount();
+  shader->makeTexelPlanes(pool_, framebuffer_, scalarOnly_);
+  counters_.shadeCycles += cycleCount() - planesStart;
+
   // 1. Fetch and vertex shading.
   const uint64_t vertexStart = cycleCount();
   shadeVertices(*shader, vertices, instanceCount);

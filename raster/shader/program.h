@@ -10,6 +10,10 @@
 //                                         glsl::vec4<F>& gl_Position, Varyings<F>& out);
 //   template <class F> static void fragment(const Uniforms&, const FragmentInput<F>&,
 //                                           const Varyings<F>& in, FragmentOutput<F>& out);
+// Optional: static void deriveUniforms(Uniforms&) (values of the uniforms alone, once a
+// draw: program_instance.h), static void texelPlanes(TexelPlaneMaker<Uniforms>&) (values
+// of single texels, once a texel and a draw: shader/texel_planes.h), and the hints
+// kLanesIndependent and kSamplesAroundPixel (below).
 // F is a lane type (simd/lanes.h). Varyings<F> must be exactly N consecutive F values: the
 // pipeline interpolates it as an array of N floats, every one perspective-correct.
 // Shaders never see depth, blending or the framebuffer.

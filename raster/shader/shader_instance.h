@@ -8,6 +8,7 @@
 
 #include "raster/contract.h"
 #include "raster/shader/program.h"
+#include "raster/util/parallel.h"
 
 namespace raster {
 
@@ -30,6 +31,10 @@ class ShaderInstance {
   virtual bool samplesAroundPixel() const = 0;
   // Appends the textures its sampler uniforms are bound to for this draw (none unbound).
   virtual void appendSampledTextures(std::vector<const Texture*>& out) const = 0;
+  // Makes the program's texel planes for this draw (shader/texel_planes.h), if it declares
+  // any, on `pool`'s threads: before any of its fragments is shaded, while `target` is the
+  // pass's framebuffer. With `scalarLanes` in the plain-C++ lanes (the same bits either way).
+  virtual void makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) = 0;
   // Shades a batch of one instance's vertices into their records of `out`, with the
   // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;

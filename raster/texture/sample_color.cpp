@@ -198,6 +198,8 @@ void setFootprint(const Texture& t, SampleRecord& r, int x0, int x1, int y0, int
 
 }  // namespace
 
+int nearestIndex(float coord, int size, Wrap wrap) { return wrapNearestFloat(coord, size, wrap); }
+
 void colorTexelValue(const Texture& t, int x, int y, float out[4]) {
   const size_t i = (size_t(y) * size_t(t.width) + size_t(x)) * 4;
   for (int c = 0; c < 4; ++c) {

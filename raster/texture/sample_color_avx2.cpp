@@ -516,6 +516,12 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
   sampleColorN<2>(texture, s, t, nullptr, out);
 }
 
+simd::Float8 samplePlane8(const TexelPlane& plane, simd::Float8 s, simd::Float8 t) {
+  const __m256i x = wrapNearest(s.v, plane.width, plane.wrapS, false), y = wrapNearest(t.v, plane.height, plane.wrapT, false);
+  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(plane.width)), x);
+  return simd::Float8(_mm256_i32gather_ps(plane.values.data(), index, 4));
+}
+
 #if RASTER_ZMM_PAIRS
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]) {
   if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);

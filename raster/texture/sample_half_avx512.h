@@ -69,11 +69,10 @@ namespace raster::sampling {
 //
 // Dead lanes cost no memory: a lookup with no live lane reads nothing, a half (eight lanes)
 // with none loads nothing, and a dead lane of a live half loads texel 0, which stays cached,
-// instead of its own. SSAO's stored-normal reads (textureWhere) are where this counts: only
-// 12-13% of their lanes are live, a third to two fifths of the lookups have none, and over
-// half their halves (640x480 and 1920x1080). The deferred frame read 3.6% faster at
-// 1920x1080, where the G-buffer targets outgrow the cache, and 0.4% at 640x480
-// (docs/notes/2026-11-30-dead-lanes-ssao-normals.md).
+// instead of its own (textureWhere). SSAO's stored-normal reads were where this counted,
+// until SSAO read a texel plane in their place (shader/texel_planes.h): only 12-13% of their
+// lanes were live; the deferred frame had read 3.6% faster at 1920x1080 and 0.4% at 640x480
+// (docs/notes/2026-11-30-dead-lanes-ssao-normals.md). No port calls textureWhere now.
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          __mmask16 live, simd::Float8x2 out[4]) {
   if (!live) {

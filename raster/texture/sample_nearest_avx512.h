@@ -113,6 +113,17 @@ inline bool isNearest32(const Texture& t) {
   texelChannels32(t, loadTexels32(texels32(t), index, t.width), out);
 }
 
+// A texel plane's values (sampler.h, TexelPlane) at sixteen lanes' NEAREST texels, its index
+// as every NEAREST lookup here computes it: one 4-byte load a lane, or four row loads where
+// the lanes read a 4x4 block.
+[[gnu::always_inline]] inline simd::Float8x2 samplePlanePair(const TexelPlane& plane, simd::Float8x2 s, simd::Float8x2 tc) {
+  const __m512i x = wrapNearest16(s.v, plane.width, plane.wrapS);
+  const __m512i y = wrapNearest16(tc.v, plane.height, plane.wrapT);
+  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(plane.width)), x);
+  const uint32_t* values = reinterpret_cast<const uint32_t*>(plane.values.data());
+  return simd::Float8x2(_mm512_castsi512_ps(loadTexels32(values, index, plane.width)));
+}
+
 // textureLine's N = 2R + 1 taps (sampler.h) where sampleNearest32Pair is the lookup, the
 // line runs along x or along y (step.y or step.x is zero, as a separable filter's passes
 // are), and the sixteen lanes are a 4x4 block (blockOffsets16) whose tap i lands i texels

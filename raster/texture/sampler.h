@@ -25,6 +25,17 @@ struct Sampler2DShadow {
   const Texture* texture = nullptr;
 };
 
+// Not GLSL: a texel plane, one float a texel. It holds what a fragment shader computes from
+// the texels that NEAREST lookups of its textures return at one texel, made once a draw
+// (shader/texel_planes.h), so that a lookup reads that one float (textureFromPlane, below)
+// instead of its texels and the arithmetic on them. Rows are the sources' memory rows.
+struct TexelPlane {
+  std::vector<float, HugePageAllocator<float>> values;   // empty: not made this draw
+  int width = 0, height = 0;
+  Wrap wrapS = Wrap::ClampToEdge, wrapT = Wrap::ClampToEdge;
+  bool made() const { return !values.empty(); }
+};
+
 namespace sampling {
 
 // What a depth map's codes are multiplied by to read as floats in [0, 1] (format.h's
@@ -103,6 +114,25 @@ F lookupCompare(const Texture& depth, glsl::vec2<F> uv, F ref) {
   return F::load(out);
 }
 
+// NEAREST's texel index along one axis, as every NEAREST lookup of the float path computes
+// it (sample_color.cpp; RGBA8's fixed-point path differs only before a clamp that makes the
+// two the same): CLAMP_TO_EDGE truncates, then clamps; REPEAT wraps.
+int nearestIndex(float coord, int size, Wrap wrap);
+
+// The plane's value at the texel a NEAREST lookup at uv reads.
+inline float lookupPlane(const TexelPlane& plane, glsl::vec2<float> uv) {
+  const int x = nearestIndex(uv.x, plane.width, plane.wrapS), y = nearestIndex(uv.y, plane.height, plane.wrapT);
+  return plane.values[size_t(y) * size_t(plane.width) + size_t(x)];
+}
+template <class F>
+F lookupPlane(const TexelPlane& plane, glsl::vec2<F> uv) {
+  alignas(64) float s[F::kCount], t[F::kCount], out[F::kCount];
+  uv.x.store(s);
+  uv.y.store(t);
+  for (int i = 0; i < F::kCount; ++i) out[i] = lookupPlane(plane, glsl::vec2<float>(s[i], t[i]));
+  return F::load(out);
+}
+
 // A prefetch changes nothing the reference computes.
 template <class F>
 void prefetchColor(const Texture&, glsl::vec2<F>) {}
@@ -165,11 +195,22 @@ template <class F>
 
 // GLSL: texture(sampler2D, uv) in a port that knows some lanes will never use the result:
 // only the lanes in `needed` get their texel, the others an unspecified value. A shader
-// compiler that worked lane by lane would skip those reads; SSAO uses this to skip the
-// memory traffic of lookups whose lanes have already failed a test.
+// compiler that worked lane by lane would skip those reads: the memory traffic of lookups
+// whose lanes have already failed a test. (SSAO made its normal reads so, until it read a
+// texel plane in their place.)
 template <class F, class M>
 [[gnu::always_inline]] inline glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv) {
   return sampling::lookupColorWhere(needed, *sampler.texture, uv);
+}
+
+// Not GLSL: value(uv), where `plane` holds value's result at every texel of the textures
+// value reads (shader/texel_planes.h says when it may): read from the plane where it was
+// made, computed by value(uv) itself where it was not, and for the lane pixel history
+// traces, whose texture lookups the trace then shows. The same bits either way.
+template <class F, class Value>
+[[gnu::always_inline]] inline F textureFromPlane(const TexelPlane& plane, glsl::vec2<F> uv, Value value) {
+  if (!plane.made() || sampling::tActiveSampleTrace) return value(uv);
+  return sampling::lookupPlane(plane, uv);
 }
 
 // GLSL: texture(sampler2DShadow, vec3(uv, ref)), as the seed's textureCompare.

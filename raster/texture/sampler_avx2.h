@@ -66,6 +66,10 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
 #endif
 
+// A texel plane's values at 8 lanes' NEAREST texels (one gather), bit-identical to
+// sampler.h's lookupPlane lane by lane.
+simd::Float8 samplePlane8(const TexelPlane& plane, simd::Float8 s, simd::Float8 t);
+
 // Starts loading the texels sampleColor8 would read at these coordinates (RGBA8 and
 // RGBA16F LINEAR: each lane's two footprint rows), and returns; nothing for other formats
 // and filters.
@@ -142,6 +146,18 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
   simd::Float8 rgba[2][4];
   sampleColor8x2(texture, s, t, live, rgba);
   return joinHalves(rgba);
+#endif
+}
+
+[[gnu::always_inline]] inline simd::Float8 lookupPlane(const TexelPlane& plane, glsl::vec2<simd::Float8> uv) {
+  return samplePlane8(plane, uv.x, uv.y);
+}
+
+[[gnu::always_inline]] inline simd::Float8x2 lookupPlane(const TexelPlane& plane, glsl::vec2<simd::Float8x2> uv) {
+#if RASTER_ZMM_PAIRS
+  return samplePlanePair(plane, uv.x, uv.y);   // inline (sample_nearest_avx512.h)
+#else
+  return {samplePlane8(plane, uv.x.low(), uv.y.low()), samplePlane8(plane, uv.x.high(), uv.y.high())};
 #endif
 }
 

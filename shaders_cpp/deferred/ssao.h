@@ -1,10 +1,15 @@
 // C++ port of post.vert / ssao.frag (10 - Deferred Shading, SSAO pass), line by line; the
-// sample loop is split in three, with the same operations per sample (see fragment()).
-// Per-lane branches run under masks: both sides are computed and select() keeps the one
-// GLSL would take, which gives the same values lane by lane.
+// sample loop is split in three, with the same operations per sample (see fragment()), and
+// what a sample makes of the two G-buffer texels it reads is one function, storedViewZ,
+// which the pipeline evaluates once a texel (texelPlanes). Per-lane branches run under
+// masks: both sides are computed and select() keeps the one GLSL would take, which gives
+// the same values lane by lane.
 #pragma once
 
+#include <limits>
+
 #include "raster/shader/program.h"
+#include "raster/shader/texel_planes.h"
 #include "scenes/program_entry.h"
 #include "shaders_cpp/deferred/post.h"
 
@@ -23,6 +28,8 @@ struct SsaoPass : PostProgram {
     glm::mat4 u_view{1.0f};
     glm::mat4 u_proj{1.0f};
     raster::Sampler2D ssao_g_normal, ssao_g_worldpos;
+    // Not a GLSL uniform: storedViewZ at every G-buffer texel, made once a draw (texelPlanes).
+    raster::TexelPlane stored_vz;
   };
   static constexpr auto kUniformTable = std::tuple{
       raster::uniform("u_view", &Uniforms::u_view),
@@ -52,6 +59,29 @@ struct SsaoPass : PostProgram {
     return smoothstep3(F(0.0f), F(1.0f), F(SSAO_RADIUS) / range);
   }
 
+  // What a sample makes of the G-buffer texels it reads at uv: the GLSL's
+  //   stored_p = texture(ssao_g_worldpos, suv).xyz, stored_n = texture(ssao_g_normal, suv).xyz,
+  //   stored_vz = (u_view * vec4(stored_p, 1.0)).z,
+  // and its test dot(stored_n, stored_n) > 0.01 folded in: stored_vz where the texel holds a
+  // surface, NaN where it does not. A NaN fails the test `stored_vz >= sample_vz +
+  // SSAO_BIAS` that every counted sample passes too, so the two tests count the same samples.
+  template <class F>
+  static F storedViewZ(const Uniforms& u, vec2<F> uv) {
+    const vec3<F> stored_p = raster::texture(u.ssao_g_worldpos, uv).xyz();
+    const vec3<F> stored_n = raster::texture(u.ssao_g_normal, uv).xyz();
+    const F stored_vz = (u.u_view * vec4<F>(stored_p, F(1.0f))).z;
+    return select(dot(stored_n, stored_n) > F(0.01f), stored_vz, F(std::numeric_limits<float>::quiet_NaN()));
+  }
+
+  // Not in the GLSL: storedViewZ depends on uv only through its NEAREST lookups, so the
+  // pipeline makes it once a texel before the pass, and each of the sixteen samples a pixel
+  // reads one float (shader/texel_planes.h) where the GLSL reads two texels and does the
+  // arithmetic: a texel is read by about sixteen samples.
+  static void texelPlanes(raster::TexelPlaneMaker<Uniforms>& make) {
+    make(&Uniforms::stored_vz, {&Uniforms::ssao_g_worldpos, &Uniforms::ssao_g_normal},
+         [](const Uniforms& u, auto uv) { return storedViewZ(u, uv); });
+  }
+
   template <class F>
   static F hash21(vec2<F> p) {
     const F v = sin(dot(p, vec2<F>(F(127.1f), F(311.7f)))) * F(43758.5453f);
@@ -77,9 +107,9 @@ struct SsaoPass : PostProgram {
       const F ang0 = hash21(l_uv * F(1024.0f)) * F(6.2831853f);
 
       // The GLSL loop, split in three with the same operations per sample: its sample
-      // points, then their 16 stored positions, then the tests. A GLSL compiler unrolls
-      // this constant loop and is free to order it so; here it lets the 16 G-buffer reads
-      // be in flight together instead of each waiting behind the previous sample's tests.
+      // points, then what each makes of its stored texels, then the tests. A GLSL compiler
+      // unrolls this constant loop and is free to order it so; here it lets the 16 reads be
+      // in flight together instead of each waiting behind the previous sample's tests.
       vec2<F> suv[SSAO_K];
       F clip_w[SSAO_K], sample_vz[SSAO_K];   // what the tests read of clip and of the view-space point
       for (int i = 0; i < SSAO_K; i++) {
@@ -102,20 +132,18 @@ struct SsaoPass : PostProgram {
         const F wv = max(clip.w, F(0.0001f));
         suv[i] = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
       }
-      vec3<F> stored_p[SSAO_K];
-      for (int i = 0; i < SSAO_K; i++) stored_p[i] = raster::texture(u.ssao_g_worldpos, suv[i]).xyz();
+      F stored_vz[SSAO_K];
+      for (int i = 0; i < SSAO_K; i++)
+        stored_vz[i] = raster::textureFromPlane(u.stored_vz, suv[i], [&](vec2<F> uv) { return storedViewZ(u, uv); });
 
       F occ = F(0.0f);
       for (int i = 0; i < SSAO_K; i++) {
-        const F stored_vz = (u.u_view * vec4<F>(stored_p[i], F(1.0f))).z;
-        // view looks down -Z: a stored surface closer to the camera (greater z) occludes
-        const auto in_front = (clip_w[i] > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
-                              (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) & (stored_vz >= sample_vz[i] + F(SSAO_BIAS));
-        // stored_n only decides lanes that pass every other test, so only those read it
-        // (textureWhere); GLSL reads it everywhere, and the sum is the same.
-        const vec3<F> stored_n = raster::textureWhere(in_front, u.ssao_g_normal, suv[i]).xyz();
-        const auto occludes = in_front & (dot(stored_n, stored_n) > F(0.01f));
-        const F range = max(abs(cur_vz - stored_vz), F(0.0001f));
+        // view looks down -Z: a stored surface closer to the camera (greater z) occludes;
+        // the GLSL's `dot(stored_n, stored_n) > 0.01` is inside stored_vz (storedViewZ)
+        const auto occludes = (clip_w[i] > F(0.0f)) & (suv[i].x >= F(0.0f)) & (suv[i].x <= F(1.0f)) &
+                              (suv[i].y >= F(0.0f)) & (suv[i].y <= F(1.0f)) &
+                              (stored_vz[i] >= sample_vz[i] + F(SSAO_BIAS));
+        const F range = max(abs(cur_vz - stored_vz[i]), F(0.0001f));
         occ = select(occludes, occ + rangeCheck(range, occludes), occ);
       }
       ao = select(has_surface, clamp(F(1.0f) - F(SSAO_STRENGTH) * occ / F(float(SSAO_K)), F(0.0f), F(1.0f)), ao);

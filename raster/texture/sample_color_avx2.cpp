@@ -194,17 +194,11 @@ template <int N>
 }
 
 // Four half-float channels of 8 texels, as float planes (half -> float is exact with F16C).
-// Only the lanes set in `live` (all 32 bits of a lane) are loaded; the others read as zero.
-[[gnu::always_inline]] inline void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4],
-                                             __m256i live = splat(-1)) {
+[[gnu::always_inline]] inline void fetchHalf(const Texture& t, __m256i x, __m256i y, __m256 rgba[4]) {
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(t.width)), x);
-  // The gathers take one mask bit per 64-bit texel: widen the lanes' masks to 64 bits.
-  const __m256i liveLo = _mm256_cvtepi32_epi64(_mm256_castsi256_si128(live));
-  const __m256i liveHi = _mm256_cvtepi32_epi64(_mm256_extracti128_si256(live, 1));
-  const __m256i zero = _mm256_setzero_si256();
-  const __m256i lo = _mm256_mask_i32gather_epi64(zero, texels, _mm256_castsi256_si128(index), liveLo, 8);
-  const __m256i hi = _mm256_mask_i32gather_epi64(zero, texels, _mm256_extracti128_si256(index, 1), liveHi, 8);
+  const __m256i lo = _mm256_i32gather_epi64(texels, _mm256_castsi256_si128(index), 8);
+  const __m256i hi = _mm256_i32gather_epi64(texels, _mm256_extracti128_si256(index, 1), 8);
   // Each 128-bit half holds two texels: convert to floats (r g b a r g b a), then transpose
   // in registers; the unpacks leave lanes in the order 0 2 4 6 1 3 5 7, undone by a permute.
   const __m256 v0 = _mm256_cvtph_ps(_mm256_castsi256_si128(lo)), v1 = _mm256_cvtph_ps(_mm256_extracti128_si256(lo, 1));
@@ -257,14 +251,14 @@ template <int N>
   }
 }
 
-// NEAREST: one texel per lane, loaded only for the lanes in `live`; N lookups as sampleRgba8.
+// NEAREST: one texel per lane; N lookups as sampleRgba8.
 template <int N>
 [[gnu::always_inline]] inline void sampleHalfNearest(const Texture& t, const __m256* s, const __m256* tc,
-                                                     const __m256i* live, simd::Float8 (*out)[4]) {
+                                                     simd::Float8 (*out)[4]) {
   __m256 rgba[N][4];
   for (int h = 0; h < N; ++h)
     fetchHalf(t, wrapNearest(s[h], t.width, t.sampler.wrapS, false), wrapNearest(tc[h], t.height, t.sampler.wrapT, false),
-              rgba[h], live[h]);
+              rgba[h]);
   for (int h = 0; h < N; ++h)
     for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(rgba[h][c]);
 }
@@ -353,11 +347,7 @@ void sampleRgba8Float(const Texture& t, const __m256* s, const __m256* tc, simd:
 
 template <int N>
 [[gnu::always_inline]] inline void sampleHalf(const Texture& t, const __m256* s, const __m256* tc, simd::Float8 (*out)[4]) {
-  if (lookupFilter(t) == Filter::Nearest) {
-    __m256i all[N];
-    for (int h = 0; h < N; ++h) all[h] = splat(-1);
-    return sampleHalfNearest<N>(t, s, tc, all, out);
-  }
+  if (lookupFilter(t) == Filter::Nearest) return sampleHalfNearest<N>(t, s, tc, out);
   LinearTaps8 x[N], y[N];
   for (int h = 0; h < N; ++h) {
     x[h] = wrapLinearFloat(s[h], t.width, t.sampler.wrapS);
@@ -374,20 +364,15 @@ template <int N>
   for (int h = 0; h < N; ++h) blendFootprint(p00[h], p01[h], p10[h], p11[h], x[h].weight, y[h].weight, out[h]);
 }
 
-// N lookups of any format; the dead lanes of `live` may skip their loads (half NEAREST).
+// N lookups of any format.
 template <int N>
-void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Float8* t, const simd::Mask8* live,
-                  simd::Float8 (*out)[4]) {
+void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Float8* t, simd::Float8 (*out)[4]) {
   __m256 sv[N], tv[N];
   for (int h = 0; h < N; ++h) sv[h] = s[h].v, tv[h] = t[h].v;
   if (texture.format == TexelFormat::RGBA8 && !methods::fixedPointFilter(methods::active().filter)) {
     sampleRgba8Float<N>(texture, sv, tv, out);
   } else if (texture.format == TexelFormat::RGBA8) {
     sampleRgba8<N>(texture, sv, tv, out);
-  } else if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Nearest && live) {
-    __m256i liveBits[N];
-    for (int h = 0; h < N; ++h) liveBits[h] = _mm256_castps_si256(live[h].v);
-    sampleHalfNearest<N>(texture, sv, tv, liveBits, out);
   } else if (texture.format == TexelFormat::RGBA16F) {
     sampleHalf<N>(texture, sv, tv, out);
   } else if (texture.isDepth() && lookupFilter(texture) == Filter::Nearest) {
@@ -501,19 +486,11 @@ bool sampleHalfGridShared(const Texture& t, __m256 s, __m256 tc, float stepS, fl
 }  // namespace
 
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]) {
-  sampleColorN<1>(texture, &s, &t, nullptr, reinterpret_cast<simd::Float8(*)[4]>(out));
-}
-
-void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]) {
-  if (!any(live)) {
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8(0.0f);
-    return;
-  }
-  sampleColorN<1>(texture, &s, &t, &live, reinterpret_cast<simd::Float8(*)[4]>(out));
+  sampleColorN<1>(texture, &s, &t, reinterpret_cast<simd::Float8(*)[4]>(out));
 }
 
 void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], simd::Float8 out[2][4]) {
-  sampleColorN<2>(texture, s, t, nullptr, out);
+  sampleColorN<2>(texture, s, t, out);
 }
 
 simd::Float8 samplePlane8(const TexelPlane& plane, simd::Float8 s, simd::Float8 t) {
@@ -524,7 +501,7 @@ simd::Float8 samplePlane8(const TexelPlane& plane, simd::Float8 s, simd::Float8 
 
 #if RASTER_ZMM_PAIRS
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]) {
-  if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, 0xFFFF, out);
+  if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, out);
   const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
   if (texture.format == TexelFormat::RGBA16F && lookupFilter(texture) == Filter::Linear && texture.width >= 2) {
     // Both groups' taps joined, for the 16-lane blend (sample_half_avx512.h), any wraps: it
@@ -545,33 +522,11 @@ void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, 
     if (blendHalfPairs16(texture, join(x), join(y), out)) return;
   }
   simd::Float8 planes[2][4];
-  sampleColorN<2>(texture, sHalves, tHalves, nullptr, planes);
+  sampleColorN<2>(texture, sHalves, tHalves, planes);
   for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(planes[0][c], planes[1][c]);
 }
 
-void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]) {
-  if (!live.k) {
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(0.0f);
-    return;
-  }
-  if (isHalfNearest(texture)) return sampleHalfNearestPair(texture, s, t, live.k, out);
-  const simd::Float8 sHalves[2] = {s.low(), s.high()}, tHalves[2] = {t.low(), t.high()};
-  const simd::Mask8 liveHalves[2] = {live.low(), live.high()};
-  simd::Float8 planes[2][4];
-  sampleColor8x2(texture, sHalves, tHalves, liveHalves, planes);
-  for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(planes[0][c], planes[1][c]);
-}
 #endif
-
-void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
-                    simd::Float8 out[2][4]) {
-  if (!any(live[0] | live[1])) {
-    for (int h = 0; h < 2; ++h)
-      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(0.0f);
-    return;
-  }
-  sampleColorN<2>(texture, s, t, live, out);
-}
 
 void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
   if (lookupFilter(texture) != Filter::Linear) return;

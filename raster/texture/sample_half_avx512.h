@@ -61,36 +61,22 @@ namespace raster::sampling {
 }
 
 // sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load
-// (two lanes to a 16-byte register; dead lanes, not in `live`, read as zero), converted and
-// transposed straight into Float8x2 planes, with about a third of the shuffles that
-// transposing each group and joining the halves takes. The loads replaced two 8-element
-// gathers: on the AMD EPYC Zen 4 host the deferred frame, whose SSAO pass makes 16 such
-// lookups a pixel, read 2% faster (16 alternated pairs, 12 won). The texture must be RGBA16F.
-//
-// Dead lanes cost no memory: a lookup with no live lane reads nothing, a half (eight lanes)
-// with none loads nothing, and a dead lane of a live half loads texel 0, which stays cached,
-// instead of its own (textureWhere). SSAO's stored-normal reads were where this counted,
-// until SSAO read a texel plane in their place (shader/texel_planes.h): only 12-13% of their
-// lanes were live; the deferred frame had read 3.6% faster at 1920x1080 and 0.4% at 640x480
-// (docs/notes/2026-11-30-dead-lanes-ssao-normals.md). No port calls textureWhere now.
+// (two lanes to a 16-byte register), converted and transposed straight into Float8x2 planes,
+// with about a third of the shuffles that transposing each group and joining the halves
+// takes. The loads replaced two 8-element gathers: on the AMD EPYC Zen 4 host the deferred
+// frame, whose SSAO pass then made 16 such lookups a pixel, read 2% faster (16 alternated
+// pairs, 12 won). The texture must be RGBA16F.
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
-                                                         __mmask16 live, simd::Float8x2 out[4]) {
-  if (!live) {
-    for (int c = 0; c < 4; ++c) out[c] = simd::Float8x2(_mm512_setzero_ps());
-    return;
-  }
+                                                         simd::Float8x2 out[4]) {
   const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
   const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
-  const __m512i index =
-      _mm512_maskz_mov_epi32(live, _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x));
+  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
   alignas(64) int at[16];
   storeLaneIndices16(index, at);
   for (int h = 0; h < 2; ++h) {
-    const __mmask8 halfLive = __mmask8(live >> (8 * h));
-    __m512i texel = _mm512_setzero_si512();
-    if (halfLive) texel = _mm512_maskz_mov_epi64(halfLive, loadEightLanes64(texels, at, 8 * h, 8));
+    const __m512i texel = loadEightLanes64(texels, at, 8 * h, 8);
     v[2 * h] = _mm512_cvtph_ps(_mm512_castsi512_si256(texel));
     v[2 * h + 1] = _mm512_cvtph_ps(_mm512_extracti64x4_epi64(texel, 1));
   }

@@ -91,14 +91,6 @@ glsl::vec4<F> lookupColor(const Texture& texture, glsl::vec2<F> uv) {
   return {F::load(out[0]), F::load(out[1]), F::load(out[2]), F::load(out[3])};
 }
 
-// The lookup where only the lanes in `needed` will be used: the others may get any value.
-// The reference reads every lane, as GLSL does.
-template <class F, class M>
-glsl::vec4<F> lookupColorWhere(M needed, const Texture& texture, glsl::vec2<F> uv) {
-  (void)needed;
-  return lookupColor(texture, uv);
-}
-
 inline float lookupCompare(const Texture& depth, glsl::vec2<float> uv, float ref) {
   return compareClamp(depth, uv.x, uv.y, ref);
 }
@@ -191,16 +183,6 @@ template <class F>
 template <class F>
 [[gnu::always_inline]] inline void texturePrefetch(const Sampler2D& sampler, glsl::vec2<F> uv) {
   sampling::prefetchColor(*sampler.texture, uv);
-}
-
-// GLSL: texture(sampler2D, uv) in a port that knows some lanes will never use the result:
-// only the lanes in `needed` get their texel, the others an unspecified value. A shader
-// compiler that worked lane by lane would skip those reads: the memory traffic of lookups
-// whose lanes have already failed a test. (SSAO made its normal reads so, until it read a
-// texel plane in their place.)
-template <class F, class M>
-[[gnu::always_inline]] inline glsl::vec4<F> textureWhere(M needed, const Sampler2D& sampler, glsl::vec2<F> uv) {
-  return sampling::lookupColorWhere(needed, *sampler.texture, uv);
 }
 
 // Not GLSL: value(uv), where `plane` holds value's result at every texel of the textures

@@ -48,22 +48,14 @@ bool compareGrid16(const Texture& depth, simd::Float8x2 s, simd::Float8x2 t, flo
 // The same lookups for 8 lanes at once, bit-identical to sampleColor lane by lane.
 void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Float8 out[4]);
 
-// The same lookups where only the lanes in `live` are needed: the others' results are
-// unspecified (zero where their loads are skipped).
-void sampleColor8(const Texture& texture, simd::Float8 s, simd::Float8 t, simd::Mask8 live, simd::Float8 out[4]);
-
 // Two independent 8-lane lookups at once (Float8x2 shading), each bit-identical to
 // sampleColor8: every texel load of both is issued before either blends, so their cache
-// misses overlap. The second form takes `live` masks as the masked sampleColor8.
+// misses overlap.
 void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], simd::Float8 out[2][4]);
-void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd::Float8 t[2], const simd::Mask8 live[2],
-                    simd::Float8 out[2][4]);
 
 #if RASTER_ZMM_PAIRS
-// The same for Float8x2 in one 512-bit register, with the result in that form too; the
-// second form takes `live` lanes as the masked sampleColor8.
+// The same for Float8x2 in one 512-bit register, with the result in that form too.
 void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Float8x2 out[4]);
-void sampleColor8x2(const Texture& texture, simd::Float8x2 s, simd::Float8x2 t, simd::Mask8x2 live, simd::Float8x2 out[4]);
 #endif
 
 // A texel plane's values at 8 lanes' NEAREST texels (one gather), bit-identical to
@@ -110,7 +102,7 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
                                                                      glsl::vec2<simd::Float8x2> uv) {
 #if RASTER_ZMM_PAIRS
   simd::Float8x2 rgba[4];
-  if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, 0xFFFF, rgba);   // inline (sample_half_avx512.h)
+  if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, rgba);   // inline (sample_half_avx512.h)
   else if (isNearest32(texture)) sampleNearest32Pair(texture, uv.x, uv.y, rgba);   // inline (sample_nearest_avx512.h)
 #if RASTER_RGBA8_ZMM
   else if (isRgba8Bilinear(texture)) sampleRgba8Pair(texture, uv.x, uv.y, rgba);   // inline (sample_rgba8_avx512.h)
@@ -122,29 +114,6 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
   const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
   simd::Float8 rgba[2][4];
   sampleColor8x2(texture, s, t, rgba);
-  return joinHalves(rgba);
-#endif
-}
-
-[[gnu::always_inline]] inline glsl::vec4<simd::Float8> lookupColorWhere(simd::Mask8 needed, const Texture& texture,
-                                                                        glsl::vec2<simd::Float8> uv) {
-  simd::Float8 rgba[4];
-  sampleColor8(texture, uv.x, uv.y, needed, rgba);
-  return {rgba[0], rgba[1], rgba[2], rgba[3]};
-}
-
-[[gnu::always_inline]] inline glsl::vec4<simd::Float8x2> lookupColorWhere(simd::Mask8x2 needed, const Texture& texture,
-                                                                          glsl::vec2<simd::Float8x2> uv) {
-#if RASTER_ZMM_PAIRS
-  simd::Float8x2 rgba[4];
-  if (isHalfNearest(texture)) sampleHalfNearestPair(texture, uv.x, uv.y, needed.k, rgba);   // dead lanes read zero
-  else sampleColor8x2(texture, uv.x, uv.y, needed, rgba);
-  return {rgba[0], rgba[1], rgba[2], rgba[3]};
-#else
-  const simd::Float8 s[2] = {uv.x.low(), uv.x.high()}, t[2] = {uv.y.low(), uv.y.high()};
-  const simd::Mask8 live[2] = {needed.low(), needed.high()};
-  simd::Float8 rgba[2][4];
-  sampleColor8x2(texture, s, t, live, rgba);
   return joinHalves(rgba);
 #endif
 }

@@ -226,6 +226,7 @@ class RasterBackend final : public Backend {
     return {{"triangles_in", double(c.trianglesIn)},         {"triangles_clipped", double(c.trianglesClipped)},
             {"triangles_rejected", double(c.trianglesRejected)}, {"triangles_set_up", double(c.trianglesSetUp)},
             {"tile_bin_entries", double(c.tileBinEntries)},    {"depth_range_walks", double(c.depthRangeWalks)},
+            {"texel_plane_texels", double(c.texelPlaneTexels)},
             {"lane_groups_shaded", double(c.laneGroupsShaded)},
             {"lanes_shaded", double(c.lanesShaded)},           {"lanes_covered", double(c.lanesCovered)},
             {"cycles_vertex", double(c.vertexCycles)},         {"cycles_clip_setup", double(c.setupCycles)},

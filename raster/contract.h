@@ -257,6 +257,7 @@ struct PipelineCounters {
   uint64_t trianglesSetUp = 0;     // that reached the rasterizer (after culling)
   uint64_t tileBinEntries = 0;     // (triangle, tile) pairs binned
   uint64_t depthRangeWalks = 0;    // later triangle ranges of heavy depth-only tiles (tile/depth_ranges.h)
+  uint64_t texelPlaneTexels = 0;   // texels of the texel planes made (shader/texel_planes.h)
   uint64_t laneGroupsShaded = 0;   // fragment-shader invocations (lane groups)
   uint64_t lanesShaded = 0;        // lanes in those groups (pixels + helpers)
   uint64_t lanesCovered = 0;       // shaded lanes that passed coverage and depth (the rest are helpers)

@@ -35,11 +35,13 @@ class ProgramInstance final : public ShaderInstance {
     std::apply([&](auto... entry) { (appendSampled(entry, out), ...); }, Program::kUniformTable);
   }
 
-  void makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) override {
+  size_t makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) override {
     if constexpr (hasTexelPlanes<Program>()) {
       TexelPlaneMaker<typename Program::Uniforms> make(uniforms_, pool, target, scalarLanes);
       Program::texelPlanes(make);
+      return make.texelsMade();
     }
+    return 0;
   }
 
   void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const override {

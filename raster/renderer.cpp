@@ -31,6 +31,7 @@ PipelineCounters& PipelineCounters::operator+=(const PipelineCounters& o) {
   trianglesSetUp += o.trianglesSetUp;
   tileBinEntries += o.tileBinEntries;
   depthRangeWalks += o.depthRangeWalks;
+  texelPlaneTexels += o.texelPlaneTexels;
   laneGroupsShaded += o.laneGroupsShaded;
   lanesShaded += o.lanesShaded;
   lanesCovered += o.lanesCovered;
@@ -135,7 +136,7 @@ void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& 
 
   // Values the fragments would make of single texels, made once a texel (shader/texel_planes.h).
   const uint64_t planesStart = cycleCount();
-  shader->makeTexelPlanes(pool_, framebuffer_, scalarOnly_);
+  counters_.texelPlaneTexels += shader->makeTexelPlanes(pool_, framebuffer_, scalarOnly_);
   counters_.shadeCycles += cycleCount() - planesStart;
 
   // 1. Fetch and vertex shading.

@@ -100,9 +100,9 @@ void printBreakdown(const std::vector<std::pair<std::string, double>>& stats, in
     std::printf("  %-18s %9.3f ms  %5.1f%%\n", stage[0], get(stage[1]) / cyclesPerMs, 100.0 * get(stage[1]) / total);
   const double lanes = get("lanes_shaded"), covered = get("lanes_covered");
   std::printf("  triangles in %.0f, rejected %.0f, clipped %.0f, set up %.0f, tile bin entries %.0f, "
-              "later depth-only ranges %.0f\n",
+              "later depth-only ranges %.0f, texel-plane texels %.0f\n",
               get("triangles_in"), get("triangles_rejected"), get("triangles_clipped"), get("triangles_set_up"),
-              get("tile_bin_entries"), get("depth_range_walks"));
+              get("tile_bin_entries"), get("depth_range_walks"), get("texel_plane_texels"));
   std::printf("  lane groups shaded %.0f, lanes %.0f, helper-lane share %.1f%%, shaded fragments per pixel %.2f\n",
               get("lane_groups_shaded"), lanes, lanes > 0 ? 100.0 * (lanes - covered) / lanes : 0.0, covered / pixels);
 }

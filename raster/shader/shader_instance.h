@@ -34,7 +34,8 @@ class ShaderInstance {
   // Makes the program's texel planes for this draw (shader/texel_planes.h), if it declares
   // any, on `pool`'s threads: before any of its fragments is shaded, while `target` is the
   // pass's framebuffer. With `scalarLanes` in the plain-C++ lanes (the same bits either way).
-  virtual void makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) = 0;
+  // Returns the texels made.
+  virtual size_t makeTexelPlanes(ThreadPool& pool, const Framebuffer& target, bool scalarLanes) = 0;
   // Shades a batch of one instance's vertices into their records of `out`, with the
   // plain-C++ lanes when `scalarLanes` (the same bits either way).
   virtual void shadeVertices(const VertexBatch& batch, ShadedVertices& out, bool scalarLanes) const = 0;

@@ -59,6 +59,9 @@ class TexelPlaneMaker {
 
   // Fills uniforms.*plane with value(uniforms, uv at each texel's centre), where the sources
   // allow (the file header); otherwise leaves it empty.
+  // The texels of the planes made so far.
+  size_t texelsMade() const { return texelsMade_; }
+
   template <class Value>
   void operator()(TexelPlane Uniforms::*plane, std::initializer_list<Sampler2D Uniforms::*> sources, Value value) {
     TexelPlane& out = uniforms_.*plane;
@@ -76,6 +79,7 @@ class TexelPlaneMaker {
     out.wrapS = shape->sampler.wrapS;
     out.wrapT = shape->sampler.wrapT;
     out.values.resize(size_t(out.width) * size_t(out.height));
+    texelsMade_ += out.values.size();
     if (scalarLanes_) fill<ScalarLanes>(out, value);
 #if RASTER_AVX2
     else fill<PairedLanes>(out, value);
@@ -113,6 +117,7 @@ class TexelPlaneMaker {
   }
 
   Uniforms& uniforms_;
+  size_t texelsMade_ = 0;
   ThreadPool& pool_;
   const Framebuffer& target_;
   bool scalarLanes_;

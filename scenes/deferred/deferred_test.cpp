@@ -20,6 +20,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <string>
 
@@ -84,6 +85,17 @@ TEST_SUITE("scene_deferred") {
   }
   TEST_CASE("t = 3.7 at 640x480 matches llvmpipe pass by pass") { checkAgainstLlvmpipe(3.7f, 640, 480); }
   TEST_CASE("t = 2.2 at an odd size, 333x217, matches llvmpipe") { checkAgainstLlvmpipe(2.2f, 333, 217); }
+
+  // The SSAO pass's speed rests on its texel plane (shader/texel_planes.h); a condition that
+  // stopped it being made would change no byte, only this count.
+  TEST_CASE("the SSAO draw makes one texel plane of the G-buffer's size a frame") {
+    const std::unique_ptr<scenes::Backend> ours = scenes::makeRasterBackend(2);
+    renderScene(*ours, "deferred", 1.0f, 333, 217);
+    double texels = -1;
+    for (const auto& [name, value] : ours->statistics())
+      if (name == "texel_plane_texels") texels = value;
+    CHECK(texels == 333.0 * 217.0);
+  }
 
   // Skipped under AddressSanitizer: softpipe renders this scene in about 8 s a frame, and
   // under ASan's interceptors this case took most of the suite's 20 minutes, the whole ASan

@@ -57,11 +57,11 @@ class TexelPlaneMaker {
   TexelPlaneMaker(Uniforms& uniforms, ThreadPool& pool, const Framebuffer& target, bool scalarLanes)
       : uniforms_(uniforms), pool_(pool), target_(target), scalarLanes_(scalarLanes) {}
 
-  // Fills uniforms.*plane with value(uniforms, uv at each texel's centre), where the sources
-  // allow (the file header); otherwise leaves it empty.
   // The texels of the planes made so far.
   size_t texelsMade() const { return texelsMade_; }
 
+  // Fills uniforms.*plane with value(uniforms, uv at each texel's centre), where the sources
+  // allow (the file header); otherwise leaves it empty.
   template <class Value>
   void operator()(TexelPlane Uniforms::*plane, std::initializer_list<Sampler2D Uniforms::*> sources, Value value) {
     TexelPlane& out = uniforms_.*plane;
@@ -117,10 +117,10 @@ class TexelPlaneMaker {
   }
 
   Uniforms& uniforms_;
-  size_t texelsMade_ = 0;
   ThreadPool& pool_;
   const Framebuffer& target_;
   bool scalarLanes_;
+  size_t texelsMade_ = 0;
 };
 
 // Whether a port declares texel planes (static void texelPlanes(TexelPlaneMaker<Uniforms>&)).

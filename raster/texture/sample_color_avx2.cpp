@@ -388,7 +388,17 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
       out[h][1] = out[h][2] = simd::Float8(0.0f);
       out[h][3] = simd::Float8(1.0f);
     }
-  } else {   // RGBA32F targets are sampled only by tests, and depth LINEAR: the scalar reference per lane
+  } else if (texture.format == TexelFormat::RGBA32F && lookupFilter(texture) == Filter::Nearest) {
+    // A small float table read texel by texel (pbr's 4x4 SSAO rotation noise, once a pixel):
+    // each channel one gather at the float path's NEAREST index.
+    const float* texels = texture.f32.data();
+    for (int h = 0; h < N; ++h) {
+      const __m256i x = wrapNearest(sv[h], texture.width, texture.sampler.wrapS, false);
+      const __m256i y = wrapNearest(tv[h], texture.height, texture.sampler.wrapT, false);
+      const __m256i first = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(y, splat(texture.width)), x), 2);
+      for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(_mm256_i32gather_ps(texels + c, first, 4));
+    }
+  } else {   // RGBA32F LINEAR (sampled only by tests) and depth LINEAR: the scalar reference per lane
     for (int h = 0; h < N; ++h) {
       alignas(32) float ss[8], ts[8], planes[4][8];
       s[h].store(ss);

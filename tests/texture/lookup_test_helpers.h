@@ -19,12 +19,13 @@ namespace gltest {
 // NaN's sign survives an fma of NaNs may differ).
 inline bool sameLookup(float got, float ref) { return bitsOf(got) == bitsOf(ref) || (std::isnan(got) && std::isnan(ref)); }
 
-// A w x h texture of random texels: any RGBA8 bytes, or halves of values in [-8, 8]. A grey
+// A w x h texture of random texels: any RGBA8 bytes, or halves or floats of values in [-8, 8]. A grey
 // one has r = g = b and alpha 255 at every texel, and so also the samplers' one-byte copy.
 inline raster::Texture randomTexture(std::mt19937& rng, int w, int h, raster::TexelFormat format, bool grey = false) {
   raster::Texture tex(w, h, format);
   for (uint8_t& b : tex.rgba8) b = uint8_t(rng());
   for (uint16_t& v : tex.half) v = raster::format::halfFromFloatTowardZero(uniform(rng, -8.0f, 8.0f));
+  for (float& v : tex.f32) v = uniform(rng, -8.0f, 8.0f);
   for (uint32_t& code : tex.depth) code = uint32_t(rng()) & (format == raster::TexelFormat::Depth24 ? 0xFFFFFFu : 0xFFFFu);
   if (grey) {
     for (size_t i = 0; i < tex.rgba8.size(); i += 4) {

@@ -31,11 +31,12 @@ TEST_SUITE("texture") {
     methods.filter = method;
     const raster::ScopedMethods scoped(methods);
     // RGBA8 in rows and kept in strips alone (as uploads are where the 16-lane lookup reads
-    // strips, footprint_strips.h), RGBA16F, and grey RGBA8 (with the one-byte copy the AVX2
-    // sampler reads).
+    // strips, footprint_strips.h), RGBA16F, RGBA32F, and grey RGBA8 (with the one-byte copy
+    // the AVX2 sampler reads).
     for (const auto& [format, grey, strips] : {std::tuple{raster::TexelFormat::RGBA8, false, false},
                                                std::tuple{raster::TexelFormat::RGBA8, false, true},
                                                std::tuple{raster::TexelFormat::RGBA16F, false, false},
+                                               std::tuple{raster::TexelFormat::RGBA32F, false, false},
                                                std::tuple{raster::TexelFormat::RGBA8, true, false}}) {
       for (const auto& [w, h] : {std::pair{16, 8}, std::pair{13, 7}, std::pair{1, 1}, std::pair{64, 3}, std::pair{3, 1001},
                                  std::pair{16384, 1}}) {
@@ -104,7 +105,7 @@ TEST_SUITE("texture") {
     long mismatches = 0, lookups = 0, awayFromEdge = 0, repeatInline = 0;
     // RGBA8 under both filter methods (the 16-lane inline lookup is the 8-bit one), grey,
     // and kept in strips alone, as uploaded RGBA8 textures are (footprint_strips.h); depth
-    // codes read through sampler2D (NEAREST inline, sample_nearest_avx512.h).
+    // codes read through sampler2D (NEAREST inline, sample_nearest_avx512.h); RGBA32F.
     struct Variant {
       raster::TexelFormat format;
       bool grey;
@@ -118,7 +119,8 @@ TEST_SUITE("texture") {
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float},
                                   Variant{raster::TexelFormat::RGBA8, false, raster::FilterMethod::Float, true},
                                   Variant{raster::TexelFormat::Depth24, false, raster::FilterMethod::Unorm8},
-                                  Variant{raster::TexelFormat::Depth16, false, raster::FilterMethod::Unorm8}}) {
+                                  Variant{raster::TexelFormat::Depth16, false, raster::FilterMethod::Unorm8},
+                                  Variant{raster::TexelFormat::RGBA32F, false, raster::FilterMethod::Unorm8}}) {
       const raster::TexelFormat format = variant.format;
       raster::MethodSet methods;
       methods.filter = variant.method;

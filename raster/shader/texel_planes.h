@@ -99,7 +99,7 @@ class TexelPlaneMaker {
   void fill(TexelPlane& plane, Value& value) {
     const int width = plane.width, height = plane.height;
     const int padded = (width + F::kCount - 1) / F::kCount * F::kCount;
-    std::vector<float> columns(size_t(padded) + F::kCount);
+    std::vector<float> columns(static_cast<size_t>(padded));
     for (int x = 0; x < padded; ++x) columns[size_t(x)] = (float(std::min(x, width - 1)) + 0.5f) / float(width);
     const int bands = std::min(height, 8 * pool_.threads());
     pool_.parallelFor(bands, [&](int band) {

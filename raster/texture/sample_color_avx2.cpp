@@ -67,6 +67,12 @@ __m256i wrapNearest(__m256 coord, int size, Wrap wrap, bool floorClamp) {
   return clampInt(floorClamp ? floorToInt(scaled) : _mm256_cvttps_epi32(scaled), 0, size - 1);
 }
 
+// The texel (y * width + x) a NEAREST lookup of the float path at (s, t) reads, for 8 lanes.
+__m256i nearestTexelIndex8(__m256 s, __m256 t, int width, int height, Wrap wrapS, Wrap wrapT) {
+  const __m256i x = wrapNearest(s, width, wrapS, false), y = wrapNearest(t, height, wrapT, false);
+  return _mm256_add_epi32(_mm256_mullo_epi32(y, splat(width)), x);
+}
+
 // lerp8 with pmulhrsw: a + floor((w * (b - a) * 128 + 16384) / 32768), per 32-bit lane,
 // given weight128 = w * 128. pmulhrsw computes exactly that rounding on 16-bit values, and
 // b - a (-255..255) and w * 128 (0..32640) fit 16 bits: the low half of each lane gets the
@@ -381,9 +387,8 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
     const int* codes = reinterpret_cast<const int*>(texture.depth.data());
     const __m256 scale = splat(depthCodeScale(texture));
     for (int h = 0; h < N; ++h) {
-      const __m256i x = wrapNearest(sv[h], texture.width, texture.sampler.wrapS, false);
-      const __m256i y = wrapNearest(tv[h], texture.height, texture.sampler.wrapT, false);
-      const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(texture.width)), x);
+      const __m256i index =
+          nearestTexelIndex8(sv[h], tv[h], texture.width, texture.height, texture.sampler.wrapS, texture.sampler.wrapT);
       out[h][0] = simd::Float8(_mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_i32gather_epi32(codes, index, 4)), scale));
       out[h][1] = out[h][2] = simd::Float8(0.0f);
       out[h][3] = simd::Float8(1.0f);
@@ -393,9 +398,8 @@ void sampleColorN(const Texture& texture, const simd::Float8* s, const simd::Flo
     // each channel one gather at the float path's NEAREST index.
     const float* texels = texture.f32.data();
     for (int h = 0; h < N; ++h) {
-      const __m256i x = wrapNearest(sv[h], texture.width, texture.sampler.wrapS, false);
-      const __m256i y = wrapNearest(tv[h], texture.height, texture.sampler.wrapT, false);
-      const __m256i first = _mm256_slli_epi32(_mm256_add_epi32(_mm256_mullo_epi32(y, splat(texture.width)), x), 2);
+      const __m256i first = _mm256_slli_epi32(
+          nearestTexelIndex8(sv[h], tv[h], texture.width, texture.height, texture.sampler.wrapS, texture.sampler.wrapT), 2);
       for (int c = 0; c < 4; ++c) out[h][c] = simd::Float8(_mm256_i32gather_ps(texels + c, first, 4));
     }
   } else {   // RGBA32F LINEAR (sampled only by tests) and depth LINEAR: the scalar reference per lane
@@ -504,8 +508,7 @@ void sampleColor8x2(const Texture& texture, const simd::Float8 s[2], const simd:
 }
 
 simd::Float8 samplePlane8(const TexelPlane& plane, simd::Float8 s, simd::Float8 t) {
-  const __m256i x = wrapNearest(s.v, plane.width, plane.wrapS, false), y = wrapNearest(t.v, plane.height, plane.wrapT, false);
-  const __m256i index = _mm256_add_epi32(_mm256_mullo_epi32(y, splat(plane.width)), x);
+  const __m256i index = nearestTexelIndex8(s.v, t.v, plane.width, plane.height, plane.wrapS, plane.wrapT);
   return simd::Float8(_mm256_i32gather_ps(plane.values.data(), index, 4));
 }
 

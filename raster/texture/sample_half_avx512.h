@@ -60,6 +60,12 @@ namespace raster::sampling {
   return _mm512_min_epi32(_mm512_max_epi32(index, _mm512_setzero_si512()), last);
 }
 
+// The texel (y * width + x) a NEAREST lookup at (s, t) reads, for sixteen lanes.
+[[gnu::always_inline]] inline __m512i nearestTexelIndex16(__m512 s, __m512 t, int width, int height, Wrap wrapS, Wrap wrapT) {
+  const __m512i x = wrapNearest16(s, width, wrapS), y = wrapNearest16(t, height, wrapT);
+  return _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(width)), x);
+}
+
 // sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load
 // (two lanes to a 16-byte register), converted and transposed straight into Float8x2 planes,
 // with about a third of the shuffles that transposing each group and joining the halves
@@ -68,9 +74,7 @@ namespace raster::sampling {
 // pairs, 12 won). The texture must be RGBA16F.
 [[gnu::always_inline]] inline void sampleHalfNearestPair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                          simd::Float8x2 out[4]) {
-  const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
-  const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
-  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
+  const __m512i index = nearestTexelIndex16(s.v, tc.v, t.width, t.height, t.sampler.wrapS, t.sampler.wrapT);
   const long long* texels = reinterpret_cast<const long long*>(t.half.data());
   __m512 v[4];   // texels of lanes 4k..4k + 3, r g b a each
   alignas(64) int at[16];

@@ -107,9 +107,7 @@ inline bool isNearest32(const Texture& t) {
 // One 32-bit texel a lane (an RGBA8 texel or a depth code) as float channels.
 [[gnu::always_inline]] inline void sampleNearest32Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
                                                        simd::Float8x2 out[4]) {
-  const __m512i x = wrapNearest16(s.v, t.width, t.sampler.wrapS);
-  const __m512i y = wrapNearest16(tc.v, t.height, t.sampler.wrapT);
-  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
+  const __m512i index = nearestTexelIndex16(s.v, tc.v, t.width, t.height, t.sampler.wrapS, t.sampler.wrapT);
   texelChannels32(t, loadTexels32(texels32(t), index, t.width), out);
 }
 
@@ -117,9 +115,7 @@ inline bool isNearest32(const Texture& t) {
 // as every NEAREST lookup here computes it: one 4-byte load a lane, or four row loads where
 // the lanes read a 4x4 block.
 [[gnu::always_inline]] inline simd::Float8x2 samplePlanePair(const TexelPlane& plane, simd::Float8x2 s, simd::Float8x2 tc) {
-  const __m512i x = wrapNearest16(s.v, plane.width, plane.wrapS);
-  const __m512i y = wrapNearest16(tc.v, plane.height, plane.wrapT);
-  const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(plane.width)), x);
+  const __m512i index = nearestTexelIndex16(s.v, tc.v, plane.width, plane.height, plane.wrapS, plane.wrapT);
   const uint32_t* values = reinterpret_cast<const uint32_t*>(plane.values.data());
   return simd::Float8x2(_mm512_castsi512_ps(loadTexels32(values, index, plane.width)));
 }

@@ -15,7 +15,7 @@
 // The strips are 4/3 of the texture and hold every texel, so an uploaded texture keeps
 // them instead of its rows (releaseRows): every reader of a texel then finds it through
 // rgba8Texel below (the reference sampler, pixel history) or the same unit arithmetic in
-// vector form (sample_color_avx2.cpp, sample_rgba8_avx512.h). The copy is made at upload,
+// vector form (sample_rgba8_avx2.h, sample_rgba8_avx512.h). The copy is made at upload,
 // and the rows come back (restoreRows) when the texture becomes a render target
 // (backends/raster_backend.cpp), whose writers write rows. Keeping both had put the deferred
 // scene's peak memory at 1920x1080 above llvmpipe's (docs/notes/2026-12-01-peak-memory.md).

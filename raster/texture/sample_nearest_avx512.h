@@ -3,8 +3,8 @@
 // through sampler2D, and its blur an RGBA8 target 9 times (a line of taps that share their
 // loads: sampleNearest32Line). Inline, so that a port's lookup costs no call and no trip of
 // four channel planes through memory, and the shader's compiler drops the channels it never
-// reads (both read r only). The wraps and conversions are the
-// 8-lane sampler's (sample_color_avx2.cpp: sampleRgba8, sampleRgba8Float and its depth
+// reads (both read r only). The wraps and conversions are the 8-lane sampler's
+// (sample_rgba8_avx2.h: sampleRgba8; sample_color_avx2.cpp: sampleRgba8Float and its depth
 // branch) on 16 lanes at once, so every value is the same:
 //   - RGBA8: each channel as unorm8 * float(1/255). The fixed-point path floors before its
 //     CLAMP_TO_EDGE clamp and the float path truncates; the clamp to [0, size - 1] makes the

@@ -2,7 +2,7 @@
 // held in one 512-bit register: the G-buffer's material maps, sixteen lanes at a time.
 // Inline, so that a port's lookup costs no call and no trip of its four channels through
 // memory, and the shader's compiler drops the channels it never reads. The taps, weights
-// and lerps are the 8-lane sampler's (sample_color_avx2.cpp, sampleRgba8, grey copies too)
+// and lerps are the 8-lane sampler's (sample_rgba8_avx2.h, sampleRgba8, grey copies too)
 // on 16 lanes at once, so every value is the same. An uploaded texture's footprints are
 // read from its strip copy (footprint_strips.h) where all 16 have neighbouring rows.
 #pragma once
@@ -23,7 +23,7 @@ struct FixedTaps16 {
   __m512i x0, x1, weight;   // the two texels along one axis and x1's weight in 1/256
 };
 
-// wrapLinearFixed of sample_color_avx2.cpp on 16 lanes: the coordinate in 24.8 fixed point,
+// wrapLinearFixed of sample_rgba8_avx2.h on 16 lanes: the coordinate in 24.8 fixed point,
 // half a texel back, then wrapped or clamped.
 [[gnu::always_inline]] inline FixedTaps16 wrapLinearFixed16(__m512 coord, int size, Wrap wrap) {
   const __m512i last = _mm512_set1_epi32(size - 1), one = _mm512_set1_epi32(1), low8 = _mm512_set1_epi32(255);
@@ -55,7 +55,7 @@ struct FixedTaps16 {
   return taps;
 }
 
-// a + floor((w * (b - a) * 128 + 16384) / 32768) per 32-bit lane (sample_color_avx2.cpp's
+// a + floor((w * (b - a) * 128 + 16384) / 32768) per 32-bit lane (sample_rgba8_avx2.h's
 // lerp8: pmulhrsw on the low 16 bits, the final & 0xFF removing a negative step's carry).
 [[gnu::always_inline]] inline __m512i lerp8x16(__m512i weight128, __m512i a, __m512i b) {
   return _mm512_and_si512(_mm512_add_epi32(a, _mm512_mulhrs_epi16(_mm512_sub_epi32(b, a), weight128)),

@@ -1,9 +1,9 @@
 // The lookups for Float8 and Float8x2 lanes (AVX2 gathers and F16C; AVX-512 where built):
 // overloads of sampler.h's sampling::lookup*() names, each bit-identical to the reference
-// lane for lane. The 8-lane samplers live in sample_color_avx2.cpp and
-// sample_compare_avx2.cpp, the 16-lane PCF grids in sample_compare_avx512.cpp; Float8x2
-// lookups issue both groups' texel loads before either blends, so their cache misses
-// overlap.
+// lane for lane. The 8-lane samplers live in sample_color_avx2.cpp (with
+// sample_rgba8_avx2.h) and sample_compare_avx2.cpp, the 16-lane PCF grids in
+// sample_compare_avx512.cpp; Float8x2 lookups issue both groups' texel loads before either
+// blends, so their cache misses overlap.
 #pragma once
 
 #include "raster/simd/isa.h"

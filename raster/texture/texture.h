@@ -108,7 +108,7 @@ inline constexpr size_t kGreyCopyPadding = 3;
 // when the texels allow it (returns whether they did) and dropped when the texture becomes
 // a render target (dropGreyCopy, from the backend's createFramebuffer), so it never goes
 // stale. The values sampled from it are the same bits: the vector samplers
-// (sample_color_avx2.cpp, sample_rgba8_avx512.h) filter the one channel as they would each
+// (sample_rgba8_avx2.h, sample_rgba8_avx512.h) filter the one channel as they would each
 // of r, g and b, and alpha is 255.
 inline bool makeGreyCopy(Texture& t) {
   t.grey8 = {};

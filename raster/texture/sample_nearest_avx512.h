@@ -89,26 +89,46 @@ inline bool isNearest32(const Texture& t) {
   return t.isDepth() ? t.depth.data() : reinterpret_cast<const uint32_t*>(t.rgba8.data());
 }
 
-// Sixteen 32-bit texels of t (an RGBA8 texel or a depth code each) as float channels.
-[[gnu::always_inline]] inline void texelChannels32(const Texture& t, __m512i texel, simd::Float8x2 out[4]) {
-  if (t.isDepth()) {
-    out[0] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(texel), _mm512_set1_ps(depthCodeScale(t))));
-    out[1] = out[2] = simd::Float8x2(0.0f);
-    out[3] = simd::Float8x2(1.0f);
+// How isNearest32 texture t's 32-bit texels become channels: a depth code times its scale,
+// or four unorm8 bytes. Read from the texture once, before a lookup's stores: a store of a
+// vector may alias anything, so a field read after it is read again from memory.
+struct Texel32Format {
+  bool depth;
+  float depthScale;
+};
+[[gnu::always_inline]] inline Texel32Format texel32Format(const Texture& t) {
+  return {t.isDepth(), t.isDepth() ? depthCodeScale(t) : 0.0f};
+}
+
+// Channel c (0-3: r, g, b, a) of a four-channel value: a plane array or a vec4.
+[[gnu::always_inline]] inline simd::Float8x2& channel(simd::Float8x2* planes, int c) { return planes[c]; }
+[[gnu::always_inline]] inline simd::Float8x2& channel(glsl::vec4<simd::Float8x2>& v, int c) {
+  return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w;
+}
+
+// Sixteen 32-bit texels (an RGBA8 texel or a depth code each) as float channels.
+template <class Channels>
+[[gnu::always_inline]] inline void texelChannels32(Texel32Format format, __m512i texel, Channels&& out) {
+  if (format.depth) {
+    channel(out, 0) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(texel), _mm512_set1_ps(format.depthScale)));
+    channel(out, 1) = channel(out, 2) = simd::Float8x2(0.0f);
+    channel(out, 3) = simd::Float8x2(1.0f);
     return;
   }
   const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
   for (int c = 0; c < 4; ++c) {
     const __m512i value = _mm512_and_si512(_mm512_srli_epi32(texel, 8 * c), _mm512_set1_epi32(0xFF));
-    out[c] = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
+    channel(out, c) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
   }
 }
 
-// One 32-bit texel a lane (an RGBA8 texel or a depth code) as float channels.
+// One 32-bit texel a lane (an RGBA8 texel or a depth code) as float channels: into planes
+// (Float8x2 out[4]) or a vec4.
+template <class Channels>
 [[gnu::always_inline]] inline void sampleNearest32Pair(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
-                                                       simd::Float8x2 out[4]) {
+                                                       Channels&& out) {
   const __m512i index = nearestTexelIndex16(s.v, tc.v, t.width, t.height, t.sampler.wrapS, t.sampler.wrapT);
-  texelChannels32(t, loadTexels32(texels32(t), index, t.width), out);
+  texelChannels32(texel32Format(t), loadTexels32(texels32(t), index, t.width), out);
 }
 
 // A texel plane's values (sampler.h, TexelPlane) at sixteen lanes' NEAREST texels, its index
@@ -135,7 +155,7 @@ inline bool isNearest32(const Texture& t) {
 // texel (floor(0 * size) = 0 in every wrap), so that axis's index is computed once.
 template <int N>
 [[gnu::always_inline]] inline bool sampleNearest32Line(const Texture& t, simd::Float8x2 s, simd::Float8x2 tc,
-                                                       glm::vec2 step, simd::Float8x2 (&out)[N][4]) {
+                                                       glm::vec2 step, glsl::vec4<simd::Float8x2> (&out)[N]) {
   constexpr int R = N / 2;
   static_assert(N % 2 == 1 && N <= 13, "a window of 4 + 2R texels fits one 512-bit register");
   const bool alongX = step.y == 0.0f, alongY = step.x == 0.0f;
@@ -145,24 +165,41 @@ template <int N>
   const int size = alongX ? t.width : t.height;
   const Wrap wrap = alongX ? t.sampler.wrapS : t.sampler.wrapT;
   // The coordinates along the line exactly as the lone lookups compute them: uv + step * i,
-  // uv - step * i.
-  __m512i line[N];
-  line[R] = wrapNearest16(along, size, wrap);
-  __mmask16 apart = 0xFFFF;   // lanes whose taps are each 1 texel beyond the last
-  for (int i = 1; i <= R; ++i) {
-    const __m512 offset = _mm512_set1_ps(stride * float(i));
-    line[R + i] = wrapNearest16(_mm512_add_ps(along, offset), size, wrap);
-    line[R - i] = wrapNearest16(_mm512_sub_ps(along, offset), size, wrap);
-    apart &= _mm512_cmpeq_epi32_mask(line[R + i], _mm512_add_epi32(line[R], _mm512_set1_epi32(i)));
-    apart &= _mm512_cmpeq_epi32_mask(line[R - i], _mm512_sub_epi32(line[R], _mm512_set1_epi32(i)));
+  // uv - step * i; `apart`: the lanes where each tap lands i texels from the centre's.
+  const __m512i centreIndex = wrapNearest16(along, size, wrap);
+  __mmask16 apart = 0xFFFF;
+  if (wrap == Wrap::ClampToEdge) {
+    // There a tap's texel is its truncated coordinate clamped to [0, size - 1]. Where the
+    // truncation is the centre's plus i and every tap's texel lies inside (the centre at
+    // least R from either end), the clamp changes nothing: the truncations alone are
+    // compared, and the ends tested once.
+    const __m512 sizeF = _mm512_set1_ps(float(size));
+    apart = _mm512_cmpge_epi32_mask(centreIndex, _mm512_set1_epi32(R)) &
+            _mm512_cmple_epi32_mask(centreIndex, _mm512_set1_epi32(size - 1 - R));
+    for (int i = 1; i <= R; ++i) {
+      const __m512 offset = _mm512_set1_ps(stride * float(i));
+      const __m512i ahead = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_add_ps(along, offset), sizeF));
+      const __m512i behind = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_sub_ps(along, offset), sizeF));
+      apart &= _mm512_cmpeq_epi32_mask(ahead, _mm512_add_epi32(centreIndex, _mm512_set1_epi32(i)));
+      apart &= _mm512_cmpeq_epi32_mask(behind, _mm512_sub_epi32(centreIndex, _mm512_set1_epi32(i)));
+    }
+  } else {
+    for (int i = 1; i <= R; ++i) {
+      const __m512 offset = _mm512_set1_ps(stride * float(i));
+      apart &= _mm512_cmpeq_epi32_mask(wrapNearest16(_mm512_add_ps(along, offset), size, wrap),
+                                       _mm512_add_epi32(centreIndex, _mm512_set1_epi32(i)));
+      apart &= _mm512_cmpeq_epi32_mask(wrapNearest16(_mm512_sub_ps(along, offset), size, wrap),
+                                       _mm512_sub_epi32(centreIndex, _mm512_set1_epi32(i)));
+    }
   }
   const __m512i across = alongX ? wrapNearest16(tc.v, t.height, t.sampler.wrapT) : wrapNearest16(s.v, t.width, t.sampler.wrapS);
-  const __m512i x = alongX ? line[R] : across, y = alongX ? across : line[R];
+  const __m512i x = alongX ? centreIndex : across, y = alongX ? across : centreIndex;
   const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(t.width)), x);
   int first;
   if ((apart & lanesInBlock16(index, t.width, first)) != 0xFFFF) return false;
   // From here every texel read is some tap's: the block's 4x4 texels moved by -R..R.
   const uint32_t* centre = texels32(t) + first;
+  const Texel32Format format = texel32Format(t);
   if (alongX) {
     // rows[r]: texels -R .. 3 + R of the block's row r (a masked load reads no further).
     constexpr __mmask16 kWindow = __mmask16((1u << (4 + 2 * R)) - 1);
@@ -174,7 +211,7 @@ template <int N>
       const __m512i pick = _mm512_setr_epi32(c, c + 1, 16 + c, 17 + c, c + 2, c + 3, 18 + c, 19 + c, 0, 0, 0, 0, 0, 0, 0, 0);
       const __m512i low = _mm512_permutex2var_epi32(rows[0], pick, rows[1]);
       const __m512i high = _mm512_permutex2var_epi32(rows[2], pick, rows[3]);
-      texelChannels32(t, _mm512_inserti64x4(low, _mm512_castsi512_si256(high), 1), out[i + R]);
+      texelChannels32(format, _mm512_inserti64x4(low, _mm512_castsi512_si256(high), 1), out[i + R]);
     }
     return true;
   }
@@ -187,7 +224,7 @@ template <int N>
     row = next;
   }
   for (int i = -R; i <= R; ++i)
-    texelChannels32(t, _mm512_inserti64x4(_mm512_castsi256_si512(halves[i + R]), halves[i + R + 2], 1), out[i + R]);
+    texelChannels32(format, _mm512_inserti64x4(_mm512_castsi256_si512(halves[i + R]), halves[i + R + 2], 1), out[i + R]);
   return true;
 }
 

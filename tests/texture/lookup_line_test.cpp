@@ -74,7 +74,7 @@ TEST_SUITE("texture") {
                 raster::textureLine<R>(sampler, uv, step, taps);
 #if RASTER_ZMM_PAIRS
                 if constexpr (kLanes == 16) {
-                  raster::simd::Float8x2 planes[N][4];
+                  raster::glsl::vec4<raster::simd::Float8x2> planes[N];
                   const bool shared = raster::sampling::isNearest32(tex) &&
                                       raster::sampling::sampleNearest32Line(tex, uv.x, uv.y, step, planes);
                   counts.sharedAlongX += shared && step.y == 0.0f;

@@ -101,8 +101,8 @@ struct Texel32Format {
 }
 
 // Channel c (0-3: r, g, b, a) of a four-channel value: a plane array or a vec4.
-[[gnu::always_inline]] inline simd::Float8x2& channel(simd::Float8x2* planes, int c) { return planes[c]; }
-[[gnu::always_inline]] inline simd::Float8x2& channel(glsl::vec4<simd::Float8x2>& v, int c) {
+[[gnu::always_inline]] inline simd::Float8x2& channelRef(simd::Float8x2* planes, int c) { return planes[c]; }
+[[gnu::always_inline]] inline simd::Float8x2& channelRef(glsl::vec4<simd::Float8x2>& v, int c) {
   return c == 0 ? v.x : c == 1 ? v.y : c == 2 ? v.z : v.w;
 }
 
@@ -110,15 +110,15 @@ struct Texel32Format {
 template <class Channels>
 [[gnu::always_inline]] inline void texelChannels32(Texel32Format format, __m512i texel, Channels&& out) {
   if (format.depth) {
-    channel(out, 0) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(texel), _mm512_set1_ps(format.depthScale)));
-    channel(out, 1) = channel(out, 2) = simd::Float8x2(0.0f);
-    channel(out, 3) = simd::Float8x2(1.0f);
+    channelRef(out, 0) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(texel), _mm512_set1_ps(format.depthScale)));
+    channelRef(out, 1) = channelRef(out, 2) = simd::Float8x2(0.0f);
+    channelRef(out, 3) = simd::Float8x2(1.0f);
     return;
   }
   const __m512 kUnorm8 = _mm512_set1_ps(float(1.0 / 255.0));
   for (int c = 0; c < 4; ++c) {
     const __m512i value = _mm512_and_si512(_mm512_srli_epi32(texel, 8 * c), _mm512_set1_epi32(0xFF));
-    channel(out, c) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
+    channelRef(out, c) = simd::Float8x2(_mm512_mul_ps(_mm512_cvtepi32_ps(value), kUnorm8));
   }
 }
 

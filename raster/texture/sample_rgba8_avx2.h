@@ -8,10 +8,10 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/simd/lanes_avx2.h"
 #include "raster/texture/footprint_strips.h"
-#include "raster/texture/wrap_avx2.h"
 #include "raster/texture/linear_taps_avx2.h"
 #include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
+#include "raster/texture/wrap_avx2.h"
 
 namespace raster::sampling::avx2 {
 

@@ -21,6 +21,7 @@
 #include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
+#include "raster/texture/wrap_avx512.h"
 
 namespace raster::sampling {
 
@@ -41,29 +42,6 @@ namespace raster::sampling {
   if (_mm512_cmpneq_epi32_mask(low, first) | _mm512_cmpneq_epi32_mask(high, first)) return nullptr;
   const uint32_t tile = uint32_t(_mm_cvtsi128_si32(_mm512_castsi512_si128(low)));
   return tiles.cleared[size_t(tile >> 16) * size_t(tiles.tilesX) + (tile & 0xFFFFu)] ? tiles.value : nullptr;
-}
-
-// The texel index along one axis for NEAREST, as the 8-lane wrapNearest of the float path
-// (no floor before the CLAMP_TO_EDGE clamp): REPEAT of a power-of-two size masks the
-// floored coordinate, of another size scales the fraction (at most 0.99999994, NaN too);
-// both clamp a truncated index to [0, size - 1].
-[[gnu::always_inline]] inline __m512i wrapNearest16(__m512 coord, int size, Wrap wrap) {
-  const __m512 sizeF = _mm512_set1_ps(float(size));
-  const __m512i last = _mm512_set1_epi32(size - 1);
-  if (wrap == Wrap::Repeat && size > 0 && (size & (size - 1)) == 0)
-    return _mm512_and_si512(_mm512_cvttps_epi32(_mm512_floor_ps(_mm512_mul_ps(coord, sizeF))), last);
-  if (wrap == Wrap::Repeat) {
-    const __m512 fraction = _mm512_min_ps(_mm512_sub_ps(coord, _mm512_floor_ps(coord)), _mm512_set1_ps(0.99999994f));
-    coord = fraction;
-  }
-  const __m512i index = _mm512_cvttps_epi32(_mm512_mul_ps(coord, sizeF));
-  return _mm512_min_epi32(_mm512_max_epi32(index, _mm512_setzero_si512()), last);
-}
-
-// The texel (y * width + x) a NEAREST lookup at (s, t) reads, for sixteen lanes.
-[[gnu::always_inline]] inline __m512i nearestTexelIndex16(__m512 s, __m512 t, int width, int height, Wrap wrapS, Wrap wrapT) {
-  const __m512i x = wrapNearest16(s, width, wrapS), y = wrapNearest16(t, height, wrapT);
-  return _mm512_add_epi32(_mm512_mullo_epi32(y, _mm512_set1_epi32(width)), x);
 }
 
 // sampleHalfNearest for two groups at once: each lane's 64-bit texel read with a scalar load

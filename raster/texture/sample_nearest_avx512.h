@@ -22,6 +22,7 @@
 #include "raster/texture/sample_half_avx512.h"
 #include "raster/texture/sampler.h"
 #include "raster/texture/texture.h"
+#include "raster/texture/wrap_avx512.h"
 #include "raster/tile/lane_layout.h"
 
 namespace raster::sampling {

@@ -1,11 +1,13 @@
 // C++ port of post.vert / ssao.frag (10 - Deferred Shading, SSAO pass), line by line; the
-// sample loop is split in three, with the same operations per sample (see fragment()), and
-// what a sample makes of the two G-buffer texels it reads is one function, storedViewZ,
-// which the pipeline evaluates once a texel (texelPlanes). Per-lane branches run under
-// masks: both sides are computed and select() keeps the one GLSL would take, which gives
-// the same values lane by lane.
+// sample loop is split in three, with the same operations per sample (see shade()), what a
+// sample makes of the two G-buffer texels it reads is one function, storedViewZ, which the
+// pipeline evaluates once a texel (texelPlanes), and each sample's projection leaves out
+// u_proj's zero entries where that gives the same bits (projectSample). Per-lane branches
+// run under masks: both sides are computed and select() keeps the one GLSL would take,
+// which gives the same values lane by lane.
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 #include "raster/shader/program.h"
@@ -30,6 +32,9 @@ struct SsaoPass : PostProgram {
     raster::Sampler2D ssao_g_normal, ssao_g_worldpos;
     // Not a GLSL uniform: storedViewZ at every G-buffer texel, made once a draw (texelPlanes).
     raster::TexelPlane stored_vz;
+    // Not a GLSL uniform: whether the matrices have the zero entries projectSample leaves
+    // out, found once a draw (deriveUniforms).
+    bool projectsSparsely = false;
   };
   static constexpr auto kUniformTable = std::tuple{
       raster::uniform("u_view", &Uniforms::u_view),
@@ -82,6 +87,42 @@ struct SsaoPass : PostProgram {
          [](const Uniforms& u, auto uv) { return storedViewZ(u, uv); });
   }
 
+  // Not in the GLSL: u_proj * view_sp leaves out the entries of u_proj that are zero.
+  // llvmpipe cannot know a uniform's values, so its clip.x is ((P00 vx + P10 vy) + P20 vz) +
+  // P30 vw in full; a perspective projection (glm::perspective, as the scene makes it) has
+  // P10 = P20 = P30 = 0, and so for clip.y and clip.w: 12 multiplies and 9 adds a sample
+  // become 3 multiplies. The same bits, where:
+  //  - every dropped operand is finite (else 0 * v is NaN, which the full sum would keep):
+  //    vx, vy and vz are checked (their sum is finite only if each is; `notFinite` collects
+  //    the lanes where it is not); vw is ((0 sp.x + 0 sp.y) + 0 sp.z) + V33 for u_view's
+  //    zero w row and a finite V33 (deriveUniforms checks both), so finite where sp is, and
+  //    a non-finite coordinate of sp makes each of vx, vy and vz non-finite;
+  //  - adding the dropped terms, each +-0, changes nothing: x + (+-0) is x for any non-zero
+  //    x (NaN and infinities too); a zero sum stays a zero, whose sign may differ, and the
+  //    next non-zero term gives the same value either way. So only a zero result's sign can
+  //    differ, and no reader of clip sees it: clip.x / wv * 0.5 + 0.5 is 0.5 for either
+  //    zero (wv >= 0.0001), and clip.w > 0.0 and max(clip.w, 0.0001) are alike for both.
+  // clip.z is never read (the GLSL reads x, y and w).
+  static bool hasSparseProjection(const glm::mat4& p, const glm::mat4& v) {
+    return p[1][0] == 0.0f && p[2][0] == 0.0f && p[3][0] == 0.0f && p[0][1] == 0.0f && p[2][1] == 0.0f &&
+           p[3][1] == 0.0f && p[0][3] == 0.0f && p[1][3] == 0.0f && p[3][3] == 0.0f && v[0][3] == 0.0f &&
+           v[1][3] == 0.0f && v[2][3] == 0.0f && std::isfinite(v[3][3]);
+  }
+  static void deriveUniforms(Uniforms& u) { u.projectsSparsely = hasSparseProjection(u.u_proj, u.u_view); }
+
+  // clip = u_proj * view_sp as the sample reads it (x, y and w): in full, or (kSparse, for
+  // matrices hasSparseProjection accepts) with the zero entries left out, marking in
+  // `notFinite` the lanes where that could differ.
+  template <bool kSparse, class F, class M>
+  [[gnu::always_inline]] static vec4<F> projectSample(const glm::mat4& p, const vec4<F>& view_sp, M& notFinite) {
+    if constexpr (!kSparse) {
+      return p * view_sp;
+    } else {
+      notFinite = notFinite | !(abs(view_sp.x + view_sp.y + view_sp.z) < F(std::numeric_limits<float>::infinity()));
+      return vec4<F>(F(p[0][0]) * view_sp.x, F(p[1][1]) * view_sp.y, F(0.0f), F(p[2][3]) * view_sp.z);
+    }
+  }
+
   template <class F>
   static F hash21(vec2<F> p) {
     const F v = sin(dot(p, vec2<F>(F(127.1f), F(311.7f)))) * F(43758.5453f);
@@ -91,6 +132,15 @@ struct SsaoPass : PostProgram {
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
+    if (u.projectsSparsely && shade<true>(u, in, out)) return;
+    shade<false>(u, in, out);
+  }
+
+  // The GLSL's main, its projection of each sample as projectSample<kSparse> makes it.
+  // Returns false, having written nothing, where a lane that shows a surface cannot take the
+  // sparse projection (a non-finite sample point): the group is then shaded in full.
+  template <bool kSparse, class F>
+  static bool shade(const Uniforms& u, const Varyings<F>& in, raster::FragmentOutput<F>& out) {
     const vec2<F> l_uv = in.l_uv;
     const vec3<F> n_raw = raster::texture(u.ssao_g_normal, l_uv).xyz();
     F ao = F(1.0f);
@@ -112,6 +162,7 @@ struct SsaoPass : PostProgram {
       // in flight together instead of each waiting behind the previous sample's tests.
       vec2<F> suv[SSAO_K];
       F clip_w[SSAO_K], sample_vz[SSAO_K];   // what the tests read of clip and of the view-space point
+      auto notFinite = F(1.0f) < F(0.0f);   // none yet: the lanes projectSample<true> cannot vouch for
       for (int i = 0; i < SSAO_K; i++) {
         // Constant per unrolled iteration: folded by the GLSL compiler in float.
         const float fi = (float(i) + 0.5f) / float(SSAO_K);
@@ -127,11 +178,13 @@ struct SsaoPass : PostProgram {
         // compiler's common-subexpression pass leaves it.
         const vec4<F> view_sp = u.u_view * vec4<F>(sp, F(1.0f));
         sample_vz[i] = view_sp.z;
-        const vec4<F> clip = u.u_proj * view_sp;
+        const vec4<F> clip = projectSample<kSparse>(u.u_proj, view_sp, notFinite);
         clip_w[i] = clip.w;
         const F wv = max(clip.w, F(0.0001f));
         suv[i] = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
       }
+      // Lanes without a surface keep ao = 1.0 whatever their samples make.
+      if (kSparse && any(notFinite & has_surface)) return false;
       F stored_vz[SSAO_K];
       for (int i = 0; i < SSAO_K; i++)
         stored_vz[i] = raster::textureFromPlane(u.stored_vz, suv[i], [&](vec2<F> uv) { return storedViewZ(u, uv); });
@@ -149,6 +202,7 @@ struct SsaoPass : PostProgram {
       ao = select(has_surface, clamp(F(1.0f) - F(SSAO_STRENGTH) * occ / F(float(SSAO_K)), F(0.0f), F(1.0f)), ao);
     }
     out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));
+    return true;
   }
 };
 

@@ -4,13 +4,20 @@
 // operation, so no ULP allowance is needed.
 #include <doctest/doctest.h>
 
+#include <array>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
 
 #include "raster/methods.h"
 #include "raster/texture/format.h"
 #include "shaders_cpp/deferred/gbuffer.h"
+#include "shaders_cpp/deferred/ssao.h"
 #include "shaders_cpp/hdr/scene.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
@@ -228,6 +235,56 @@ TEST_SUITE("shaders") {
         checkFragmentAgrees<shaders::shadow::MainPass>(u, rng, -2.0f, 2.0f);
       }
     }
+  }
+
+  // deferred/post+ssao leaves u_proj's zero entries out of each sample's projection
+  // (SsaoPass::projectSample). What the sample reads of clip (the texture coordinate, the
+  // test clip.w > 0, and wv) must be the full product's bits wherever the sparse form does not
+  // mark the lane, for the special values a view-space point can hold: both zeros, denormals,
+  // the largest floats, infinities and NaN, on their own and mixed with ordinary values.
+  TEST_CASE("deferred/post+ssao: the sparse projection reads as the full one wherever it vouches for a lane") {
+    using Ssao = shaders::deferred::SsaoPass;
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float special[] = {0.0f, -0.0f, 1e-45f, -1e-40f, 1e-30f, 3.4e38f, -3.4e38f, inf, -inf, nan, 1.0f, -2.5f};
+    std::mt19937 rng(14);
+    std::uniform_real_distribution<float> value(-30.0f, 30.0f);
+    std::uniform_int_distribution<int> pick(0, int(std::size(special)) - 1), coin(0, 3);
+    const glm::mat4 view = glm::lookAtRH(glm::vec3(4.0f, 3.0f, 6.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    int vouched = 0, refused = 0;
+    for (const float nearPlane : {0.1f, 1e-6f, 5.0f}) {
+      const glm::mat4 proj = glm::perspectiveRH_NO(1.0f, 4.0f / 3.0f, nearPlane, 60.0f);
+      REQUIRE(Ssao::hasSparseProjection(proj, view));
+      for (int round = 0; round < 4000; ++round) {
+        float c[4][8];
+        for (auto& component : c)
+          for (float& x : component) x = coin(rng) == 0 ? special[pick(rng)] : value(rng);
+        for (int lane = 0; lane < 8; ++lane) c[3][lane] = 1.0f;   // u_view's w row makes vw 1 (hasSparseProjection)
+        const raster::glsl::vec4<Plain> v(lanesFrom<Plain>(c[0]), lanesFrom<Plain>(c[1]), lanesFrom<Plain>(c[2]),
+                                          lanesFrom<Plain>(c[3]));
+        auto notFinite = Plain(1.0f) < Plain(0.0f);
+        const auto full = Ssao::projectSample<false>(proj, v, notFinite);
+        const auto sparse = Ssao::projectSample<true>(proj, v, notFinite);
+        for (int lane = 0; lane < 8; ++lane) {
+          const bool finite = std::isfinite(c[0][lane]) && std::isfinite(c[1][lane]) && std::isfinite(c[2][lane]);
+          if (!finite) CHECK(notFinite.lane[lane]);   // a non-finite operand is always marked
+          if (notFinite.lane[lane]) {
+            ++refused;
+            continue;
+          }
+          ++vouched;
+          auto reads = [&](const raster::glsl::vec4<Plain>& clip) {
+            const float x = clip.x.lane[lane], y = clip.y.lane[lane], w = clip.w.lane[lane];
+            const float wv = w > 0.0001f ? w : 0.0001f;   // GLSL max(clip.w, 0.0001), as the lanes' max
+            return std::array<float, 4>{x / wv * 0.5f + 0.5f, y / wv * 0.5f + 0.5f, wv, w > 0.0f ? 1.0f : 0.0f};
+          };
+          const std::array<float, 4> a = reads(full), b = reads(sparse);
+          INFO("view point (" << c[0][lane] << ", " << c[1][lane] << ", " << c[2][lane] << "), near " << nearPlane);
+          CHECK(sameBits(a.data(), b.data(), 4));
+        }
+      }
+    }
+    CHECK(vouched > 10000);
+    CHECK(refused > 1000);
   }
 
   // Ports that read derivatives or textures keep the default: their lane groups are never

@@ -1,9 +1,11 @@
 // C++ port of post.vert / ssao.frag (seed 004, SSAO pass), line by line; the sample loop runs
 // in chunks of eight, each split in three, with the same operations per sample (see
-// fragment()).
+// shade()), and its two matrix products leave out the projections' zero entries where that
+// gives the same bits (projectSample, ReconstructViewZ).
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "raster/shader/program.h"
@@ -32,6 +34,9 @@ struct SsaoPass : PostProgram {
     glm::vec2 noiseScale{1.0f};
     float uRadius = 0.5f;
     float uBias = 0.025f;
+    // Not a GLSL uniform: whether the two projections have the zero entries the sparse
+    // forms below leave out, found once a draw (deriveUniforms).
+    bool projectsSparsely = false;
   };
   static constexpr auto kUniformTable = std::tuple{
       raster::uniform("uSamples", &Uniforms::uSamples),
@@ -53,16 +58,59 @@ struct SsaoPass : PostProgram {
   static vec2<F> clipXY(vec2<F> uv) {
     return uv * F(2.0f) - vec2<F>(F(1.0f));
   }
-  // Inline (GCC called it): a call spills every live vector register, the chunk's lanes.
-  template <class F>
-  [[gnu::always_inline]] static F ReconstructViewZ(const Uniforms& u, vec2<F> uv) {
-    const F depth = raster::texture(u.uDepth, uv).x;
-    const vec2<F> xy = clipXY(uv);
-    const F z = depth * F(2.0f) - F(1.0f);
-    const glm::mat4& m = u.uInvProjection;
+  // Not in the GLSL: the sample's two matrix products leave out the entries that are zero,
+  // as deferred/ssao.h's projectSample does (its comment proves the rule): dropping a term
+  // +-0 * v changes no bit of a row's sum where v is finite, except the sign of a zero sum.
+  // uProjection (glm::perspective) has one non-zero entry in rows x, y and w, so
+  // ox = P00 x, oy = P11 y, ow = P23 z; uInvProjection (its inverse) has none in the first
+  // three columns of row z and two in row w, so viewZ = M32 and viewW = M23 z + M33, which
+  // M32, M33 != 0 keep exact even for a zero M23 z. The guards, as `check` (below): every
+  // dropped operand finite (the sample point, the lookup's clip xy and z), and no zero ow,
+  // the one row whose zero's sign a reader sees (ox / ow): a zero ow makes ox / ow, and so
+  // the lookup's clip xy, non-finite. A zero ox or oy gives ox / ow * 0.5 + 0.5 = 0.5 either
+  // way. `check` is check + 0 * (values): 0 while every value is finite, NaN after any that
+  // is not (or whose sum overflows: shaded in full too).
+  static bool hasSparseProjections(const glm::mat4& p, const glm::mat4& m) {
+    const bool projection = p[1][0] == 0.0f && p[2][0] == 0.0f && p[3][0] == 0.0f && p[0][1] == 0.0f &&
+                            p[2][1] == 0.0f && p[3][1] == 0.0f && p[0][3] == 0.0f && p[1][3] == 0.0f && p[3][3] == 0.0f;
+    const bool inverse = m[0][2] == 0.0f && m[1][2] == 0.0f && m[2][2] == 0.0f && m[0][3] == 0.0f && m[1][3] == 0.0f &&
+                         m[3][2] != 0.0f && m[3][3] != 0.0f && std::isfinite(m[3][2]) && std::isfinite(m[3][3]);
+    return projection && inverse;
+  }
+  static void deriveUniforms(Uniforms& u) { u.projectsSparsely = hasSparseProjections(u.uProjection, u.uInvProjection); }
+
+  // The sample point's projection (uProjection * vec4(samplePos, 1.0)).xyw, in full or
+  // (kSparse) with uProjection's zero entries left out.
+  template <bool kSparse, class F>
+  [[gnu::always_inline]] static vec3<F> projectSample(const glm::mat4& p, const vec3<F>& samplePos, F& check) {
+    if constexpr (kSparse) {
+      check = check + (samplePos.x + samplePos.y + samplePos.z) * F(0.0f);
+      return vec3<F>(F(p[0][0]) * samplePos.x, F(p[1][1]) * samplePos.y, F(p[2][3]) * samplePos.z);
+    }
+    return vec3<F>(((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]),
+                   ((F(p[0][1]) * samplePos.x + F(p[1][1]) * samplePos.y) + F(p[2][1]) * samplePos.z) + F(p[3][1]),
+                   ((F(p[0][3]) * samplePos.x + F(p[1][3]) * samplePos.y) + F(p[2][3]) * samplePos.z) + F(p[3][3]));
+  }
+
+  // ReconstructViewZ's arithmetic: (m * vec4(xy, z, 1.0)).z over its w, in full or (kSparse)
+  // with uInvProjection's zero entries left out.
+  template <bool kSparse, class F>
+  [[gnu::always_inline]] static F viewZFromClip(const glm::mat4& m, vec2<F> xy, F z, F& check) {
+    if constexpr (kSparse) {
+      check = check + (xy.x + xy.y + z) * F(0.0f);
+      return F(m[3][2]) / (F(m[2][3]) * z + F(m[3][3]));
+    }
     const F viewZ = ((F(m[0][2]) * xy.x + F(m[1][2]) * xy.y) + F(m[2][2]) * z) + F(m[3][2]);
     const F viewW = ((F(m[0][3]) * xy.x + F(m[1][3]) * xy.y) + F(m[2][3]) * z) + F(m[3][3]);
     return viewZ / viewW;
+  }
+  // Inline (GCC called it): a call spills every live vector register, the chunk's lanes.
+  template <bool kSparse, class F>
+  [[gnu::always_inline]] static F ReconstructViewZ(const Uniforms& u, vec2<F> uv, F& check) {
+    const F depth = raster::texture(u.uDepth, uv).x;
+    const vec2<F> xy = clipXY(uv);
+    const F z = depth * F(2.0f) - F(1.0f);
+    return viewZFromClip<kSparse>(u.uInvProjection, xy, z, check);
   }
 
   // GLSL smoothstep(0.0, 1.0, x): (x - 0) / (1 - 0) folds to x, then t * t * (3 - 2 * t).
@@ -87,6 +135,15 @@ struct SsaoPass : PostProgram {
   template <class F>
   static void fragment(const Uniforms& u, const raster::FragmentInput<F>&, const Varyings<F>& in,
                        raster::FragmentOutput<F>& out) {
+    if (u.projectsSparsely && shade<true>(u, in, out)) return;
+    shade<false>(u, in, out);
+  }
+
+  // The GLSL's main, its projections as projectSample<kSparse> and ReconstructViewZ<kSparse>
+  // make them. Returns false, having written nothing, where a lane failed the sparse forms'
+  // guards: the group is then shaded in full.
+  template <bool kSparse, class F>
+  static bool shade(const Uniforms& u, const Varyings<F>& in, raster::FragmentOutput<F>& out) {
     const vec2<F> uv = in.fragUV;
     const vec3<F> worldNormal = raster::texture(u.uNormal, uv).xyz() * F(2.0f) - vec3<F>(F(1.0f));
     // (uView * vec4(worldNormal, 0.0)).xyz: the w column's c3 * 0.0 and its + 0.0 fold away.
@@ -105,7 +162,7 @@ struct SsaoPass : PostProgram {
     const vec4<F> fragClip = vec4<F>(clipXY(uv).x, clipXY(uv).y, depth * F(2.0f) - F(1.0f), F(1.0f));
     const vec4<F> fragView = u.uInvProjection * fragClip;
     const vec3<F> fragPos = fragView.xyz() / fragView.w;
-    const glm::mat4& p = u.uProjection;
+    F check = F(0.0f);   // the sparse forms' guards (hasSparseProjections)
     // The GLSL loop in chunks of kChunk samples, each split in three with the same
     // operations per sample, in the same order of the sum: the chunk's sample points, then
     // their depth lookups, then the tests. A GLSL compiler unrolls this constant loop and is
@@ -119,22 +176,24 @@ struct SsaoPass : PostProgram {
         // TBN * uSamples[i]: column by column (docs/porting.md, row mat-vec), then * uRadius.
         const vec3<F> rotated = (tangent * F(s.x) + bitangent * F(s.y)) + normal * F(s.z);
         const vec3<F> samplePos = fragPos + rotated * F(u.uRadius);
-        F ox = ((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]);
-        F oy = ((F(p[0][1]) * samplePos.x + F(p[1][1]) * samplePos.y) + F(p[2][1]) * samplePos.z) + F(p[3][1]);
-        const F ow = ((F(p[0][3]) * samplePos.x + F(p[1][3]) * samplePos.y) + F(p[2][3]) * samplePos.z) + F(p[3][3]);
+        const vec3<F> projected = projectSample<kSparse>(u.uProjection, samplePos, check);
+        F ox = projected.x, oy = projected.y;
+        const F ow = projected.z;
         ox = ox / ow;
         oy = oy / ow;
         offsets[k] = vec2<F>(ox * F(0.5f) + F(0.5f), oy * F(0.5f) + F(0.5f));
         sampleZ[k] = samplePos.z;
       }
-      for (int k = 0; k < kChunk; ++k) sampleDepth[k] = ReconstructViewZ(u, offsets[k]);
+      for (int k = 0; k < kChunk; ++k) sampleDepth[k] = ReconstructViewZ<kSparse>(u, offsets[k], check);
       for (int k = 0; k < kChunk; ++k) {
         const auto occludes = sampleDepth[k] >= sampleZ[k] + F(u.uBias);
         occlusion = occlusion + select(occludes, rangeCheck(u, abs(fragPos.z - sampleDepth[k]), occludes), F(0.0f));
       }
     }
+    if (kSparse && !all(check == F(0.0f))) return false;
     const F ao = F(1.0f) - occlusion / F(float(KERNEL_SIZE));
     out.color[0] = vec4<F>(ao, ao, ao, F(1.0f));
+    return true;
   }
 };
 

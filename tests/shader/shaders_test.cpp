@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include <glm/ext/matrix_clip_space.hpp>
@@ -19,6 +20,7 @@
 #include "shaders_cpp/deferred/gbuffer.h"
 #include "shaders_cpp/deferred/ssao.h"
 #include "shaders_cpp/hdr/scene.h"
+#include "shaders_cpp/pbr/ssao.h"
 #include "shaders_cpp/shadow/main.h"
 #include "shaders_cpp/shadow/shadow.h"
 #include "tests/method_sets.h"
@@ -280,6 +282,60 @@ TEST_SUITE("shaders") {
           const std::array<float, 4> a = reads(full), b = reads(sparse);
           INFO("view point (" << c[0][lane] << ", " << c[1][lane] << ", " << c[2][lane] << "), near " << nearPlane);
           CHECK(sameBits(a.data(), b.data(), 4));
+        }
+      }
+    }
+    CHECK(vouched > 10000);
+    CHECK(refused > 1000);
+  }
+
+  // pbr/post+ssao leaves out the zero entries of uProjection (each sample's point) and of
+  // uInvProjection (its depth lookup's view z): the texture coordinate a sample looks up and
+  // the view z it makes must be the full products' bits wherever the guard (`check`) stays
+  // 0, for the same special values, with the depth lookup's z among them.
+  TEST_CASE("pbr/post+ssao: the sparse projections read as the full ones wherever the guard stays 0") {
+    using Ssao = shaders::pbr::SsaoPass;
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float special[] = {0.0f, -0.0f, 1e-45f, -1e-40f, 1e-30f, 3.4e38f, -3.4e38f, inf, -inf, nan, 1.0f, -2.5f};
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<float> value(-30.0f, 30.0f), depth(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> pick(0, int(std::size(special)) - 1), coin(0, 3);
+    auto draw = [&](std::uniform_real_distribution<float>& d) { return coin(rng) == 0 ? special[pick(rng)] : d(rng); };
+    int vouched = 0, refused = 0;
+    for (const float nearPlane : {0.1f, 1e-6f, 5.0f}) {
+      const glm::mat4 proj = glm::perspectiveRH_NO(1.0f, 4.0f / 3.0f, nearPlane, 60.0f), inverse = glm::inverse(proj);
+      REQUIRE(Ssao::hasSparseProjections(proj, inverse));
+      for (int round = 0; round < 4000; ++round) {
+        float c[4][8];
+        for (int lane = 0; lane < 8; ++lane) {
+          for (int k = 0; k < 3; ++k) c[k][lane] = draw(value);
+          c[3][lane] = draw(depth);
+        }
+        const raster::glsl::vec3<Plain> samplePos(lanesFrom<Plain>(c[0]), lanesFrom<Plain>(c[1]), lanesFrom<Plain>(c[2]));
+        const Plain z = lanesFrom<Plain>(c[3]);
+        Plain check(0.0f), unused(0.0f);
+        // What the sample makes of its projection: the lookup's uv (as the port's loop) and
+        // the view z of the texel there, here with the drawn z for its depth.
+        auto sample = [&](auto sparse, Plain& guard) {
+          constexpr bool kSparse = decltype(sparse)::value;
+          const auto o = Ssao::projectSample<kSparse>(proj, samplePos, guard);
+          const raster::glsl::vec2<Plain> uv(o.x / o.z * Plain(0.5f) + Plain(0.5f), o.y / o.z * Plain(0.5f) + Plain(0.5f));
+          const Plain viewZ = Ssao::viewZFromClip<kSparse>(inverse, Ssao::clipXY(uv), z, guard);
+          return std::array<Plain, 3>{uv.x, uv.y, viewZ};
+        };
+        const std::array<Plain, 3> full = sample(std::false_type{}, unused), sparse = sample(std::true_type{}, check);
+        for (int lane = 0; lane < 8; ++lane) {
+          const bool finite = std::isfinite(c[0][lane]) && std::isfinite(c[1][lane]) && std::isfinite(c[2][lane]) &&
+                              std::isfinite(c[3][lane]);
+          if (!finite) CHECK(check.lane[lane] != 0.0f);   // NaN: a non-finite operand is always refused
+          if (check.lane[lane] != 0.0f) {
+            ++refused;
+            continue;
+          }
+          ++vouched;
+          INFO("sample point (" << c[0][lane] << ", " << c[1][lane] << ", " << c[2][lane] << "), z " << c[3][lane]
+                                << ", near " << nearPlane);
+          for (int k = 0; k < 3; ++k) CHECK(sameBits(&full[size_t(k)].lane[lane], &sparse[size_t(k)].lane[lane], 1));
         }
       }
     }

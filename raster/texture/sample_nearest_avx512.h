@@ -16,6 +16,8 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
+#include <cmath>
+
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/lookup_filter.h"
@@ -141,6 +143,35 @@ template <class Channels>
   return simd::Float8x2(_mm512_castsi512_ps(loadTexels32(values, index, plane.width)));
 }
 
+// The lanes of a CLAMP_TO_EDGE line (sampleNearest32Line) whose R taps either way are
+// proven to land i texels from the centre by a margin, without computing them: tap +-i's
+// texel is trunc(fl(fl(u +- fl(s * i)) * W)) for the coordinate u, the step s > 0 and the
+// size W, and the centre's c = trunc(a0), a0 = fl(u * W), with R <= c <= W - 1 - R (the
+// caller's end test, which also makes u >= 1 / W and t = u W just below W). Writing
+// s W = 1 + eta (exact in double) and each rounding to nearest as (1 + e), |e| <= 2^-24
+// (every value here is a normal float; an s too small for that makes |eta| about 1, which
+// fails below):
+//   tap value = (t +- i (1 + eta)(1 + e1)) (1 + e2)(1 + e3),
+// which differs from t +- i by at most i |eta| + i (1 + |eta|) 2^-24 + (t + i (1 + |eta|)
+// (1 + 2^-24)) (2^-23 + 2^-48) < delta = R |eta| + (W + 4R (1 + |eta|)) 2^-22; and |a0 - t|
+// <= W 2^-24 <= delta / 4. So where a0 - c (exact: Sterbenz, a0 < c + 1 <= 2c) lies in
+// [2 delta, 1 - 2 delta], every tap value lies strictly inside (c +- i, c +- i + 1),
+// positive, and truncates to c +- i: the index the tap's own comparison would accept. Other
+// lanes (near a texel boundary, or a step that is not one texel) are left to those
+// comparisons; delta < 0.25 also bounds W below 2^20.
+[[gnu::always_inline]] inline __mmask16 tapsApartByMargin16(__m512 along, int size, float stride, int R) {
+  if (!(stride > 0.0f)) return 0;
+  const double eta = std::fabs(double(stride) * double(size) - 1.0);
+  const double delta = double(R) * eta + (double(size) + 4.0 * double(R) * (1.0 + eta)) * 0x1p-22;
+  if (!(delta < 0.25)) return 0;
+  const __m512 a0 = _mm512_mul_ps(along, _mm512_set1_ps(float(size)));
+  const __m512 fraction = _mm512_sub_ps(a0, _mm512_roundscale_ps(a0, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
+  // The bounds as floats, moved inward by more than a float's rounding (2^-24 of each).
+  const float low = float(2.0 * delta * (1.0 + 0x1p-22)), high = float((1.0 - 2.0 * delta) * (1.0 - 0x1p-22));
+  return _mm512_cmp_ps_mask(fraction, _mm512_set1_ps(low), _CMP_GE_OQ) &
+         _mm512_cmp_ps_mask(fraction, _mm512_set1_ps(high), _CMP_LE_OQ);
+}
+
 // textureLine's N = 2R + 1 taps (sampler.h) where sampleNearest32Pair is the lookup, the
 // line runs along x or along y (step.y or step.x is zero, as a separable filter's passes
 // are), and the sixteen lanes are a 4x4 block (blockOffsets16) whose tap i lands i texels
@@ -177,12 +208,15 @@ template <int N>
     const __m512 sizeF = _mm512_set1_ps(float(size));
     apart = _mm512_cmpge_epi32_mask(centreIndex, _mm512_set1_epi32(R)) &
             _mm512_cmple_epi32_mask(centreIndex, _mm512_set1_epi32(size - 1 - R));
-    for (int i = 1; i <= R; ++i) {
-      const __m512 offset = _mm512_set1_ps(stride * float(i));
-      const __m512i ahead = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_add_ps(along, offset), sizeF));
-      const __m512i behind = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_sub_ps(along, offset), sizeF));
-      apart &= _mm512_cmpeq_epi32_mask(ahead, _mm512_add_epi32(centreIndex, _mm512_set1_epi32(i)));
-      apart &= _mm512_cmpeq_epi32_mask(behind, _mm512_sub_epi32(centreIndex, _mm512_set1_epi32(i)));
+    // A block of a target's own pixels lies mid-texel: a margin proves every tap there.
+    if ((apart & tapsApartByMargin16(along, size, stride, R)) != 0xFFFF) {
+      for (int i = 1; i <= R; ++i) {
+        const __m512 offset = _mm512_set1_ps(stride * float(i));
+        const __m512i ahead = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_add_ps(along, offset), sizeF));
+        const __m512i behind = _mm512_cvttps_epi32(_mm512_mul_ps(_mm512_sub_ps(along, offset), sizeF));
+        apart &= _mm512_cmpeq_epi32_mask(ahead, _mm512_add_epi32(centreIndex, _mm512_set1_epi32(i)));
+        apart &= _mm512_cmpeq_epi32_mask(behind, _mm512_sub_epi32(centreIndex, _mm512_set1_epi32(i)));
+      }
     }
   } else {
     for (int i = 1; i <= R; ++i) {

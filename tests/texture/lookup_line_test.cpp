@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 #include <random>
 
@@ -125,6 +126,49 @@ TEST_SUITE("texture") {
       CHECK(counts.sharedAlongY > 20);
       CHECK(counts.mismatches == 0);
     }
+  }
+
+  // tapsApartByMargin16 skips the comparison of each tap's texel where a margin proves it: for
+  // every lane it accepts, tap +-i must truncate to the centre's texel +-i. Coordinates near
+  // texel boundaries (fractions at and around the margin), sizes up to 16384 and steps off
+  // one texel by up to 1e-3 put the bound to the test; every tap is computed as the line
+  // computes it (fl(fl(u +- fl(s * i)) * W)).
+  TEST_CASE("lookup lines on 16 lanes: a lane the margin accepts has every tap one texel apart") {
+    std::mt19937 rng(2028);
+    long accepted = 0, rejected = 0, wrong = 0;
+    for (int round = 0; round < 20000; ++round) {
+      const int size = std::array{16, 640, 1080, 4096, 16384}[size_t(round % 5)];
+      const int r = std::array{2, 4, 6}[size_t(round / 5 % 3)];
+      const float etaWanted = std::array{0.0f, 1e-7f, -1e-7f, 1e-5f, -3e-5f, 1e-3f}[size_t(rng() % 6)];
+      const float stride = (1.0f + etaWanted) / float(size);
+      alignas(64) float u[16];
+      for (float& lane : u) {
+        const int c = r + int(rng() % unsigned(size - 2 * r));   // inside the end test
+        // A fraction anywhere, or within 0.02 of a boundary, where the margin decides.
+        const float f = rng() % 2 ? float(rng() % 100000) / 100000.0f : float(rng() % 20000) / 1e6f;
+        lane = (float(c) + (rng() % 2 ? f : 1.0f - f)) / float(size);
+      }
+      const __m512 along = _mm512_load_ps(u);
+      const __mmask16 lanes = raster::sampling::tapsApartByMargin16(along, size, stride, r);
+      for (int lane = 0; lane < 16; ++lane) {
+        const float a0 = u[lane] * float(size);
+        const int c = int(a0);
+        if (!(lanes >> lane & 1) || c < r || c > size - 1 - r) {
+          ++rejected;
+          continue;
+        }
+        ++accepted;
+        for (int i = 1; i <= r; ++i) {
+          const float offset = stride * float(i);
+          wrong += int((u[lane] + offset) * float(size)) != c + i;
+          wrong += int((u[lane] - offset) * float(size)) != c - i;
+        }
+      }
+    }
+    MESSAGE(accepted << " lanes accepted, " << rejected << " left to the comparisons");
+    CHECK(wrong == 0);
+    CHECK(accepted > 100000);
+    CHECK(rejected > 10000);
   }
 #endif
 #endif

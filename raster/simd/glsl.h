@@ -120,6 +120,11 @@ template <class F> vec3<F> mix(vec3<F> a, vec3<F> b, vec3<F> t) { return {mix(a.
 template <class F> F clamp(F x, F lo, F hi) { return min(max(x, lo), hi); }
 template <class F> vec3<F> max(vec3<F> a, F b) { return {max(a.x, b), max(a.y, b), max(a.z, b)}; }
 
+// Not GLSL: the guard of a port's exact rewrite that holds only for finite operands (the
+// SSAO passes' sparse projections). guard + v * 0 stays the guard while v is finite and is
+// NaN from the first v that is not, so all(guard == 0) after a loop says every v was.
+template <class F> [[gnu::always_inline]] inline F addFiniteGuard(F guard, F v) { return guard + v * F(0.0f); }
+
 // Transcendentals (pow, exp2, log2, sin, cos, asin, acos, atan) are in gl_math.h: bit-exact
 // ports of llvmpipe's approximations. Component-wise vec3 forms of pow:
 //   pow(v, e)      run-time exponents (a uniform or computed vec3);

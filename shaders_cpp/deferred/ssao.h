@@ -93,8 +93,8 @@ struct SsaoPass : PostProgram {
   // P10 = P20 = P30 = 0, and so for clip.y and clip.w: 12 multiplies and 9 adds a sample
   // become 3 multiplies. The same bits, where:
   //  - every dropped operand is finite (else 0 * v is NaN, which the full sum would keep):
-  //    vx, vy and vz are checked (their sum is finite only if each is; `notFinite` collects
-  //    the lanes where it is not); vw is ((0 sp.x + 0 sp.y) + 0 sp.z) + V33 for u_view's
+  //    vx, vy and vz are checked (their sum is finite only if each is; `guard` turns NaN in
+  //    the lanes where it is not: addFiniteGuard); vw is ((0 sp.x + 0 sp.y) + 0 sp.z) + V33 for u_view's
   //    zero w row and a finite V33 (deriveUniforms checks both), so finite where sp is, and
   //    a non-finite coordinate of sp makes each of vx, vy and vz non-finite;
   //  - adding the dropped terms, each +-0, changes nothing: x + (+-0) is x for any non-zero
@@ -111,14 +111,14 @@ struct SsaoPass : PostProgram {
   static void deriveUniforms(Uniforms& u) { u.projectsSparsely = hasSparseProjection(u.u_proj, u.u_view); }
 
   // clip = u_proj * view_sp as the sample reads it (x, y and w): in full, or (kSparse, for
-  // matrices hasSparseProjection accepts) with the zero entries left out, marking in
-  // `notFinite` the lanes where that could differ.
-  template <bool kSparse, class F, class M>
-  [[gnu::always_inline]] static vec4<F> projectSample(const glm::mat4& p, const vec4<F>& view_sp, M& notFinite) {
+  // matrices hasSparseProjection accepts) with the zero entries left out, `guard` turning NaN
+  // in the lanes where that could differ.
+  template <bool kSparse, class F>
+  [[gnu::always_inline]] static vec4<F> projectSample(const glm::mat4& p, const vec4<F>& view_sp, F& guard) {
     if constexpr (!kSparse) {
       return p * view_sp;
     } else {
-      notFinite = notFinite | !(abs(view_sp.x + view_sp.y + view_sp.z) < F(std::numeric_limits<float>::infinity()));
+      guard = addFiniteGuard(guard, view_sp.x + view_sp.y + view_sp.z);
       return vec4<F>(F(p[0][0]) * view_sp.x, F(p[1][1]) * view_sp.y, F(0.0f), F(p[2][3]) * view_sp.z);
     }
   }
@@ -162,7 +162,7 @@ struct SsaoPass : PostProgram {
       // in flight together instead of each waiting behind the previous sample's tests.
       vec2<F> suv[SSAO_K];
       F clip_w[SSAO_K], sample_vz[SSAO_K];   // what the tests read of clip and of the view-space point
-      auto notFinite = F(1.0f) < F(0.0f);   // none yet: the lanes projectSample<true> cannot vouch for
+      F guard = F(0.0f);   // NaN in the lanes projectSample<true> cannot vouch for
       for (int i = 0; i < SSAO_K; i++) {
         // Constant per unrolled iteration: folded by the GLSL compiler in float.
         const float fi = (float(i) + 0.5f) / float(SSAO_K);
@@ -178,13 +178,13 @@ struct SsaoPass : PostProgram {
         // compiler's common-subexpression pass leaves it.
         const vec4<F> view_sp = u.u_view * vec4<F>(sp, F(1.0f));
         sample_vz[i] = view_sp.z;
-        const vec4<F> clip = projectSample<kSparse>(u.u_proj, view_sp, notFinite);
+        const vec4<F> clip = projectSample<kSparse>(u.u_proj, view_sp, guard);
         clip_w[i] = clip.w;
         const F wv = max(clip.w, F(0.0001f));
         suv[i] = vec2<F>(clip.x / wv * F(0.5f) + F(0.5f), clip.y / wv * F(0.5f) + F(0.5f));
       }
       // Lanes without a surface keep ao = 1.0 whatever their samples make.
-      if (kSparse && any(notFinite & has_surface)) return false;
+      if (kSparse && !all((guard == F(0.0f)) | !has_surface)) return false;
       F stored_vz[SSAO_K];
       for (int i = 0; i < SSAO_K; i++)
         stored_vz[i] = raster::textureFromPlane(u.stored_vz, suv[i], [&](vec2<F> uv) { return storedViewZ(u, uv); });

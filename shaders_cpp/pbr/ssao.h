@@ -68,8 +68,8 @@ struct SsaoPass : PostProgram {
   // dropped operand finite (the sample point, the lookup's clip xy and z), and no zero ow,
   // the one row whose zero's sign a reader sees (ox / ow): a zero ow makes ox / ow, and so
   // the lookup's clip xy, non-finite. A zero ox or oy gives ox / ow * 0.5 + 0.5 = 0.5 either
-  // way. `check` is check + 0 * (values): 0 while every value is finite, NaN after any that
-  // is not (or whose sum overflows: shaded in full too).
+  // way. `check` takes the sums of those values (addFiniteGuard): 0 while each is finite, NaN
+  // after any that is not (or overflows: shaded in full too).
   static bool hasSparseProjections(const glm::mat4& p, const glm::mat4& m) {
     const bool projection = p[1][0] == 0.0f && p[2][0] == 0.0f && p[3][0] == 0.0f && p[0][1] == 0.0f &&
                             p[2][1] == 0.0f && p[3][1] == 0.0f && p[0][3] == 0.0f && p[1][3] == 0.0f && p[3][3] == 0.0f;
@@ -84,7 +84,7 @@ struct SsaoPass : PostProgram {
   template <bool kSparse, class F>
   [[gnu::always_inline]] static vec3<F> projectSample(const glm::mat4& p, const vec3<F>& samplePos, F& check) {
     if constexpr (kSparse) {
-      check = check + (samplePos.x + samplePos.y + samplePos.z) * F(0.0f);
+      check = addFiniteGuard(check, samplePos.x + samplePos.y + samplePos.z);
       return vec3<F>(F(p[0][0]) * samplePos.x, F(p[1][1]) * samplePos.y, F(p[2][3]) * samplePos.z);
     }
     return vec3<F>(((F(p[0][0]) * samplePos.x + F(p[1][0]) * samplePos.y) + F(p[2][0]) * samplePos.z) + F(p[3][0]),
@@ -97,7 +97,7 @@ struct SsaoPass : PostProgram {
   template <bool kSparse, class F>
   [[gnu::always_inline]] static F viewZFromClip(const glm::mat4& m, vec2<F> xy, F z, F& check) {
     if constexpr (kSparse) {
-      check = check + (xy.x + xy.y + z) * F(0.0f);
+      check = addFiniteGuard(check, xy.x + xy.y + z);
       return F(m[3][2]) / (F(m[2][3]) * z + F(m[3][3]));
     }
     const F viewZ = ((F(m[0][2]) * xy.x + F(m[1][2]) * xy.y) + F(m[2][2]) * z) + F(m[3][2]);

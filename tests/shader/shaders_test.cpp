@@ -194,6 +194,16 @@ glm::mat4 randomMatrix(std::mt19937& rng) {
   return m;
 }
 
+// One lane's value for the sparse projections' tests: a quarter of the time a special float
+// (both zeros, denormals, the largest floats, infinities, NaN, 1 and -2.5), else one drawn
+// from `ordinary`.
+float specialOr(std::mt19937& rng, std::uniform_real_distribution<float>& ordinary) {
+  static constexpr float kInf = std::numeric_limits<float>::infinity(), kNaN = std::numeric_limits<float>::quiet_NaN();
+  static constexpr float kSpecial[] = {0.0f, -0.0f, 1e-45f, -1e-40f, 1e-30f, 3.4e38f, -3.4e38f, kInf, -kInf, kNaN, 1.0f, -2.5f};
+  if (rng() % 4 != 0) return ordinary(rng);
+  return kSpecial[rng() % std::size(kSpecial)];
+}
+
 }  // namespace
 
 TEST_SUITE("shaders") {
@@ -241,16 +251,12 @@ TEST_SUITE("shaders") {
 
   // deferred/post+ssao leaves u_proj's zero entries out of each sample's projection
   // (SsaoPass::projectSample). What the sample reads of clip (the texture coordinate, the
-  // test clip.w > 0, and wv) must be the full product's bits wherever the sparse form does not
-  // mark the lane, for the special values a view-space point can hold: both zeros, denormals,
-  // the largest floats, infinities and NaN, on their own and mixed with ordinary values.
+  // test clip.w > 0, and wv) must be the full product's bits wherever its guard stays 0, for
+  // the special values a view-space point can hold (specialOr).
   TEST_CASE("deferred/post+ssao: the sparse projection reads as the full one wherever it vouches for a lane") {
     using Ssao = shaders::deferred::SsaoPass;
-    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
-    const float special[] = {0.0f, -0.0f, 1e-45f, -1e-40f, 1e-30f, 3.4e38f, -3.4e38f, inf, -inf, nan, 1.0f, -2.5f};
     std::mt19937 rng(14);
     std::uniform_real_distribution<float> value(-30.0f, 30.0f);
-    std::uniform_int_distribution<int> pick(0, int(std::size(special)) - 1), coin(0, 3);
     const glm::mat4 view = glm::lookAtRH(glm::vec3(4.0f, 3.0f, 6.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     int vouched = 0, refused = 0;
     for (const float nearPlane : {0.1f, 1e-6f, 5.0f}) {
@@ -259,17 +265,17 @@ TEST_SUITE("shaders") {
       for (int round = 0; round < 4000; ++round) {
         float c[4][8];
         for (auto& component : c)
-          for (float& x : component) x = coin(rng) == 0 ? special[pick(rng)] : value(rng);
+          for (float& x : component) x = specialOr(rng, value);
         for (int lane = 0; lane < 8; ++lane) c[3][lane] = 1.0f;   // u_view's w row makes vw 1 (hasSparseProjection)
         const raster::glsl::vec4<Plain> v(lanesFrom<Plain>(c[0]), lanesFrom<Plain>(c[1]), lanesFrom<Plain>(c[2]),
                                           lanesFrom<Plain>(c[3]));
-        auto notFinite = Plain(1.0f) < Plain(0.0f);
-        const auto full = Ssao::projectSample<false>(proj, v, notFinite);
-        const auto sparse = Ssao::projectSample<true>(proj, v, notFinite);
+        Plain guard(0.0f), unused(0.0f);
+        const auto full = Ssao::projectSample<false>(proj, v, unused);
+        const auto sparse = Ssao::projectSample<true>(proj, v, guard);
         for (int lane = 0; lane < 8; ++lane) {
           const bool finite = std::isfinite(c[0][lane]) && std::isfinite(c[1][lane]) && std::isfinite(c[2][lane]);
-          if (!finite) CHECK(notFinite.lane[lane]);   // a non-finite operand is always marked
-          if (notFinite.lane[lane]) {
+          if (!finite) CHECK(guard.lane[lane] != 0.0f);   // NaN: a non-finite operand is always refused
+          if (guard.lane[lane] != 0.0f) {
             ++refused;
             continue;
           }
@@ -292,15 +298,11 @@ TEST_SUITE("shaders") {
   // pbr/post+ssao leaves out the zero entries of uProjection (each sample's point) and of
   // uInvProjection (its depth lookup's view z): the texture coordinate a sample looks up and
   // the view z it makes must be the full products' bits wherever the guard (`check`) stays
-  // 0, for the same special values, with the depth lookup's z among them.
+  // 0, for the same special values (specialOr), with the depth lookup's z among them.
   TEST_CASE("pbr/post+ssao: the sparse projections read as the full ones wherever the guard stays 0") {
     using Ssao = shaders::pbr::SsaoPass;
-    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
-    const float special[] = {0.0f, -0.0f, 1e-45f, -1e-40f, 1e-30f, 3.4e38f, -3.4e38f, inf, -inf, nan, 1.0f, -2.5f};
     std::mt19937 rng(15);
     std::uniform_real_distribution<float> value(-30.0f, 30.0f), depth(-1.0f, 1.0f);
-    std::uniform_int_distribution<int> pick(0, int(std::size(special)) - 1), coin(0, 3);
-    auto draw = [&](std::uniform_real_distribution<float>& d) { return coin(rng) == 0 ? special[pick(rng)] : d(rng); };
     int vouched = 0, refused = 0;
     for (const float nearPlane : {0.1f, 1e-6f, 5.0f}) {
       const glm::mat4 proj = glm::perspectiveRH_NO(1.0f, 4.0f / 3.0f, nearPlane, 60.0f), inverse = glm::inverse(proj);
@@ -308,8 +310,8 @@ TEST_SUITE("shaders") {
       for (int round = 0; round < 4000; ++round) {
         float c[4][8];
         for (int lane = 0; lane < 8; ++lane) {
-          for (int k = 0; k < 3; ++k) c[k][lane] = draw(value);
-          c[3][lane] = draw(depth);
+          for (int k = 0; k < 3; ++k) c[k][lane] = specialOr(rng, value);
+          c[3][lane] = specialOr(rng, depth);
         }
         const raster::glsl::vec3<Plain> samplePos(lanesFrom<Plain>(c[0]), lanesFrom<Plain>(c[1]), lanesFrom<Plain>(c[2]));
         const Plain z = lanesFrom<Plain>(c[3]);

@@ -148,8 +148,7 @@ TEST_SUITE("texture") {
         const float f = rng() % 2 ? float(rng() % 100000) / 100000.0f : float(rng() % 20000) / 1e6f;
         lane = (float(c) + (rng() % 2 ? f : 1.0f - f)) / float(size);
       }
-      const __m512 along = _mm512_load_ps(u);
-      const __mmask16 lanes = raster::sampling::tapsApartByMargin16(along, size, stride, r);
+      const uint32_t lanes = raster::sampling::tapsApartByMargin16(raster::simd::Float8x2::load(u).v, size, stride, r);
       for (int lane = 0; lane < 16; ++lane) {
         const float a0 = u[lane] * float(size);
         const int c = int(a0);

@@ -44,6 +44,13 @@ template <class F> glsl::vec2<F> dFdy(glsl::vec2<F> a) { return {dFdy(a.x), dFdy
 template <class F> glsl::vec3<F> dFdx(glsl::vec3<F> a) { return {dFdx(a.x), dFdx(a.y), dFdx(a.z)}; }
 template <class F> glsl::vec3<F> dFdy(glsl::vec3<F> a) { return {dFdy(a.x), dFdy(a.y), dFdy(a.z)}; }
 
+// Not GLSL: the coordinates one 4x4 block to the right, uv + 4 * dFdx(uv), each quad's own
+// derivative carried on: where the block usually shaded next reads, for texturePrefetch.
+// The tile stage shades a tile's blocks along each row, left to right (covered_tile_avx2.h,
+// visible_first.h), so inside a surface that block is next, and a port that prefetches its
+// texels here finds them loaded there. A guess only: nothing but a prefetch reads it.
+template <class F> glsl::vec2<F> nextBlockCoords(glsl::vec2<F> uv) { return uv + dFdx(uv) * F(float(limits::kBlockSize)); }
+
 // Number of interpolated floats of a program.
 template <class Program>
 constexpr int varyingFloatCount() {

@@ -82,10 +82,16 @@ struct GBufferPass {
     if (u.u_material > 0.5f) {
       const vec2<F> uv = vec2<F>(in.gv_world_pos.x, in.gv_world_pos.z) * F(0.35f);
       // Not in the GLSL: the other three maps' texels start loading now, while the first
-      // lookup waits on its own (sampler.h, texturePrefetch).
+      // lookup waits on its own (sampler.h, texturePrefetch), and then all four maps' texels
+      // of the block usually shaded next (nextBlockCoords, program.h). No value changes.
       raster::texturePrefetch(u.floor_albedo, uv);
       raster::texturePrefetch(u.floor_roughness, uv);
       raster::texturePrefetch(u.floor_normal, uv);
+      const vec2<F> next = raster::nextBlockCoords(uv);
+      raster::texturePrefetch(u.floor_ao, next);
+      raster::texturePrefetch(u.floor_albedo, next);
+      raster::texturePrefetch(u.floor_roughness, next);
+      raster::texturePrefetch(u.floor_normal, next);
       const F fb_ao = raster::texture(u.floor_ao, uv).x;
       albedo = pow(raster::texture(u.floor_albedo, uv).xyz(), sRGB) * (F(0.5f) + F(0.5f) * fb_ao);
       spec_i = (F(1.0f) - raster::texture(u.floor_roughness, uv).x) * F(0.4f);
@@ -97,6 +103,10 @@ struct GBufferPass {
     } else {
       raster::texturePrefetch(u.cat_arm, in.gv_uv);   // as the floor's, above
       raster::texturePrefetch(u.cat_normal, in.gv_uv);
+      const vec2<F> next = raster::nextBlockCoords(in.gv_uv);
+      raster::texturePrefetch(u.cat_albedo, next);
+      raster::texturePrefetch(u.cat_arm, next);
+      raster::texturePrefetch(u.cat_normal, next);
       const vec3<F> alb = pow(raster::texture(u.cat_albedo, in.gv_uv).xyz(), sRGB);
       const vec3<F> arm = raster::texture(u.cat_arm, in.gv_uv).xyz();
       albedo = alb * (F(0.55f) + F(0.45f) * arm.x);

@@ -78,10 +78,16 @@ struct GBufferPass {
     if (u.uMaterial > 0.5f) {
       uv = vec2<F>(in.fragPos.x, in.fragPos.z) * F(0.35f);
       // Not in the GLSL: the other maps' texels start loading while the first lookup waits
-      // on its own (sampler.h, texturePrefetch); no value changes.
+      // on its own (sampler.h, texturePrefetch), and then all four maps' texels of the block
+      // usually shaded next (nextBlockCoords, program.h); no value changes.
       raster::texturePrefetch(u.uFloorRoughnessMap, uv);
       raster::texturePrefetch(u.uFloorAOMap, uv);
       raster::texturePrefetch(u.uFloorNormalMap, uv);
+      const vec2<F> next = raster::nextBlockCoords(uv);
+      raster::texturePrefetch(u.uFloorAlbedoMap, next);
+      raster::texturePrefetch(u.uFloorRoughnessMap, next);
+      raster::texturePrefetch(u.uFloorAOMap, next);
+      raster::texturePrefetch(u.uFloorNormalMap, next);
       albedo = raster::texture(u.uFloorAlbedoMap, uv).xyz();
       mra = vec3<F>(F(0.0f), raster::texture(u.uFloorRoughnessMap, uv).x, raster::texture(u.uFloorAOMap, uv).x);
       tn = raster::texture(u.uFloorNormalMap, uv).xyz() * F(2.0f) - vec3<F>(F(1.0f));
@@ -89,6 +95,10 @@ struct GBufferPass {
       uv = in.fragUV;
       raster::texturePrefetch(u.uMRAMap, uv);   // as the floor's, above
       raster::texturePrefetch(u.uNormalMap, uv);
+      const vec2<F> next = raster::nextBlockCoords(uv);
+      raster::texturePrefetch(u.uAlbedoMap, next);
+      raster::texturePrefetch(u.uMRAMap, next);
+      raster::texturePrefetch(u.uNormalMap, next);
       albedo = raster::texture(u.uAlbedoMap, uv).xyz();
       const vec3<F> arm = raster::texture(u.uMRAMap, uv).xyz();
       mra = vec3<F>(arm.z, arm.y, arm.x);

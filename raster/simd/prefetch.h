@@ -39,6 +39,20 @@ inline void prefetchLine(const void* address) {
 #endif
 }
 
+// The 64-byte line holding `address`, into the level-2 cache and those below it, not level 1:
+// for texture lookups' scattered footprints (texturePrefetch, sampler.h), fetched hundreds of
+// cycles before their loads. On the AMD EPYC Zen 4 host the same prefetches into level 1
+// bought a third as much: the deferred G-buffer pass 6.50 -> 5.40 ms with this hint against
+// 6.05 ms with prefetcht0, its lighting pass (the environment map's lookups) 5.36 -> 5.06
+// (640x480, 2 threads, 6 alternated rounds; docs/notes/2026-12-05-prefetch-to-l2.md).
+inline void prefetchLineToL2(const void* address) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht1 %0" : : "m"(*static_cast<const char*>(address)));
+#else
+  (void)address;
+#endif
+}
+
 // Every line that `bytes` bytes from `start` touch.
 inline void prefetchLines(const void* start, size_t bytes) {
   if (bytes == 0) return;

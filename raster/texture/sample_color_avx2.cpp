@@ -5,6 +5,7 @@
 // sample_rgba8_avx2.h, the wraps both use wrap_avx2.h.
 #if RASTER_AVX2
 #include "raster/simd/intrinsics.h"
+#include "raster/simd/prefetch.h"
 
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/linear_taps_avx2.h"
@@ -417,8 +418,8 @@ void prefetchColor8(const Texture& texture, simd::Float8 s, simd::Float8 t) {
   _mm256_store_si256(reinterpret_cast<__m256i*>(rows[0]), first);
   _mm256_store_si256(reinterpret_cast<__m256i*>(rows[1]), second);
   for (int i = 0; i < 8; ++i) {
-    _mm_prefetch(base + (size_t(unsigned(rows[0][i])) << texelShift), _MM_HINT_T0);
-    _mm_prefetch(base + (size_t(unsigned(rows[1][i])) << texelShift), _MM_HINT_T0);
+    simd::prefetchLineToL2(base + (size_t(unsigned(rows[0][i])) << texelShift));
+    simd::prefetchLineToL2(base + (size_t(unsigned(rows[1][i])) << texelShift));
   }
 }
 

@@ -12,6 +12,7 @@
 #define RASTER_RGBA8_ZMM 1
 #include "raster/methods.h"
 #include "raster/simd/intrinsics.h"
+#include "raster/simd/prefetch.h"
 #include "raster/texture/footprint_strips.h"
 #include "raster/texture/lane_loads_avx512.h"
 #include "raster/texture/lookup_filter.h"
@@ -199,8 +200,8 @@ inline bool isRgba8Bilinear(const Texture& t) {
   _mm512_store_si512(units[1], at.right);
   const char* base = reinterpret_cast<const char*>(t.strips8.data());
   for (int i = 0; i < 16; ++i) {
-    _mm_prefetch(base + size_t(unsigned(units[0][i])) * 4, _MM_HINT_T0);
-    _mm_prefetch(base + size_t(unsigned(units[1][i])) * 4, _MM_HINT_T0);
+    simd::prefetchLineToL2(base + size_t(unsigned(units[0][i])) * 4);
+    simd::prefetchLineToL2(base + size_t(unsigned(units[1][i])) * 4);
   }
 }
 

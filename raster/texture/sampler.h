@@ -180,6 +180,8 @@ template <class F>
 // at one uv, each with arithmetic between (the G-buffer's material maps), otherwise waits
 // on their cache misses one lookup after another: the out-of-order window holds about one
 // lookup. Kept where it measured faster (docs/notes/2026-11-26-texel-traffic-gbuffer.md).
+// The lines go to level 2, not level 1 (simd::prefetchLineToL2 says why); a port may also
+// prefetch the block it will shade next (nextBlockCoords, shader/program.h).
 template <class F>
 [[gnu::always_inline]] inline void texturePrefetch(const Sampler2D& sampler, glsl::vec2<F> uv) {
   sampling::prefetchColor(*sampler.texture, uv);

@@ -4,6 +4,7 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
+#include <algorithm>
 #include <type_traits>
 
 #include "raster/simd/intrinsics.h"
@@ -122,27 +123,34 @@ template <class F, class VisitBlock>
     stepY[i] = _mm512_set1_epi32(int32_t(e.dcdy * kBlock));
   }
   const __m512i zero = _mm512_setzero_si512();
-  for (int row = 0; row < rows; ++row) {
-    const int blockY = blockY0 + row * kBlock;
-    uint16_t coverage[16];
-    uint32_t covered = 0;
-    // Three named registers, not an array: at -O2 GCC kept an array's values on the stack,
-    // each column's adds then waiting on the last one's stores.
-    __m512i at0 = value[0], at1 = value[1], at2 = value[2];
-    for (int column = 0; column < columns; ++column) {
-      __mmask16 mask = _mm512_cmpgt_epi32_mask(at0, zero);
-      mask = _mm512_mask_cmpgt_epi32_mask(mask, at1, zero);
-      mask = _mm512_mask_cmpgt_epi32_mask(mask, at2, zero);
-      coverage[column] = mask;
-      covered |= uint32_t(mask != 0) << column;
-      at0 = _mm512_add_epi32(at0, stepX[0]), at1 = _mm512_add_epi32(at1, stepX[1]), at2 = _mm512_add_epi32(at2, stepX[2]);
+  // Four block rows at a time: their coverage masks first, then one loop over the covered
+  // blocks of all four (bit 16 * row + column), row by row, left to right. One loop exit to
+  // mispredict a chunk instead of one a row: the hdr scene's visibility pass, 9 blocks a
+  // triangle and tile, took 4-6% less time.
+  for (int firstRow = 0; firstRow < rows; firstRow += 4) {
+    const int chunkRows = std::min(4, rows - firstRow);
+    uint16_t coverage[64];
+    uint64_t covered = 0;
+    for (int row = 0; row < chunkRows; ++row) {
+      // Three named registers, not an array: at -O2 GCC kept an array's values on the
+      // stack, each column's adds then waiting on the last one's stores.
+      __m512i at0 = value[0], at1 = value[1], at2 = value[2];
+      for (int column = 0; column < columns; ++column) {
+        __mmask16 mask = _mm512_cmpgt_epi32_mask(at0, zero);
+        mask = _mm512_mask_cmpgt_epi32_mask(mask, at1, zero);
+        mask = _mm512_mask_cmpgt_epi32_mask(mask, at2, zero);
+        coverage[16 * row + column] = mask;
+        covered |= uint64_t(mask != 0) << (16 * row + column);
+        at0 = _mm512_add_epi32(at0, stepX[0]), at1 = _mm512_add_epi32(at1, stepX[1]), at2 = _mm512_add_epi32(at2, stepX[2]);
+      }
+      for (int i = 0; i < 3; ++i) value[i] = _mm512_add_epi32(value[i], stepY[i]);
     }
     for (; covered; covered &= covered - 1) {
-      const int column = __builtin_ctz(covered), blockX = blockX0 + column * kBlock;
-      const uint32_t inside = coverage[column] & blockBounds(blockX, blockY, width, height);
+      const int bit = __builtin_ctzll(covered);
+      const int blockX = blockX0 + (bit % 16) * kBlock, blockY = blockY0 + (firstRow + bit / 16) * kBlock;
+      const uint32_t inside = coverage[bit] & blockBounds(blockX, blockY, width, height);
       if (inside) visitBlock(blockX, blockY, inside);
     }
-    for (int i = 0; i < 3; ++i) value[i] = _mm512_add_epi32(value[i], stepY[i]);
   }
   return true;
 }
@@ -181,28 +189,32 @@ template <class F, class VisitBlock>
     stepX[i] = _mm256_set1_epi32(int32_t(-e.dcdx * kBlock));
     stepY[i] = _mm256_set1_epi32(int32_t(e.dcdy * kBlock));
   }
-  for (int row = 0; row < rows; ++row) {
-    const int blockY = blockY0 + row * kBlock;
-    uint16_t coverage[16];
-    uint32_t covered = 0;
-    // Named registers, not arrays (as above: GCC kept an array's values on the stack).
-    __m256i t0 = top[0], t1 = top[1], t2 = top[2], b0 = bottom[0], b1 = bottom[1], b2 = bottom[2];
-    for (int column = 0; column < columns; ++column) {
-      const uint32_t outTop = uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(t0, t1), t2))));
-      const uint32_t outBottom =
-          uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2))));
-      const uint32_t mask = ~(outTop | outBottom << 8) & 0xFFFFu;
-      coverage[column] = uint16_t(mask);
-      covered |= uint32_t(mask != 0) << column;
-      t0 = _mm256_add_epi32(t0, stepX[0]), t1 = _mm256_add_epi32(t1, stepX[1]), t2 = _mm256_add_epi32(t2, stepX[2]);
-      b0 = _mm256_add_epi32(b0, stepX[0]), b1 = _mm256_add_epi32(b1, stepX[1]), b2 = _mm256_add_epi32(b2, stepX[2]);
+  // Four block rows at a time, as the AVX-512 walk above.
+  for (int firstRow = 0; firstRow < rows; firstRow += 4) {
+    const int chunkRows = std::min(4, rows - firstRow);
+    uint16_t coverage[64];
+    uint64_t covered = 0;
+    for (int row = 0; row < chunkRows; ++row) {
+      // Named registers, not arrays (as above: GCC kept an array's values on the stack).
+      __m256i t0 = top[0], t1 = top[1], t2 = top[2], b0 = bottom[0], b1 = bottom[1], b2 = bottom[2];
+      for (int column = 0; column < columns; ++column) {
+        const uint32_t outTop = uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(t0, t1), t2))));
+        const uint32_t outBottom =
+            uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2))));
+        const uint32_t mask = ~(outTop | outBottom << 8) & 0xFFFFu;
+        coverage[16 * row + column] = uint16_t(mask);
+        covered |= uint64_t(mask != 0) << (16 * row + column);
+        t0 = _mm256_add_epi32(t0, stepX[0]), t1 = _mm256_add_epi32(t1, stepX[1]), t2 = _mm256_add_epi32(t2, stepX[2]);
+        b0 = _mm256_add_epi32(b0, stepX[0]), b1 = _mm256_add_epi32(b1, stepX[1]), b2 = _mm256_add_epi32(b2, stepX[2]);
+      }
+      for (int i = 0; i < 3; ++i) top[i] = _mm256_add_epi32(top[i], stepY[i]), bottom[i] = _mm256_add_epi32(bottom[i], stepY[i]);
     }
     for (; covered; covered &= covered - 1) {
-      const int column = __builtin_ctz(covered), blockX = blockX0 + column * kBlock;
-      const uint32_t inside = coverage[column] & blockBounds(blockX, blockY, width, height);
+      const int bit = __builtin_ctzll(covered);
+      const int blockX = blockX0 + (bit % 16) * kBlock, blockY = blockY0 + (firstRow + bit / 16) * kBlock;
+      const uint32_t inside = coverage[bit] & blockBounds(blockX, blockY, width, height);
       if (inside) visitBlock(blockX, blockY, inside);
     }
-    for (int i = 0; i < 3; ++i) top[i] = _mm256_add_epi32(top[i], stepY[i]), bottom[i] = _mm256_add_epi32(bottom[i], stepY[i]);
   }
   return true;
 }

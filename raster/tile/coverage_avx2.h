@@ -97,9 +97,10 @@ constexpr int64_t kEdgeValueLimit = int64_t(1) << 30;
 // steps and every edge value over the walked blocks' pixels lies within +-2^30.
 //
 // Each edge's values at a block's 16 pixels sit in one register, stepped by a vector add
-// from block to block, so no value crosses from the integer registers per block. A row's
-// coverage masks are all found first, then the covered blocks visited: a branch per covered
-// block instead of one per block whose outcome waits on the compares. The values are exact
+// from block to block, so no value crosses from the integer registers per block. The
+// coverage masks of up to four block rows are all found first, then their covered blocks
+// visited: a branch per covered block instead of one per block whose outcome waits on the
+// compares, and one loop exit per four rows (below). The values are exact
 // in 32 bits, so every bit is blockCoverage's; the blocks and their order are the region
 // walk's (walk.h), which visits the same blocks row by row, left to right.
 template <class F, class VisitBlock>
@@ -126,7 +127,7 @@ template <class F, class VisitBlock>
   // Four block rows at a time: their coverage masks first, then one loop over the covered
   // blocks of all four (bit 16 * row + column), row by row, left to right. One loop exit to
   // mispredict a chunk instead of one a row: the hdr scene's visibility pass, 9 blocks a
-  // triangle and tile, took 4-6% less time.
+  // triangle and tile, took 4-6% less time (docs/notes/2026-12-05-block-walk-and-cold-frames.md).
   for (int firstRow = 0; firstRow < rows; firstRow += 4) {
     const int chunkRows = std::min(4, rows - firstRow);
     uint16_t coverage[64];

@@ -158,11 +158,14 @@ TEST_SUITE("texture") {
               const float sMax = round % 8 == 3 ? (float(w) - 0.75f) / float(w) : 1.5f;
               // Even rounds lay the lanes out as a shaded block's (raster/tile/lane_layout.h:
               // rows 2-3 in lanes 8-15), which the NEAREST lookups of 32-bit texels read as
-              // four rows where the block's texels are the texture's; odd rounds side by side.
-              const bool block = round % 2 == 0;
+              // four rows where the block's texels are the texture's, every other one as a
+              // window-system buffer's block (its memory rows swapped, so lanes 8-15 read
+              // the lower texel rows): a post pass reading a target at its own resolution
+              // takes either (blendHalfOwnResolution16). Odd rounds side by side.
+              const bool block = round % 2 == 0, swapped = round % 4 == 2;
               for (int i = 0; i < 16; ++i) {
                 const int dx = (i % 8 / 4) * 2 + (i & 1) + (block ? 0 : (i / 8) * 4);
-                const int dy = ((i >> 1) & 1) + (block ? (i / 8) * 2 : 0);
+                const int dy = ((i >> 1) & 1) + (block ? (swapped ? 1 - i / 8 : i / 8) * 2 : 0);
                 const bool centre = round % 4 != 3;
                 s16[i] = centre ? (float(px + dx) + 0.5f) / (scale * float(w)) : uniform(rng, -0.5f, sMax);
                 t16[i] = centre ? (float(py + dy) + 0.5f) / (scale * float(h)) : uniform(rng, -0.5f, 1.5f);

@@ -188,23 +188,35 @@ template <int R>
 // The blend is blendHalfPairs16's, lane by lane: rows, then columns. False (nothing written)
 // when the footprints do not fit, or the texture is under four texels along an axis; lanes
 // 0 and 15, opposite corners of the block, are compared first, so that lookups that spread
-// wider pay a few instructions only.
+// wider pay a few instructions only, and give the window's corner with lane 8.
 [[gnu::always_inline]] inline bool blendHalfWindow16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                      simd::Float8x2 out[4]) {
-  auto cornersSpread = [](__m512i i) __attribute__((always_inline)) {
-    return std::abs(_mm_cvtsi128_si32(_mm512_castsi512_si128(i)) - _mm_extract_epi32(_mm512_extracti32x4_epi32(i, 3), 3));
+  auto lane = [](__m512i i, int k) __attribute__((always_inline)) {
+    return _mm_extract_epi32(_mm512_extracti32x4_epi32(i, k / 4), k % 4);
   };
-  if (t.width < 4 || t.height < 4 || cornersSpread(x.i0) > 2 || cornersSpread(y.i0) > 2) return false;
+  const int x0 = lane(x.i0, 0), x15 = lane(x.i0, 15), y0 = lane(y.i0, 0), y15 = lane(y.i0, 15);
+  if (t.width < 4 || t.height < 4 || std::abs(x0 - x15) > 2 || std::abs(y0 - y15) > 2) return false;
   // The window's corner: the lowest first texel, moved in to keep the window in the texture.
   // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails).
-  const int originX = std::min(_mm512_reduce_min_epi32(x.i0), t.width - 4);
-  const int originY = std::min(_mm512_reduce_min_epi32(y.i0), t.height - 4);
-  const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
-  const __m512i dx0 = _mm512_sub_epi32(x.i0, cornerX), dx1 = _mm512_sub_epi32(x.i1, cornerX);
-  const __m512i dy0 = _mm512_sub_epi32(y.i0, cornerY), dy1 = _mm512_sub_epi32(y.i1, cornerY);
-  const __m512i three = _mm512_set1_epi32(3);
-  if (_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) | _mm512_cmpgt_epu32_mask(dy0, three) |
-      _mm512_cmpgt_epu32_mask(dy1, three))
+  // Lanes 0 and 15 are the block's left and right columns; lanes 0 and 8 hold its top
+  // row, in an offscreen target's block and in a window-system buffer's (lane_layout.h).
+  // Where the lowest texels lie elsewhere (a mirrored lookup), the lanes' least ones.
+  __m512i dx0, dx1, dy0, dy1;
+  int originX = 0, originY = 0;
+  auto fits = [&](int lowX, int lowY) __attribute__((always_inline)) {
+    originX = std::min(lowX, t.width - 4);
+    originY = std::min(lowY, t.height - 4);
+    const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
+    dx0 = _mm512_sub_epi32(x.i0, cornerX);
+    dx1 = _mm512_sub_epi32(x.i1, cornerX);
+    dy0 = _mm512_sub_epi32(y.i0, cornerY);
+    dy1 = _mm512_sub_epi32(y.i1, cornerY);
+    const __m512i three = _mm512_set1_epi32(3);
+    return !(_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) |
+             _mm512_cmpgt_epu32_mask(dy0, three) | _mm512_cmpgt_epu32_mask(dy1, three));
+  };
+  if (!fits(std::min(x0, x15), std::min(y0, lane(y.i0, 8))) &&
+      !fits(_mm512_reduce_min_epi32(x.i0), _mm512_reduce_min_epi32(y.i0)))
     return false;
   // The window's rows, texels 0..3 rgba each, turned into one plane a channel: element
   // 4 * column + row (lanesToPlanes' 4x4 transpose in each 128-bit block, block = column).

@@ -161,11 +161,14 @@ TEST_SUITE("texture") {
               // four rows where the block's texels are the texture's, every other one as a
               // window-system buffer's block (its memory rows swapped, so lanes 8-15 read
               // the lower texel rows): a post pass reading a target at its own resolution
-              // takes either (blendHalfOwnResolution16). Odd rounds side by side.
-              const bool block = round % 2 == 0, swapped = round % 4 == 2;
+              // takes either (blendHalfOwnResolution16). One in four of those reads its rows
+              // upside down, as a mirrored lookup would (blendHalfWindow16 then finds its
+              // window's corner in other lanes). Odd rounds side by side.
+              const bool block = round % 2 == 0, swapped = round % 4 == 2, mirrored = round % 8 == 6;
               for (int i = 0; i < 16; ++i) {
                 const int dx = (i % 8 / 4) * 2 + (i & 1) + (block ? 0 : (i / 8) * 4);
-                const int dy = ((i >> 1) & 1) + (block ? (swapped ? 1 - i / 8 : i / 8) * 2 : 0);
+                const int blockRow = ((i >> 1) & 1) + (swapped ? 1 - i / 8 : i / 8) * 2;
+                const int dy = block ? (mirrored ? 3 - blockRow : blockRow) : ((i >> 1) & 1);
                 const bool centre = round % 4 != 3;
                 s16[i] = centre ? (float(px + dx) + 0.5f) / (scale * float(w)) : uniform(rng, -0.5f, sMax);
                 t16[i] = centre ? (float(py + dy) + 0.5f) / (scale * float(h)) : uniform(rng, -0.5f, 1.5f);

@@ -92,35 +92,22 @@ void Renderer::beginPassHistory() {
   history_->passes.push_back(std::move(pass));
 }
 
-// Places the first `chunks` setup chunks in the pass's lists, in chunk order: where each
-// chunk's triangles and planes land, the lists grown to hold them, the counters summed. The
-// triangles are copied there by copyChunk, when the draw is binned.
-void Renderer::placeChunks(int chunks) {
-  size_t triangleCount = triangles_.size(), planeCount = varyingPlanes_.size();
+// Appends what the first `chunks` setup chunks spilled past their windows to the pass's
+// lists, each chunk's after the last, its planes with it; sums the chunks' counters.
+void Renderer::appendSpills(int chunks) {
   for (int c = 0; c < chunks; ++c) {
     SetupChunk& chunk = setupChunks_[size_t(c)];
-    chunk.triangleAt = triangleCount;
-    chunk.planeAt = planeCount;
-    triangleCount += chunk.triangles.size();
-    planeCount += chunk.varyingPlanes.size();
     counters_ += chunk.counters;
-    if (history_) triangleOrigins_.insert(triangleOrigins_.end(), chunk.origins.begin(), chunk.origins.end());
+    const SetupWindow& window = chunk.window;
+    chunk.spillAt = triangles_.size();
+    if (window.spill.empty()) continue;
+    const uint32_t planeAt = uint32_t(varyingPlanes_.size());
+    for (SetupTriangle tri : window.spill) {
+      tri.varyingBase += planeAt;
+      triangles_.push_back(tri);
+    }
+    varyingPlanes_.insert(varyingPlanes_.end(), window.spillPlanes.begin(), window.spillPlanes.end());
   }
-  triangles_.resize(triangleCount);
-  varyingPlanes_.resize(planeCount);
-}
-
-// Copies a placed chunk into the pass's lists; its varying-plane indices move by where its
-// planes land.
-void Renderer::copyChunk(int c) {
-  const SetupChunk& chunk = setupChunks_[size_t(c)];
-  SetupTriangle* to = triangles_.data() + chunk.triangleAt;
-  for (const SetupTriangle& tri : chunk.triangles) {
-    *to = tri;
-    to->varyingBase += uint32_t(chunk.planeAt);
-    ++to;
-  }
-  std::copy(chunk.varyingPlanes.begin(), chunk.varyingPlanes.end(), varyingPlanes_.begin() + std::ptrdiff_t(chunk.planeAt));
 }
 
 void Renderer::draw(std::unique_ptr<ShaderInstance> shader, const VertexStream& vertices,
@@ -203,14 +190,15 @@ void Renderer::shadeVertices(const ShaderInstance& shader, const VertexStream& v
 }
 
 // Assembles and sets up a draw's primitives into the pass's lists. Large draws are set up
-// in chunks of primitives in parallel, each into its own lists, which are then placed in
-// chunk order: the same triangles in the same order as one pass through them, for any
-// thread count. Returns the number of chunks; with more than one, bin() copies them into
-// the lists.
+// in chunks of primitives in parallel, each into the window of the lists reserved for it, a
+// slot per primitive (setup.h): the same triangles in the same order as one pass through
+// them, for any thread count, with holes where primitives were culled, which no bin
+// names. Pixel history and the stage views, which read the lists whole, take one chunk.
+// Returns the number of chunks.
 int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount,
                            size_t primitives) {
   const AssemblyInput input{setup, shaded_, indices, vertexCount, viewport_, !scalarOnly_};
-  const int chunks = pool_.threads() > 1 && primitives >= 2 * kSetupChunkPrimitives
+  const int chunks = pool_.threads() > 1 && primitives >= 2 * kSetupChunkPrimitives && !history_ && !viewRecorder_
                          ? int(std::min<size_t>(primitives / kSetupChunkPrimitives, size_t(4 * pool_.threads())))
                          : 1;
   if (chunks == 1) {
@@ -218,52 +206,74 @@ int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> in
     return 1;
   }
   if (setupChunks_.size() < size_t(chunks)) setupChunks_.resize(size_t(chunks));
+  const size_t firstTriangle = triangles_.size(), firstPlane = varyingPlanes_.size();
+  const size_t planesPerTriangle = size_t(setup.varyingFloats);
+  triangles_.resize(firstTriangle + primitives);
+  varyingPlanes_.resize(firstPlane + primitives * planesPerTriangle);
+  const auto chunkStart = [&](int c) { return primitives * size_t(c) / size_t(chunks); };
   pool_.parallelFor(chunks, [&](int c) {
     SetupChunk& chunk = setupChunks_[size_t(c)];
-    chunk.triangles.clear();
-    chunk.varyingPlanes.clear();
-    chunk.origins.clear();
+    SetupWindow& window = chunk.window;
+    window.first = window.next = firstTriangle + chunkStart(c);
+    window.end = firstTriangle + chunkStart(c + 1);
+    window.firstPlane = window.nextPlane = firstPlane + chunkStart(c) * planesPerTriangle;
+    window.spilling = false;
+    window.spill.clear();
+    window.spillPlanes.clear();
     chunk.counters = {};
-    assemblePrimitives(input, primitives * size_t(c) / size_t(chunks), primitives * size_t(c + 1) / size_t(chunks),
-                       {chunk.triangles, chunk.varyingPlanes, history_ ? &chunk.origins : nullptr}, chunk.counters);
+    assemblePrimitives(input, chunkStart(c), chunkStart(c + 1), {triangles_, varyingPlanes_, nullptr, &window},
+                       chunk.counters);
   });
-  placeChunks(chunks);
+  appendSpills(chunks);
   return chunks;
 }
 
-// Bins triangles [firstTriangle, end) (geometry/bin.h), first copying them in from the
-// draw's `setupChunks` when there is more than one. Large draws are binned in parts,
-// consecutive ranges of triangles in parallel, each into its own bins; appending those in
-// range order gives every tile its triangles in API order. A part copies the chunks it
-// bins, so it bins triangles it has just written, in one task.
+// Bins the draw's triangles (geometry/bin.h): [firstTriangle, end), or with more than one
+// setup chunk, each chunk's window, then what it spilled. Large draws are binned in parts,
+// consecutive ranges of triangles (whole chunks) in parallel, each into its own bins;
+// appending those in range order gives every tile its triangles in API order.
 void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
-  const uint32_t end = uint32_t(triangles_.size()), count = end - firstTriangle;
+  // Chunk c's triangles, in API order: its window's written slots, then its spill.
+  const auto binChunk = [&](TileBins& into, int c) {
+    const SetupChunk& chunk = setupChunks_[size_t(c)];
+    return into.binTriangles(triangles_, uint32_t(chunk.window.first), uint32_t(chunk.window.next)) +
+           into.binTriangles(triangles_, uint32_t(chunk.spillAt), uint32_t(chunk.spillAt + chunk.window.spill.size()));
+  };
+  uint32_t count = uint32_t(triangles_.size()) - firstTriangle;
+  if (setupChunks > 1) {
+    count = 0;
+    for (int c = 0; c < setupChunks; ++c)
+      count += uint32_t(setupChunks_[size_t(c)].window.next - setupChunks_[size_t(c)].window.first +
+                        setupChunks_[size_t(c)].window.spill.size());
+  }
   // A part per thread, of at least half a setup chunk's triangles (each part's own bins
   // cost a pass over every tile to empty and append), and whole chunks to each.
   const int parts = std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)),
                               setupChunks > 1 ? setupChunks : pool_.threads()});
   if (parts <= 1) {
-    if (setupChunks > 1) pool_.parallelFor(setupChunks, [&](int c) { copyChunk(c); });
-    counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, end);
+    if (setupChunks == 1) {
+      counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, uint32_t(triangles_.size()));
+      return;
+    }
+    for (int c = 0; c < setupChunks; ++c) counters_.tileBinEntries += binChunk(bins_, c);
     return;
   }
   if (binParts_.size() < size_t(parts - 1)) binParts_.resize(size_t(parts - 1));
   // Part p takes the chunks [firstChunk(p), firstChunk(p + 1)), or without chunks an even
   // share of the triangles.
   const auto firstChunk = [&](int p) { return setupChunks * p / parts; };
-  const auto partStart = [&](int p) {
-    if (p == parts) return end;
-    if (setupChunks > 1) return uint32_t(setupChunks_[size_t(firstChunk(p))].triangleAt);
-    return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts));
-  };
+  const auto partStart = [&](int p) { return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts)); };
   std::vector<uint64_t> entries(static_cast<size_t>(parts));
   pool_.parallelFor(parts, [&](int p) {
-    if (setupChunks > 1)
-      for (int c = firstChunk(p); c < firstChunk(p + 1); ++c) copyChunk(c);
     // The first part goes straight into the pass's bins: it follows what they hold.
     TileBins& part = p == 0 ? bins_ : binParts_[size_t(p - 1)];
     if (p > 0) part.reset(framebuffer_.width, framebuffer_.height);
-    entries[size_t(p)] = part.binTriangles(triangles_, partStart(p), partStart(p + 1));
+    if (setupChunks == 1) {
+      entries[size_t(p)] = part.binTriangles(triangles_, partStart(p), partStart(p + 1));
+      return;
+    }
+    entries[size_t(p)] = 0;
+    for (int c = firstChunk(p); c < firstChunk(p + 1); ++c) entries[size_t(p)] += binChunk(part, c);
   });
   for (int p = 0; p < parts; ++p) {
     if (p > 0) bins_.append(binParts_[size_t(p - 1)]);

@@ -64,13 +64,13 @@ class Renderer {
   void setPixelHistory(PixelHistory* history) { history_ = history; }
 
  private:
-  // One chunk of a draw set up in parallel: its own lists, kept so no draw allocates them anew.
+  // One chunk of a draw set up in parallel: its window of the pass's lists (setup.h), whose
+  // spill lists are kept so that no draw allocates them anew, and where its spilled
+  // triangles went.
   struct SetupChunk {
-    TriangleList triangles;
-    PlaneList varyingPlanes;
-    std::vector<uint32_t> origins;   // pixel history only
+    SetupWindow window;
     PipelineCounters counters;
-    size_t triangleAt = 0, planeAt = 0;   // where its lists land in the pass's
+    size_t spillAt = 0;
   };
   // Draws of fewer primitives than twice this are set up in one piece, and binned so.
   static constexpr size_t kSetupChunkPrimitives = 1024;
@@ -82,8 +82,7 @@ class Renderer {
   void beginPassHistory();
   void shadeVertices(const ShaderInstance& shader, const VertexStream& vertices, int instanceCount);
   int setUpChunked(const SetupState& setup, std::span<const uint32_t> indices, int vertexCount, size_t primitives);
-  void placeChunks(int chunks);
-  void copyChunk(int c);
+  void appendSpills(int chunks);
   void bin(uint32_t firstTriangle, int setupChunks);
 
   ThreadPool pool_;

@@ -83,7 +83,7 @@ bool setupTriangle(const SetupState& state, const float* v0, const float* v1, co
   // 128 bytes were copied through vector registers that waited on the scalar stores just
   // made: a fifth of setup's time.) The list's allocator leaves it unzeroed; every field is
   // set below.
-  SetupTriangle& tri = out.triangles.emplace_back();
+  SetupTriangle& tri = out.appendTriangle();
   tri.minX = minX;
   tri.maxX = maxX;
   tri.minY = minY;
@@ -138,9 +138,7 @@ void setup_detail::appendVaryingPlanes(const SetupState& state, const PlaneSetup
               oow2 = perspective ? v2[kWindow + 3] : 1.0f;
   // The list grows once per triangle (without zeroing), and the loop, free of push_back's
   // capacity checks, is one the compiler vectorizes: the same operations in every lane.
-  tri.varyingBase = uint32_t(out.varyingPlanes.size());
-  out.varyingPlanes.resize(out.varyingPlanes.size() + size_t(state.varyingFloats));
-  Plane* planes = out.varyingPlanes.data() + tri.varyingBase;
+  Plane* planes = out.appendPlanes(tri, state.varyingFloats);
   const float *values0 = v0 + kVaryings, *values1 = v1 + kVaryings, *values2 = v2 + kVaryings;
   for (int v = 0; v < state.varyingFloats; ++v)
     planes[v] = planeOf(s, values0[v] * oow0, values1[v] * oow1, values2[v] * oow2);

@@ -45,11 +45,44 @@ struct SetupState {
   uint32_t drawIndex = 0;            // which draw of the pass the triangles belong to
 };
 
-// Where set-up triangles are appended: the triangle and, for each, its varying planes.
+// The part of the pass's lists reserved for a chunk of a large draw set up in parallel
+// (Renderer::setUpChunked): a slot for each of its primitives, written in place, so that
+// nothing is copied after. What does not fit (clipping that makes more triangles than the
+// chunk has primitives) goes on in `spill`, which the renderer appends after the draw.
+struct SetupWindow {
+  size_t first = 0, next = 0, end = 0;   // the window's slots in the pass's triangles
+  size_t firstPlane = 0, nextPlane = 0;  // and in its varying planes
+  bool spilling = false;                 // the window is full: the last triangle went to spill
+  TriangleList spill;
+  PlaneList spillPlanes;                 // the spilled triangles' planes (varyingBase counts from 0 here)
+};
+
+// Where set-up triangles are appended: the triangle and, for each, its varying planes,
+// at the lists' ends, or into a window of them (already sized).
 struct SetupLists {
   TriangleList& triangles;
   PlaneList& varyingPlanes;
   std::vector<uint32_t>* origins = nullptr;   // pixel history only: each triangle's origin (contract.h)
+  SetupWindow* window = nullptr;
+
+  // A new triangle's record, left for the caller to fill (the list's allocator zeroes nothing).
+  SetupTriangle& appendTriangle() const {
+    if (!window) return triangles.emplace_back();
+    window->spilling = window->next == window->end;
+    return window->spilling ? window->spill.emplace_back() : triangles[window->next++];
+  }
+  // `count` planes for the triangle appendTriangle just gave: tri.varyingBase set.
+  Plane* appendPlanes(SetupTriangle& tri, int count) const {
+    PlaneList& list = window && window->spilling ? window->spillPlanes : varyingPlanes;
+    if (window && !window->spilling) {
+      tri.varyingBase = uint32_t(window->nextPlane);
+      window->nextPlane += size_t(count);
+      return list.data() + tri.varyingBase;
+    }
+    tri.varyingBase = uint32_t(list.size());
+    list.resize(list.size() + size_t(count));
+    return list.data() + tri.varyingBase;
+  }
 };
 
 // Polygon offset units in depth-buffer terms: (float)(units * mrd * 2) computed in double,

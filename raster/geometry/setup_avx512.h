@@ -236,7 +236,7 @@ struct BatchRecords {
                                                  const BatchRecords& r, SetupLists out) {
   for (uint32_t lanes = b.accepted; lanes; lanes &= lanes - 1) {
     const int lane = __builtin_ctz(lanes);
-    SetupTriangle& tri = out.triangles.emplace_back();
+    SetupTriangle& tri = out.appendTriangle();
     for (int i = 0; i < 3; ++i) tri.edge[i] = EdgeFunction{r.edgeC[i][lane], r.edgeDcdx[i][lane], r.edgeDcdy[i][lane]};
     tri.minX = r.minX[lane];
     tri.minY = r.minY[lane];

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "backends/backends.h"
 #include "raster/methods.h"
+#include "scenes/soup/soup_check.h"
 #include "tests/method_sets.h"
 #include "tests/scene_test_helpers.h"
 
@@ -122,6 +124,41 @@ TEST_SUITE("determinism_paths") {
         auto backend = scenes::makeRasterBackend(threads);
         checkSameBytes(reference, testing_support::renderScene(*backend, scene, 0.9f, 333, 217));
       }
+    }
+  }
+
+  // A chunk of a large draw is set up into a window of the pass's lists with a slot per
+  // primitive (renderer.cpp, geometry/setup.h); what clipping makes beyond those slots
+  // spills into a list appended after the draw and binned right after its chunk. Here every
+  // triangle reaches far past the viewport's guard band, so each is clipped into two and
+  // every chunk spills; all lie at one depth, so under the LESS test each pixel keeps the
+  // first triangle to reach it, and any triangle out of API order shows. The bytes must be
+  // one thread's (which sets up in one piece), and llvmpipe's.
+  TEST_CASE("a large draw whose clipping makes more triangles than it has primitives gives the bytes of one thread") {
+    scenes::soup::Soup soup;
+    soup.width = 160;
+    soup.height = 120;
+    for (int i = 0; i < 4096; ++i) {
+      // A sliver from a point in the frame to an apex 10^4 viewport widths to the left or
+      // right, crossing the slivers started before it.
+      const float x = float(i % 64) / 32.0f - 1.0f, y = float(i / 64) / 32.0f - 1.0f;
+      const float apex = i % 2 ? 1e4f : -1e4f;
+      soup.triangles.push_back({scenes::soup::Kind::FarOut,
+                                {glm::vec4(x, y, 0.5f, 1.0f), glm::vec4(x + 0.02f, y + 0.06f, 0.5f, 1.0f),
+                                 glm::vec4(apex, y + 0.03f * float(i % 5), 0.5f, 1.0f)}});
+    }
+    auto reference = scenes::makeRasterBackend(1);
+    const scenes::soup::Rendering one = scenes::soup::SoupRenderer(*reference, soup.width, soup.height).render(soup);
+    auto gl = scenes::makeGlBackend();
+    const scenes::soup::Verdict againstGl =
+        scenes::soup::compare(soup, one, scenes::soup::SoupRenderer(*gl, soup.width, soup.height).render(soup));
+    CHECK(againstGl.covered > soup.width * soup.height / 2);
+    CHECK(againstGl.identical());
+    for (int threads : {2, 7, 16}) {
+      INFO(threads << " threads");
+      auto backend = scenes::makeRasterBackend(threads);
+      const scenes::soup::Rendering many = scenes::soup::SoupRenderer(*backend, soup.width, soup.height).render(soup);
+      CHECK(scenes::soup::compare(soup, many, one).identical());
     }
   }
 

@@ -152,7 +152,7 @@ struct SetupTriangle {
 };
 
 // A pass's set-up triangles and their varying planes: lists that grow without zeroing
-// (util/default_init.h), since the renderer sizes them before copying its chunks in.
+// (util/default_init.h), since the renderer sizes them before its setup chunks write them.
 using TriangleList = GrowableList<SetupTriangle>;
 using PlaneList = GrowableList<Plane>;
 

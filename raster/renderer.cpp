@@ -216,7 +216,7 @@ int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> in
     SetupWindow& window = chunk.window;
     window.first = window.next = firstTriangle + chunkStart(c);
     window.end = firstTriangle + chunkStart(c + 1);
-    window.firstPlane = window.nextPlane = firstPlane + chunkStart(c) * planesPerTriangle;
+    window.nextPlane = firstPlane + chunkStart(c) * planesPerTriangle;
     window.spilling = false;
     window.spill.clear();
     window.spillPlanes.clear();
@@ -242,9 +242,7 @@ void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
   uint32_t count = uint32_t(triangles_.size()) - firstTriangle;
   if (setupChunks > 1) {
     count = 0;
-    for (int c = 0; c < setupChunks; ++c)
-      count += uint32_t(setupChunks_[size_t(c)].window.next - setupChunks_[size_t(c)].window.first +
-                        setupChunks_[size_t(c)].window.spill.size());
+    for (int c = 0; c < setupChunks; ++c) count += uint32_t(setupChunks_[size_t(c)].window.written());
   }
   // A part per thread, of at least half a setup chunk's triangles (each part's own bins
   // cost a pass over every tile to empty and append), and whole chunks to each.

@@ -51,10 +51,11 @@ struct SetupState {
 // chunk has primitives) goes on in `spill`, which the renderer appends after the draw.
 struct SetupWindow {
   size_t first = 0, next = 0, end = 0;   // the window's slots in the pass's triangles
-  size_t firstPlane = 0, nextPlane = 0;  // and in its varying planes
+  size_t nextPlane = 0;                  // the next of its slots in the pass's varying planes
   bool spilling = false;                 // the window is full: the last triangle went to spill
   TriangleList spill;
   PlaneList spillPlanes;                 // the spilled triangles' planes (varyingBase counts from 0 here)
+  size_t written() const { return next - first + spill.size(); }
 };
 
 // Where set-up triangles are appended: the triangle and, for each, its varying planes,
@@ -73,12 +74,12 @@ struct SetupLists {
   }
   // `count` planes for the triangle appendTriangle just gave: tri.varyingBase set.
   Plane* appendPlanes(SetupTriangle& tri, int count) const {
-    PlaneList& list = window && window->spilling ? window->spillPlanes : varyingPlanes;
     if (window && !window->spilling) {
       tri.varyingBase = uint32_t(window->nextPlane);
       window->nextPlane += size_t(count);
-      return list.data() + tri.varyingBase;
+      return varyingPlanes.data() + tri.varyingBase;
     }
+    PlaneList& list = window ? window->spillPlanes : varyingPlanes;
     tri.varyingBase = uint32_t(list.size());
     list.resize(list.size() + size_t(count));
     return list.data() + tri.varyingBase;

@@ -179,6 +179,12 @@ template <int R>
   out[3] = simd::Float8x2(_mm512_shuffle_ps(t1, t3, 0xEE));
 }
 
+// Lane K of sixteen 32-bit lanes.
+template <int K>
+[[gnu::always_inline]] inline int laneOf(__m512i v) {
+  return _mm_extract_epi32(_mm512_extracti32x4_epi32(v, K / 4), K % 4);
+}
+
 // Bilinear RGBA16F for two groups whose sixteen footprints all lie in one 4x4 texel window,
 // as where a 4x4 pixel block samples a texture of half its resolution (the hdr composite's
 // bloom lookup: texels x/2 - 1 .. x/2 + 2): four 32-byte loads, one a window row, turned
@@ -191,10 +197,7 @@ template <int R>
 // wider pay a few instructions only, and give the window's corner with lane 8.
 [[gnu::always_inline]] inline bool blendHalfWindow16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                      simd::Float8x2 out[4]) {
-  auto lane = [](__m512i i, int k) __attribute__((always_inline)) {
-    return _mm_extract_epi32(_mm512_extracti32x4_epi32(i, k / 4), k % 4);
-  };
-  const int x0 = lane(x.i0, 0), x15 = lane(x.i0, 15), y0 = lane(y.i0, 0), y15 = lane(y.i0, 15);
+  const int x0 = laneOf<0>(x.i0), x15 = laneOf<15>(x.i0), y0 = laneOf<0>(y.i0), y15 = laneOf<15>(y.i0);
   if (t.width < 4 || t.height < 4 || std::abs(x0 - x15) > 2 || std::abs(y0 - y15) > 2) return false;
   // The window's corner: the lowest first texel, moved in to keep the window in the texture.
   // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails).
@@ -215,7 +218,7 @@ template <int R>
     return !(_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) |
              _mm512_cmpgt_epu32_mask(dy0, three) | _mm512_cmpgt_epu32_mask(dy1, three));
   };
-  if (!fits(std::min(x0, x15), std::min(y0, lane(y.i0, 8))) &&
+  if (!fits(std::min(x0, x15), std::min(y0, laneOf<8>(y.i0))) &&
       !fits(_mm512_reduce_min_epi32(x.i0), _mm512_reduce_min_epi32(y.i0)))
     return false;
   // The window's rows, texels 0..3 rgba each, turned into one plane a channel: element

@@ -11,7 +11,7 @@
 
 #include "raster/methods.h"
 #include "raster/simd/intrinsics.h"
-#include "raster/texture/sample_half_avx512.h"
+#include "raster/texture/sample_half_grid_avx512.h"
 #include "raster/texture/sampler.h"
 
 namespace raster::sampling {

@@ -2,8 +2,8 @@
 // every tap is the same down a 4x4 block's columns and along its rows, as where a full-screen
 // pass's coordinates follow the pixel grid (the bloom upsample, reading a mip of half its
 // size). Each texel row is then blended once per block column instead of once per lane.
-// The lane-by-lane grid, and the taps, windows and transposes this shares with it, are in
-// sample_half_avx512.h; lookupColorGrid3x3 (sampler_avx2.h) tries this one first. Same
+// The lane-by-lane grid and the taps this shares with it are in sample_half_grid_avx512.h,
+// the windows and transposes in sample_half_avx512.h; lookupColorGrid3x3 (sampler_avx2.h) tries this one first. Same
 // operations on the same texels per lane, so the same bits.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "raster/simd/intrinsics.h"
-#include "raster/texture/sample_half_avx512.h"
+#include "raster/texture/sample_half_grid_avx512.h"
 #include "raster/texture/texture.h"
 
 namespace raster::sampling {

@@ -9,6 +9,7 @@
 #include "raster/simd/isa.h"
 #if RASTER_AVX2
 #include "raster/texture/sample_half_avx512.h"
+#include "raster/texture/sample_half_grid_avx512.h"
 #include "raster/texture/sample_half_separable_avx512.h"
 #include "raster/texture/sample_nearest_avx512.h"
 #include "raster/texture/sample_rgba8_avx512.h"

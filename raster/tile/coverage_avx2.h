@@ -92,6 +92,22 @@ constexpr int64_t kEdgeValueLimit = int64_t(1) << 30;
 #endif
 }
 
+// The covered blocks of up to four block rows from (blockX0, blockY0), row by row, left to
+// right: bit 16 * row + column of `covered` is set where coverage[16 * row + column], the
+// block's pixel mask, has a pixel; each goes to visitBlock with the pixels inside the
+// framebuffer, if any are.
+template <class VisitBlock>
+[[gnu::always_inline]] inline void visitCoveredBlocks(const uint16_t (&coverage)[64], uint64_t covered, int blockX0,
+                                                      int blockY0, int width, int height, VisitBlock& visitBlock) {
+  constexpr int kBlock = limits::kBlockSize;
+  for (; covered; covered &= covered - 1) {
+    const int bit = __builtin_ctzll(covered);
+    const int blockX = blockX0 + (bit % 16) * kBlock, blockY = blockY0 + (bit / 16) * kBlock;
+    const uint32_t inside = coverage[bit] & blockBounds(blockX, blockY, width, height);
+    if (inside) visitBlock(blockX, blockY, inside);
+  }
+}
+
 #if RASTER_ZMM_PAIRS
 // walkSmallTriangleBlocks (coverage.h) for Float8: it applies where every edge has small
 // steps and every edge value over the walked blocks' pixels lies within +-2^30.
@@ -146,12 +162,7 @@ template <class F, class VisitBlock>
       }
       for (int i = 0; i < 3; ++i) value[i] = _mm512_add_epi32(value[i], stepY[i]);
     }
-    for (; covered; covered &= covered - 1) {
-      const int bit = __builtin_ctzll(covered);
-      const int blockX = blockX0 + (bit % 16) * kBlock, blockY = blockY0 + (firstRow + bit / 16) * kBlock;
-      const uint32_t inside = coverage[bit] & blockBounds(blockX, blockY, width, height);
-      if (inside) visitBlock(blockX, blockY, inside);
-    }
+    visitCoveredBlocks(coverage, covered, blockX0, blockY0 + firstRow * kBlock, width, height, visitBlock);
   }
   return true;
 }
@@ -210,12 +221,7 @@ template <class F, class VisitBlock>
       }
       for (int i = 0; i < 3; ++i) top[i] = _mm256_add_epi32(top[i], stepY[i]), bottom[i] = _mm256_add_epi32(bottom[i], stepY[i]);
     }
-    for (; covered; covered &= covered - 1) {
-      const int bit = __builtin_ctzll(covered);
-      const int blockX = blockX0 + (bit % 16) * kBlock, blockY = blockY0 + (firstRow + bit / 16) * kBlock;
-      const uint32_t inside = coverage[bit] & blockBounds(blockX, blockY, width, height);
-      if (inside) visitBlock(blockX, blockY, inside);
-    }
+    visitCoveredBlocks(coverage, covered, blockX0, blockY0 + firstRow * kBlock, width, height, visitBlock);
   }
   return true;
 }

@@ -233,12 +233,6 @@ int Renderer::setUpChunked(const SetupState& setup, std::span<const uint32_t> in
 // consecutive ranges of triangles (whole chunks) in parallel, each into its own bins;
 // appending those in range order gives every tile its triangles in API order.
 void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
-  // Chunk c's triangles, in API order: its window's written slots, then its spill.
-  const auto binChunk = [&](TileBins& into, int c) {
-    const SetupChunk& chunk = setupChunks_[size_t(c)];
-    return into.binTriangles(triangles_, uint32_t(chunk.window.first), uint32_t(chunk.window.next)) +
-           into.binTriangles(triangles_, uint32_t(chunk.spillAt), uint32_t(chunk.spillAt + chunk.window.spill.size()));
-  };
   uint32_t count = uint32_t(triangles_.size()) - firstTriangle;
   if (setupChunks > 1) {
     count = 0;
@@ -246,32 +240,35 @@ void Renderer::bin(uint32_t firstTriangle, int setupChunks) {
   }
   // A part per thread, of at least half a setup chunk's triangles (each part's own bins
   // cost a pass over every tile to empty and append), and whole chunks to each.
-  const int parts = std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)),
-                              setupChunks > 1 ? setupChunks : pool_.threads()});
-  if (parts <= 1) {
+  const int parts = std::max(1, std::min({pool_.threads(), int(count / (kSetupChunkPrimitives / 2)),
+                                          setupChunks > 1 ? setupChunks : pool_.threads()}));
+  // Part p into `into`: the chunks [setupChunks * p / parts, setupChunks * (p + 1) / parts),
+  // each its window's written slots, then its spill (API order); without chunks, an even
+  // share of the triangles.
+  const auto binPart = [&](TileBins& into, int p) {
     if (setupChunks == 1) {
-      counters_.tileBinEntries += bins_.binTriangles(triangles_, firstTriangle, uint32_t(triangles_.size()));
-      return;
+      const auto start = [&](int q) { return firstTriangle + uint32_t(uint64_t(count) * uint32_t(q) / uint32_t(parts)); };
+      return into.binTriangles(triangles_, start(p), start(p + 1));
     }
-    for (int c = 0; c < setupChunks; ++c) counters_.tileBinEntries += binChunk(bins_, c);
+    uint64_t entries = 0;
+    for (int c = setupChunks * p / parts; c < setupChunks * (p + 1) / parts; ++c) {
+      const SetupChunk& chunk = setupChunks_[size_t(c)];
+      entries += into.binTriangles(triangles_, uint32_t(chunk.window.first), uint32_t(chunk.window.next)) +
+                 into.binTriangles(triangles_, uint32_t(chunk.spillAt), uint32_t(chunk.spillAt + chunk.window.spill.size()));
+    }
+    return entries;
+  };
+  if (parts == 1) {
+    counters_.tileBinEntries += binPart(bins_, 0);
     return;
   }
   if (binParts_.size() < size_t(parts - 1)) binParts_.resize(size_t(parts - 1));
-  // Part p takes the chunks [firstChunk(p), firstChunk(p + 1)), or without chunks an even
-  // share of the triangles.
-  const auto firstChunk = [&](int p) { return setupChunks * p / parts; };
-  const auto partStart = [&](int p) { return firstTriangle + uint32_t(uint64_t(count) * uint32_t(p) / uint32_t(parts)); };
   std::vector<uint64_t> entries(static_cast<size_t>(parts));
   pool_.parallelFor(parts, [&](int p) {
     // The first part goes straight into the pass's bins: it follows what they hold.
     TileBins& part = p == 0 ? bins_ : binParts_[size_t(p - 1)];
     if (p > 0) part.reset(framebuffer_.width, framebuffer_.height);
-    if (setupChunks == 1) {
-      entries[size_t(p)] = part.binTriangles(triangles_, partStart(p), partStart(p + 1));
-      return;
-    }
-    entries[size_t(p)] = 0;
-    for (int c = firstChunk(p); c < firstChunk(p + 1); ++c) entries[size_t(p)] += binChunk(part, c);
+    entries[size_t(p)] = binPart(part, p);
   });
   for (int p = 0; p < parts; ++p) {
     if (p > 0) bins_.append(binParts_[size_t(p - 1)]);

@@ -243,9 +243,8 @@ inline constexpr OwnResolutionLanes kOwnResolutionLanes = [] {
                                                             simd::Float8x2 out[4]) {
   const OwnResolutionLanes& lanes = kOwnResolutionLanes;
   // Lane 0 is the block's left column; lanes 0 and 8 hold its top row between them.
-  const int originX = _mm_cvtsi128_si32(_mm512_castsi512_si128(x.i0));
-  const int originY = std::min(_mm_cvtsi128_si32(_mm512_castsi512_si128(y.i0)),
-                               _mm_cvtsi128_si32(_mm512_extracti32x4_epi32(y.i0, 2)));
+  const int originX = laneOf<0>(x.i0);
+  const int originY = std::min(laneOf<0>(y.i0), laneOf<8>(y.i0));
   if (originX > t.width - 5 || originY > t.height - 5) return false;   // so every i1 is i0 + 1, and the loads fit
   if (_mm512_cmpneq_epi32_mask(_mm512_sub_epi32(x.i0, _mm512_set1_epi32(originX)), _mm512_load_si512(lanes.column)))
     return false;

@@ -3,8 +3,8 @@
 // pass's coordinates follow the pixel grid (the bloom upsample, reading a mip of half its
 // size). Each texel row is then blended once per block column instead of once per lane.
 // The lane-by-lane grid and the taps this shares with it are in sample_half_grid_avx512.h,
-// the windows and transposes in sample_half_avx512.h; lookupColorGrid3x3 (sampler_avx2.h) tries this one first. Same
-// operations on the same texels per lane, so the same bits.
+// the windows and transposes in sample_half_avx512.h; lookupColorGrid3x3 (sampler_avx2.h)
+// tries this one first. Same operations on the same texels per lane, so the same bits.
 #pragma once
 
 #include "raster/simd/isa.h"

@@ -22,6 +22,7 @@
 #include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
 #include "raster/texture/wrap_avx512.h"
+#include "raster/tile/lane_layout.h"
 
 namespace raster::sampling {
 
@@ -104,14 +105,14 @@ struct LinearTaps16 {
 }
 
 // The prefetches ahead of a 4x4 block's lookups (simd/prefetch.h says why): its lanes'
-// footprints start at texel index start[lane] and reach `rows` texel rows down. Lanes 0, 2,
-// 8 and 10 are the left pixels of the block's four rows (lane_layout.h, flipped or not), so
-// their footprints' rows are the block's. Scalar indices, no reductions: the composite, which
-// is not waiting on memory, pays little. The first bloom downsample, whose 1920x1080 source
-// is streamed from the last-level cache, had spent most of its time waiting on these loads.
+// footprints start at texel index start[lane] and reach `rows` texel rows down. The lanes of
+// the block's left column (kBlockRowLeads) hold its four rows, so their footprints' rows are
+// the block's. Scalar indices, no reductions: the composite, which is not waiting on memory,
+// pays little. The first bloom downsample, whose 1920x1080 source is streamed from the
+// last-level cache, had spent most of its time waiting on these loads.
 [[gnu::always_inline]] inline void prefetchFootprintRows(const Texture& t, const int* start, int rows) {
   const size_t last = size_t(t.width) * size_t(t.height) - 1;
-  for (int lane : {0, 2, 8, 10}) simd::prefetchRowsAhead(t.half.data(), last, size_t(start[lane]), size_t(t.width), rows);
+  for (int lane : kBlockRowLeads) simd::prefetchRowsAhead(t.half.data(), last, size_t(start[lane]), size_t(t.width), rows);
 }
 
 // The permutation that spreads lanes k, k + 4, k + 8 and k + 12 of a 16-lane register over
@@ -147,18 +148,20 @@ template <int K>
 // each, in place of blendHalfPairs16's 32 loads and their shuffles (the 1920x1080 composite
 // 6% shorter on the AMD EPYC Zen 4 host; picking from the rows with two-source permutes, 4%).
 // The blend is blendHalfPairs16's, lane by lane: rows, then columns. False (nothing written)
-// when the footprints do not fit, or the texture is under four texels along an axis; lanes
-// 0 and 15, opposite corners of the block, are compared first, so that lookups that spread
-// wider pay a few instructions only, and give the window's corner with lane 8.
+// when the footprints do not fit, or the texture is under four texels along an axis; the
+// lanes of two corners of the block are compared first, so that lookups that spread wider
+// pay a few instructions only, and give the window's corner with a third.
 [[gnu::always_inline]] inline bool blendHalfWindow16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                      simd::Float8x2 out[4]) {
-  const int x0 = laneOf<0>(x.i0), x15 = laneOf<15>(x.i0), y0 = laneOf<0>(y.i0), y15 = laneOf<15>(y.i0);
-  if (t.width < 4 || t.height < 4 || std::abs(x0 - x15) > 2 || std::abs(y0 - y15) > 2) return false;
+  // Opposite corners of an offscreen target's block (BlockLanes), three columns and a row
+  // apart in a window-system buffer's; and that buffer's first row's left pixel.
+  constexpr int kFirst = BlockLanes::at(0, 0), kLast = BlockLanes::at(3, 3), kFirstFlipped = BlockLanes::at(0, 0, true);
+  const int x0 = laneOf<kFirst>(x.i0), xLast = laneOf<kLast>(x.i0), y0 = laneOf<kFirst>(y.i0), yLast = laneOf<kLast>(y.i0);
+  if (t.width < 4 || t.height < 4 || std::abs(x0 - xLast) > 2 || std::abs(y0 - yLast) > 2) return false;
   // The window's corner: the lowest first texel, moved in to keep the window in the texture.
-  // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails).
-  // Lanes 0 and 15 are the block's left and right columns; lanes 0 and 8 hold its top
-  // row, in an offscreen target's block and in a window-system buffer's (lane_layout.h).
-  // Where the lowest texels lie elsewhere (a mirrored lookup), the lanes' least ones.
+  // Every tap's offset in it must be 0..3 (unsigned: a REPEAT wrap's i1 of 0 fails): the
+  // first row's left pixel in either kind of block. Where the lowest texels lie elsewhere
+  // (a mirrored lookup), the lanes' least ones.
   __m512i dx0, dx1, dy0, dy1;
   int originX = 0, originY = 0;
   auto fits = [&](int lowX, int lowY) __attribute__((always_inline)) {
@@ -173,7 +176,7 @@ template <int K>
     return !(_mm512_cmpgt_epu32_mask(dx0, three) | _mm512_cmpgt_epu32_mask(dx1, three) |
              _mm512_cmpgt_epu32_mask(dy0, three) | _mm512_cmpgt_epu32_mask(dy1, three));
   };
-  if (!fits(std::min(x0, x15), std::min(y0, laneOf<8>(y.i0))) &&
+  if (!fits(std::min(x0, xLast), std::min(y0, laneOf<kFirstFlipped>(y.i0))) &&
       !fits(_mm512_reduce_min_epi32(x.i0), _mm512_reduce_min_epi32(y.i0)))
     return false;
   // The window's rows, texels 0..3 rgba each, turned into one plane a channel: element
@@ -202,9 +205,8 @@ template <int K>
 }
 
 // Where a 4x4 pixel block reads a texture at its own resolution, each lane's footprint
-// starts at texel (X + column, Y + row) of the lane's pixel in the block, the texel rows in
-// one of two orders: a block of an offscreen target (lane_layout.h, memory rows upward)
-// or of a window-system buffer (its rows swapped, a quad's and the two groups').
+// starts at texel (X + column, Y + row) of the lane's pixel in the block (BlockLanes,
+// lane_layout.h), in a block of an offscreen target or of a window-system buffer ([swapped]).
 struct OwnResolutionLanes {
   alignas(64) int column[16];
   alignas(64) int row[2][16];            // [swapped][lane]
@@ -213,13 +215,11 @@ struct OwnResolutionLanes {
 };
 inline constexpr OwnResolutionLanes kOwnResolutionLanes = [] {
   OwnResolutionLanes lanes{};
-  for (int lane = 0; lane < 16; ++lane) {
-    const int column = (lane % 8 / 4) * 2 + (lane & 1), quadRow = (lane >> 1) & 1, group = lane / 8;
+  for (int lane = 0; lane < BlockLanes::kCount; ++lane) {
+    const int column = BlockLanes::column(lane);
     lanes.column[lane] = column;
-    lanes.row[0][lane] = 2 * group + quadRow;
-    lanes.row[1][lane] = 2 * (1 - group) + quadRow;   // the memory rows swapped, in GL's order again
     for (int swapped = 0; swapped < 2; ++swapped) {
-      const int row = lanes.row[swapped][lane];
+      const int row = lanes.row[swapped][lane] = BlockLanes::row(lane, swapped == 1);
       lanes.element[swapped][lane] = 4 * column + row;
       for (int channel = 0; channel < 4; ++channel) lanes.rowLanes[swapped][row][4 * column + channel] = lane;
     }
@@ -242,9 +242,9 @@ inline constexpr OwnResolutionLanes kOwnResolutionLanes = [] {
 [[gnu::always_inline]] inline bool blendHalfOwnResolution16(const Texture& t, const LinearTaps16& x, const LinearTaps16& y,
                                                             simd::Float8x2 out[4]) {
   const OwnResolutionLanes& lanes = kOwnResolutionLanes;
-  // Lane 0 is the block's left column; lanes 0 and 8 hold its top row between them.
-  const int originX = laneOf<0>(x.i0);
-  const int originY = std::min(laneOf<0>(y.i0), laneOf<8>(y.i0));
+  // The first row's left pixel, in an offscreen target's block or a window-system buffer's.
+  const int originX = laneOf<BlockLanes::at(0, 0)>(x.i0);
+  const int originY = std::min(laneOf<BlockLanes::at(0, 0)>(y.i0), laneOf<BlockLanes::at(0, 0, true)>(y.i0));
   if (originX > t.width - 5 || originY > t.height - 5) return false;   // so every i1 is i0 + 1, and the loads fit
   if (_mm512_cmpneq_epi32_mask(_mm512_sub_epi32(x.i0, _mm512_set1_epi32(originX)), _mm512_load_si512(lanes.column)))
     return false;

@@ -15,6 +15,7 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/sample_half_grid_avx512.h"
 #include "raster/texture/texture.h"
+#include "raster/tile/lane_layout.h"
 
 namespace raster::sampling {
 
@@ -29,6 +30,27 @@ namespace raster::sampling {
   return same == 0xFFFF;
 }
 
+// The lane tables of blendHalfSeparable16, from the block's lanes (BlockLanes): each lane's
+// column lead (the lane of its column in the first row), row lead (the lane of its row in the
+// first column), the column leads spread over four channels each, and each lane's element
+// 4 * column + row in lanesToPlanes' planes.
+struct SeparableLanes {
+  alignas(64) int columnLead[16];
+  alignas(64) int rowLead[16];
+  alignas(64) int spread[16];
+  alignas(64) int element[16];
+};
+inline constexpr SeparableLanes kSeparableLanes = [] {
+  SeparableLanes lanes{};
+  for (int lane = 0; lane < BlockLanes::kCount; ++lane) {
+    lanes.columnLead[lane] = BlockLanes::at(BlockLanes::column(lane), 0);
+    lanes.rowLead[lane] = BlockLanes::at(0, BlockLanes::row(lane));
+    lanes.spread[lane] = BlockLanes::at(lane / 4, 0);
+    lanes.element[lane] = 4 * BlockLanes::column(lane) + BlockLanes::row(lane);
+  }
+  return lanes;
+}();
+
 // blendHalfGrid16 where each lane's taps along x are those of every lane in its block column
 // and its taps along y those of every lane in its block row, and the block's taps span at
 // most 8 texels along each axis: a full-screen pass whose coordinates follow the pixel grid
@@ -42,12 +64,11 @@ namespace raster::sampling {
 // weight broadcast over its channels. False (nothing written) where the taps do not line up so.
 [[gnu::always_inline]] inline bool blendHalfSeparable16(const Texture& t, const LinearTaps16 (&x)[3],
                                                         const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
-  // The 4x4 block's lanes (lane_layout.h): lane L sits in block column ((L >> 2) & 1) * 2 +
-  // (L & 1) and block row ((L >> 1) & 1) + 2 * (L >> 3) (a flipped block swaps rows in
-  // pairs, which changes nothing here). Lanes 0, 1, 4 and 5 lead columns 0-3, lanes 0, 2, 8
-  // and 10 rows 0-3; columnLead[L] and rowLead[L] are L's.
-  const __m512i columnLead = _mm512_setr_epi32(0, 1, 0, 1, 4, 5, 4, 5, 0, 1, 0, 1, 4, 5, 4, 5);
-  const __m512i rowLead = _mm512_setr_epi32(0, 0, 2, 2, 0, 0, 2, 2, 8, 8, 10, 10, 8, 8, 10, 10);
+  // The 4x4 block's lanes (BlockLanes, lane_layout.h; a flipped block's rows come in
+  // another order, which changes nothing here): the lanes of its first row lead its columns,
+  // those of its first column its rows; columnLead[L] and rowLead[L] are L's.
+  const SeparableLanes& lanes = kSeparableLanes;
+  const __m512i columnLead = _mm512_load_si512(lanes.columnLead), rowLead = _mm512_load_si512(lanes.rowLead);
   constexpr int kSpan = 8;   // texels along each axis
   if (t.width < kSpan || !tapsFollowLeads16(x, columnLead) || !tapsFollowLeads16(y, rowLead)) return false;
   // The window: the lowest first texel along each axis (left moved in so that 8 texels fit).
@@ -64,7 +85,7 @@ namespace raster::sampling {
 
   // Per tap column: the permute indices of its left and right texels and its weight, for
   // [column 0 rgba | 1 | 2 | 3] (the column's lead lane's, each over four channels).
-  const __m512i spread = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 4, 4, 4, 4, 5, 5, 5, 5);
+  const __m512i spread = _mm512_load_si512(lanes.spread);
   const __m512i channel = _mm512_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
   auto pickIndex = [&](__m512i texel) __attribute__((always_inline)) {
     return _mm512_add_epi32(_mm512_slli_epi32(_mm512_permutexvar_epi32(spread, _mm512_sub_epi32(texel, cornerX)), 2),
@@ -90,7 +111,7 @@ namespace raster::sampling {
       _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left));
     }
   }
-  // Each block row's taps along y: its lead lane's (lanes 0, 2, 8, 10) window rows and weight.
+  // Each block row's taps along y: its lead lane's window rows and weight.
   alignas(64) int top[3][16], bottom[3][16];
   alignas(64) float weightY[3][16];
   for (int j = 0; j < 3; ++j) {
@@ -99,13 +120,12 @@ namespace raster::sampling {
     _mm512_store_ps(weightY[j], y[j].weight);
   }
   // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes.
-  const __m512i toLanes = _mm512_setr_epi32(0, 4, 1, 5, 8, 12, 9, 13, 2, 6, 3, 7, 10, 14, 11, 15);
-  constexpr int kRowLeads[4] = {0, 2, 8, 10};
+  const __m512i toLanes = _mm512_load_si512(lanes.element);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
       __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
       for (int r = 0; r < 4; ++r) {
-        const int lead = kRowLeads[r];
+        const int lead = kBlockRowLeads[r];
         const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
         const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
         blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);

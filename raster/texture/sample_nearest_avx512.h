@@ -49,8 +49,8 @@ inline bool isNearest32(const Texture& t) {
   static constexpr Lanes kLanes = [] {
     Lanes lanes{};
     for (int lane = 0; lane < 16; ++lane) {
-      lanes.dx[lane] = LaneLayout<simd::Float8>::originX(lane / 8) + laneDx(lane % 8);
-      lanes.dy[lane] = LaneLayout<simd::Float8>::originY(lane / 8) + laneDy(lane % 8);
+      lanes.dx[lane] = BlockLanes::column(lane);
+      lanes.dy[lane] = BlockLanes::row(lane);
     }
     return lanes;
   }();

@@ -82,4 +82,30 @@ unsigned groupLaneMask(const LaneLayout<F>& layout, bool flipY, uint32_t coverag
   else return layout.laneMask(coverage, g);
 }
 
+// The sixteen lanes of a whole 4x4 block in one 512-bit register (simd::Float8x2): its upper
+// 8-lane group (LaneLayout's group 0) in lanes 0-7, its lower one in lanes 8-15. A post
+// pass's lanes read texels where their pixels are, so the samplers' 16-lane block paths
+// (texture/sample_*_avx512.h) take their lane tables from here. Rows count upward in GL's y,
+// as texel rows do: in an offscreen target (stored bottom row first) a lane's row is its
+// memory row; in a window-system buffer (`flipY`: stored top row first, each quad's rows
+// swapped in memory) it is 3 minus its memory row, so the two groups' row pairs trade places.
+struct BlockLanes {
+  static constexpr int kCount = 16;
+  static constexpr int column(int lane) { return LaneLayout<simd::Lanes<8>>::originX(lane / 8) + laneDx(lane % 8); }
+  static constexpr int row(int lane, bool flipY = false) {
+    const int memoryRow = LaneLayout<simd::Lanes<8>>::originY(lane / 8) + (flipY ? 1 - laneDy(lane % 8) : laneDy(lane % 8));
+    return flipY ? 3 - memoryRow : memoryRow;
+  }
+  // The lane at (column, row).
+  static constexpr int at(int column, int row, bool flipY = false) {
+    for (int lane = 0; lane < kCount; ++lane)
+      if (BlockLanes::column(lane) == column && BlockLanes::row(lane, flipY) == row) return lane;
+    return -1;
+  }
+};
+// The lanes of the block's left column, by row: a lane of each row (the same four lanes in
+// either kind of buffer).
+inline constexpr int kBlockRowLeads[4] = {BlockLanes::at(0, 0), BlockLanes::at(0, 1), BlockLanes::at(0, 2),
+                                          BlockLanes::at(0, 3)};
+
 }  // namespace raster

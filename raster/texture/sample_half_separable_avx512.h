@@ -32,13 +32,11 @@ namespace raster::sampling {
 
 // The lane tables of blendHalfSeparable16, from the block's lanes (BlockLanes): each lane's
 // column lead (the lane of its column in the first row), row lead (the lane of its row in the
-// first column), the column leads spread over four channels each, and each lane's element
-// 4 * column + row in lanesToPlanes' planes.
+// first column), and the column leads spread over four channels each.
 struct SeparableLanes {
   alignas(64) int columnLead[16];
   alignas(64) int rowLead[16];
   alignas(64) int spread[16];
-  alignas(64) int element[16];
 };
 inline constexpr SeparableLanes kSeparableLanes = [] {
   SeparableLanes lanes{};
@@ -46,7 +44,6 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     lanes.columnLead[lane] = BlockLanes::at(BlockLanes::column(lane), 0);
     lanes.rowLead[lane] = BlockLanes::at(0, BlockLanes::row(lane));
     lanes.spread[lane] = BlockLanes::at(lane / 4, 0);
-    lanes.element[lane] = 4 * BlockLanes::column(lane) + BlockLanes::row(lane);
   }
   return lanes;
 }();
@@ -119,8 +116,9 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     _mm512_store_si512(bottom[j], _mm512_sub_epi32(y[j].i1, cornerY));
     _mm512_store_ps(weightY[j], y[j].weight);
   }
-  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes.
-  const __m512i toLanes = _mm512_load_si512(lanes.element);
+  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes
+  // (the own-resolution lookup's table, an offscreen target's rows).
+  const __m512i toLanes = _mm512_load_si512(kOwnResolutionLanes.element[0]);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
       __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r

@@ -155,14 +155,13 @@ template <bool InPlaceX, bool InPlaceY>
 // 32-byte load per lane, its texels lined up lane by lane as blendHalfPairs16 lines up a pair
 // (lanes k, k + 4, k + 8 and k + 12 in one register), and blended in the same order, rows
 // then columns, as sampleHalfGridShared does per 8 lanes. Near an edge of the texture each
-// lane picks the texels its taps span (blendHalfGridPicked16). Inline, so the shader's
-// compiler drops the taps a port never reads (the downsample reads five of nine). False, with
+// lane picks the texels its taps span (blendHalfGridPicked16): the downsample's blocks at a
+// mip's edge (blendHalfStrided16 takes the others). Inline, so the shader's compiler drops
+// the taps a port never reads (the downsample reads five of nine). False, with
 // nothing written, when some footprint leaves its window (a step other than one texel, a
 // texture smaller than 4x4 near its edge); sampleColorGrid8 takes those.
-[[gnu::always_inline]] inline bool blendHalfGrid16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
-                                                   simd::Float8x2 (&taps)[9][4]) {
-  LinearTaps16 x[3], y[3];
-  bloomGridTaps16(t, s, tc, stepS, stepT, x, y);
+[[gnu::always_inline]] inline bool blendHalfGrid16(const Texture& t, const LinearTaps16 (&x)[3],
+                                                   const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
   // Where an axis's taps are consecutive, the window starts at tap 0's first texel along it.
   const bool inPlaceX = axisTapsAreConsecutive16(x, 3), inPlaceY = axisTapsAreConsecutive16(y, 3);
   const bool inPlace = inPlaceX && inPlaceY;

@@ -1,7 +1,8 @@
-// The separable bloom grid (AVX-512): textureGrid3x3 of an RGBA16F texture on 16 lanes where
+// The separable bloom grids (AVX-512): textureGrid3x3 of an RGBA16F texture on 16 lanes where
 // every tap is the same down a 4x4 block's columns and along its rows, as where a full-screen
 // pass's coordinates follow the pixel grid (the bloom upsample, reading a mip of half its
-// size). Each texel row is then blended once per block column instead of once per lane.
+// size; the downsample, reading one of twice its size). Each texel row is then blended once
+// per block column instead of once per lane.
 // The lane-by-lane grid and the taps this shares with it are in sample_half_grid_avx512.h,
 // the windows and transposes in sample_half_avx512.h; lookupColorGrid3x3 (sampler_avx2.h)
 // tries this one first. Same operations on the same texels per lane, so the same bits.
@@ -30,13 +31,15 @@ namespace raster::sampling {
   return same == 0xFFFF;
 }
 
-// The lane tables of blendHalfSeparable16, from the block's lanes (BlockLanes): each lane's
-// column lead (the lane of its column in the first row), row lead (the lane of its row in the
-// first column), and the column leads spread over four channels each.
+// The lane tables of blendHalfSeparable16 and blendHalfStrided16, from the block's lanes
+// (BlockLanes): each lane's column lead (the lane of its column in the first row), row lead
+// (the lane of its row in the first column), the column leads spread over four channels each,
+// and twice each lane's column (its taps' first texel past the window's, two texels a column).
 struct SeparableLanes {
   alignas(64) int columnLead[16];
   alignas(64) int rowLead[16];
   alignas(64) int spread[16];
+  alignas(64) int twiceColumn[16];
 };
 inline constexpr SeparableLanes kSeparableLanes = [] {
   SeparableLanes lanes{};
@@ -44,9 +47,44 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     lanes.columnLead[lane] = BlockLanes::at(BlockLanes::column(lane), 0);
     lanes.rowLead[lane] = BlockLanes::at(0, BlockLanes::row(lane));
     lanes.spread[lane] = BlockLanes::at(lane / 4, 0);
+    lanes.twiceColumn[lane] = 2 * BlockLanes::column(lane);
   }
   return lanes;
 }();
+
+// The second half of the separable grids below: with every window row blended along x
+// (rowBlend[window row][tap column], [column 0 rgba | 1 | 2 | 3], the window's first row
+// texel row originY), each tap row blends two of those per block row, its lead lane's window
+// rows and weight, and a transpose and one permute a channel put the lanes in place. Inline,
+// so that a port's compiler drops the taps and channels it never reads.
+[[gnu::always_inline]] inline void blendSeparableColumns(const float (*rowBlend)[3][16], const LinearTaps16 (&y)[3],
+                                                         int originY, simd::Float8x2 (&taps)[9][4]) {
+  // Each block row's taps along y: its lead lane's window rows and weight.
+  const __m512i cornerY = _mm512_set1_epi32(originY);
+  alignas(64) int top[3][16], bottom[3][16];
+  alignas(64) float weightY[3][16];
+  for (int j = 0; j < 3; ++j) {
+    _mm512_store_si512(top[j], _mm512_sub_epi32(y[j].i0, cornerY));
+    _mm512_store_si512(bottom[j], _mm512_sub_epi32(y[j].i1, cornerY));
+    _mm512_store_ps(weightY[j], y[j].weight);
+  }
+  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes
+  // (the own-resolution lookup's table, an offscreen target's rows).
+  const __m512i toLanes = _mm512_load_si512(kOwnResolutionLanes.element[0]);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
+      for (int r = 0; r < 4; ++r) {
+        const int lead = kBlockRowLeads[r];
+        const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
+        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
+        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
+      }
+      simd::Float8x2 planes[4];
+      lanesToPlanes(blockRow, planes);
+      for (int c = 0; c < 4; ++c) taps[j * 3 + i][c] = simd::Float8x2(_mm512_permutexvar_ps(toLanes, planes[c].v));
+    }
+}
 
 // blendHalfGrid16 where each lane's taps along x are those of every lane in its block column
 // and its taps along y those of every lane in its block row, and the block's taps span at
@@ -73,7 +111,7 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
                                t.width - kSpan);
   const int originY = _mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(y[0].i0, y[1].i0), y[2].i0));
   const int lastY = _mm512_reduce_max_epi32(_mm512_max_epi32(_mm512_max_epi32(y[0].i1, y[1].i1), y[2].i1));
-  const __m512i cornerX = _mm512_set1_epi32(originX), cornerY = _mm512_set1_epi32(originY);
+  const __m512i cornerX = _mm512_set1_epi32(originX);
   const __m512i last = _mm512_set1_epi32(kSpan - 1);
   __mmask16 outside = 0;   // a second texel is never before the first (i1 >= i0 >= origin)
   for (const LinearTaps16& tap : x) outside |= _mm512_cmpgt_epu32_mask(_mm512_sub_epi32(tap.i1, cornerX), last);
@@ -108,30 +146,71 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
       _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left));
     }
   }
-  // Each block row's taps along y: its lead lane's window rows and weight.
-  alignas(64) int top[3][16], bottom[3][16];
-  alignas(64) float weightY[3][16];
-  for (int j = 0; j < 3; ++j) {
-    _mm512_store_si512(top[j], _mm512_sub_epi32(y[j].i0, cornerY));
-    _mm512_store_si512(bottom[j], _mm512_sub_epi32(y[j].i1, cornerY));
-    _mm512_store_ps(weightY[j], y[j].weight);
+  blendSeparableColumns(rowBlend, y, originY, taps);
+  return true;
+}
+
+// blendHalfSeparable16 for a grid whose block columns lie two texels apart, as where a
+// full-screen pass reads a mip of twice its size (the bloom downsample: 10x10 texels a block,
+// wider than that path's 8). It takes the block only where the taps line up exactly so: tap
+// i of column c spans window texels 2c + i and 2c + i + 1 along x in every lane of the column,
+// the weights are the column's, and the taps along y follow the block's rows as in
+// blendHalfSeparable16. Then a window row's ten texels are three loads, and each tap
+// column's left and right texels for the four block columns are one 128-bit shuffle of them
+// (texels 0 2 4 6, 1 3 5 7, 2 4 6 8 and 3 5 7 9, each shared by two taps), where the
+// lane-by-lane grid loads, converts and transposes each lane's 4x4 window. The same
+// operations on the same texels per lane (rows, then columns), so the same bits. False
+// (nothing written) where the taps do not line up so: near an edge, where clamping piles
+// taps up, or where a mip of odd size makes the step drift off two texels.
+[[gnu::always_inline]] inline bool blendHalfStrided16(const Texture& t, const LinearTaps16 (&x)[3],
+                                                      const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
+  const SeparableLanes& lanes = kSeparableLanes;
+  const __m512i columnLead = _mm512_load_si512(lanes.columnLead), rowLead = _mm512_load_si512(lanes.rowLead);
+  constexpr int kMaxRows = 12;   // window rows: 10 for the downsample's blocks
+  static_assert(BlockLanes::column(0) == 0, "lane 0 leads the block's first column");
+  const int originX = _mm_cvtsi128_si32(_mm512_castsi512_si128(x[0].i0));
+  const __m512i first = _mm512_add_epi32(_mm512_set1_epi32(originX), _mm512_load_si512(lanes.twiceColumn));
+  __mmask16 inPlace = 0xFFFF;
+  for (int i = 0; i < 3; ++i) {
+    const __m512i left = _mm512_add_epi32(first, _mm512_set1_epi32(i));
+    const __m512i weight = _mm512_castps_si512(x[i].weight);
+    inPlace &= _mm512_cmpeq_epi32_mask(x[i].i0, left) &
+               _mm512_cmpeq_epi32_mask(x[i].i1, _mm512_add_epi32(left, _mm512_set1_epi32(1))) &
+               _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(columnLead, weight), weight);
   }
-  // Lane L's value in a tap's planes sits at element 4 * column + row after lanesToPlanes
-  // (the own-resolution lookup's table, an offscreen target's rows).
-  const __m512i toLanes = _mm512_load_si512(kOwnResolutionLanes.element[0]);
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
-      for (int r = 0; r < 4; ++r) {
-        const int lead = kBlockRowLeads[r];
-        const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
-        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
-        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
-      }
-      simd::Float8x2 planes[4];
-      lanesToPlanes(blockRow, planes);
-      for (int c = 0; c < 4; ++c) taps[j * 3 + i][c] = simd::Float8x2(_mm512_permutexvar_ps(toLanes, planes[c].v));
-    }
+  if (inPlace != 0xFFFF || !tapsFollowLeads16(y, rowLead)) return false;
+  const int originY = _mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(y[0].i0, y[1].i0), y[2].i0));
+  const int lastY = _mm512_reduce_max_epi32(_mm512_max_epi32(_mm512_max_epi32(y[0].i1, y[1].i1), y[2].i1));
+  if (lastY - originY >= kMaxRows) return false;
+  const int rows = lastY - originY + 1;
+
+  // Each tap column's weight for [column 0 rgba | 1 | 2 | 3] (the column's lead lane's).
+  const __m512i spread = _mm512_load_si512(lanes.spread);
+  __m512 weightX[3];
+  for (int i = 0; i < 3; ++i) weightX[i] = _mm512_permutexvar_ps(spread, x[i].weight);
+  const size_t firstTexel = size_t(originY) * size_t(t.width) + size_t(originX);
+  simd::prefetchRowsAhead(t.half.data(), size_t(t.width) * size_t(t.height) - 1, firstTexel, size_t(t.width), rows);
+  // Row blends of every window row: rowBlend[row][tap column], [column 0 rgba | 1 | 2 | 3].
+  // Window texels 0-9 lie in the texture: texel 9 is tap 2's second texel in column 3.
+  alignas(64) float rowBlend[kMaxRows][3][16];
+  const uint16_t* texels = t.half.data() + firstTexel * 4;
+  for (int r = 0; r < rows; ++r) {
+    const uint16_t* row = texels + size_t(r) * size_t(t.width) * 4;
+    const __m512 a = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row)));        // texels 0-3
+    const __m512 b = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + 16)));   // 4-7
+    const __m512 c = _mm512_castps256_ps512(_mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 32))));  // 8-9
+    const __m512 a2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(b), _mm512_castps_si512(a), 4));  // 2-5
+    const __m512 b2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(c), _mm512_castps_si512(b), 4));  // 6-9
+    const __m512 even[2] = {_mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(2, 0, 2, 0)),      // texels 0 2 4 6
+                            _mm512_shuffle_f32x4(a2, b2, _MM_SHUFFLE(2, 0, 2, 0))};   // 2 4 6 8
+    const __m512 odd[2] = {_mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(3, 1, 3, 1)),       // 1 3 5 7
+                           _mm512_shuffle_f32x4(a2, b2, _MM_SHUFFLE(3, 1, 3, 1))};    // 3 5 7 9
+    // Tap i of column c spans texels 2c + i and 2c + i + 1.
+    const __m512 left[3] = {even[0], odd[0], even[1]}, right[3] = {odd[0], even[1], odd[1]};
+    for (int i = 0; i < 3; ++i)
+      _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right[i], left[i]), left[i]));
+  }
+  blendSeparableColumns(rowBlend, y, originY, taps);
   return true;
 }
 

@@ -23,6 +23,7 @@ TEST_SUITE("texture") {
     long taps = 0, mismatches = 0, shared16 = 0;
     long pickedRows = 0, pickedColumns = 0, pickedBoth = 0;
     long separable = 0;   // grids whose taps follow the block's columns and rows
+    long strided = 0;     // and those whose columns lie two texels apart (a downsample's)
   };
 
   // Every tap of textureGrid3x3 for `Lanes` (Float8, or Float8x2 with its 16-lane path)
@@ -58,7 +59,8 @@ TEST_SUITE("texture") {
             const int rows = round % 2 ? scale * h : std::max(h / scale, 1);
             const bool asBlock = round % 3 == 0;
             // The block's column and row of blocks: the first, the last or any, so that
-            // blocks on one edge and in a corner are both common.
+            // blocks on one edge and in a corner are both common. A block of a target half the
+            // size away from the edges is what the strided 16-lane path takes.
             auto blockAt = [&](int size) {
               const int blocks = (size + 3) / 4;
               const unsigned pick = rng() % 3;
@@ -89,10 +91,10 @@ TEST_SUITE("texture") {
             if constexpr (kLanes == 16) {
               raster::simd::Float8x2 planes[9][4];
               const auto s = Lanes::load(s16).v, t = Lanes::load(t16).v;
-              const bool shared = raster::sampling::isHalfBilinearClamp(tex) &&
-                                  raster::sampling::blendHalfGrid16(tex, s, t, step.x, step.y, planes);
               raster::sampling::LinearTaps16 x[3], y[3];
               raster::sampling::bloomGridTaps16(tex, s, t, step.x, step.y, x, y);
+              const bool shared = raster::sampling::isHalfBilinearClamp(tex) &&
+                                  raster::sampling::blendHalfGrid16(tex, x, y, planes);
               const bool inPlaceX = raster::sampling::axisTapsAreConsecutive16(x, 3);
               const bool inPlaceY = raster::sampling::axisTapsAreConsecutive16(y, 3);
               counts.shared16 += shared;
@@ -102,6 +104,7 @@ TEST_SUITE("texture") {
               raster::simd::Float8x2 separablePlanes[9][4];
               counts.separable += shared && raster::sampling::mayBeSeparable16(tex, s, t) &&
                                   raster::sampling::blendHalfGridSeparable16(tex, s, t, step.x, step.y, separablePlanes);
+              counts.strided += shared && raster::sampling::blendHalfStrided16(tex, x, y, separablePlanes);
             }
 #endif
             for (int j = 0; j < 3; ++j)
@@ -136,7 +139,7 @@ TEST_SUITE("texture") {
     MESSAGE(counts.taps << " grid taps, " << counts.mismatches << " channel mismatches, " << counts.shared16
                         << " grids on the 16-lane path, picking texels at an edge: " << counts.pickedRows
                         << " down the rows only, " << counts.pickedColumns << " along them only, " << counts.pickedBoth
-                        << " both, " << counts.separable << " separable");
+                        << " both, " << counts.separable << " separable, " << counts.strided << " strided");
     CHECK(counts.taps == 2 * 4 * 2 * 300 * 9 * 16);
     CHECK(counts.shared16 > 20);   // the 16-lane path ran, not only the 8-lane fallback
     // and each of its edge forms
@@ -144,6 +147,7 @@ TEST_SUITE("texture") {
     CHECK(counts.pickedColumns > 10);
     CHECK(counts.pickedBoth > 10);
     CHECK(counts.separable > 10);
+    CHECK(counts.strided > 5);
     CHECK(counts.mismatches == 0);
   }
 #endif

@@ -90,8 +90,9 @@ struct LinearTaps16 {
 // wrapLinearClampToEdge8 (linear_taps_avx2.h) on 16 lanes, the same operations in each:
 //   c = max(min(coord * size, size) - 0.5, 0);  i0 = floor(c);  weight = c - i0;
 //   i1 = min(i0 + 1, size - 1).  A NaN coordinate gives texel size - 1.
-[[gnu::always_inline]] inline LinearTaps16 wrapLinearClampToEdge16(__m512 coord, int size) {
-  const __m512 sizeF = _mm512_set1_ps(float(size));
+// Each lane's size may differ (sizeF, and last = size - 1 as integers): a register that
+// holds lanes along x and along y.
+[[gnu::always_inline]] inline LinearTaps16 wrapLinearClampToEdge16(__m512 coord, __m512 sizeF, __m512i last) {
   __m512 c = _mm512_mul_ps(coord, sizeF);
   c = _mm512_min_ps(c, sizeF);
   c = _mm512_sub_ps(c, _mm512_set1_ps(0.5f));
@@ -100,8 +101,11 @@ struct LinearTaps16 {
   LinearTaps16 taps;
   taps.i0 = _mm512_cvttps_epi32(floorC);
   taps.weight = _mm512_sub_ps(c, floorC);
-  taps.i1 = _mm512_min_epi32(_mm512_add_epi32(taps.i0, _mm512_set1_epi32(1)), _mm512_set1_epi32(size - 1));
+  taps.i1 = _mm512_min_epi32(_mm512_add_epi32(taps.i0, _mm512_set1_epi32(1)), last);
   return taps;
+}
+[[gnu::always_inline]] inline LinearTaps16 wrapLinearClampToEdge16(__m512 coord, int size) {
+  return wrapLinearClampToEdge16(coord, _mm512_set1_ps(float(size)), _mm512_set1_epi32(size - 1));
 }
 
 // The prefetches ahead of a 4x4 block's lookups (simd/prefetch.h says why): its lanes'

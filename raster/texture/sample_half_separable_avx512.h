@@ -34,12 +34,13 @@ namespace raster::sampling {
 // The lane tables of blendHalfSeparable16 and blendHalfStrided16, from the block's lanes
 // (BlockLanes): each lane's column lead (the lane of its column in the first row), row lead
 // (the lane of its row in the first column), the column leads spread over four channels each,
-// and twice each lane's column (its taps' first texel past the window's, two texels a column).
+// and the lanes whose coordinates blendHalfStrided16 gathers: the first row's, left to right,
+// then the first column's, top to bottom (twice over).
 struct SeparableLanes {
   alignas(64) int columnLead[16];
   alignas(64) int rowLead[16];
   alignas(64) int spread[16];
-  alignas(64) int twiceColumn[16];
+  alignas(64) int stridedLeads[16];
 };
 inline constexpr SeparableLanes kSeparableLanes = [] {
   SeparableLanes lanes{};
@@ -47,19 +48,21 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     lanes.columnLead[lane] = BlockLanes::at(BlockLanes::column(lane), 0);
     lanes.rowLead[lane] = BlockLanes::at(0, BlockLanes::row(lane));
     lanes.spread[lane] = BlockLanes::at(lane / 4, 0);
-    lanes.twiceColumn[lane] = 2 * BlockLanes::column(lane);
+    lanes.stridedLeads[lane] = lane % 8 < 4 ? BlockLanes::at(lane % 4, 0) : kBlockRowLeads[lane % 4];
   }
   return lanes;
 }();
 
 // The second half of the separable grids below: with every window row blended along x
 // (rowBlend[window row][tap column], [column 0 rgba | 1 | 2 | 3], the window's first row
-// texel row originY), each tap row blends two of those per block row, its lead lane's window
-// rows and weight, and a transpose and one permute a channel put the lanes in place. Inline,
-// so that a port's compiler drops the taps and channels it never reads.
+// texel row originY), each tap row blends two of those per block row, the window rows and
+// weight of y's element rowElement[block row], and a transpose and one permute a channel put
+// the lanes in place. Inline, so that a port's compiler drops the taps and channels it never
+// reads.
 [[gnu::always_inline]] inline void blendSeparableColumns(const float (*rowBlend)[3][16], const LinearTaps16 (&y)[3],
-                                                         int originY, simd::Float8x2 (&taps)[9][4]) {
-  // Each block row's taps along y: its lead lane's window rows and weight.
+                                                         const int (&rowElement)[4], int originY,
+                                                         simd::Float8x2 (&taps)[9][4]) {
+  // Each block row's taps along y.
   const __m512i cornerY = _mm512_set1_epi32(originY);
   alignas(64) int top[3][16], bottom[3][16];
   alignas(64) float weightY[3][16];
@@ -75,7 +78,7 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     for (int i = 0; i < 3; ++i) {
       __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
       for (int r = 0; r < 4; ++r) {
-        const int lead = kBlockRowLeads[r];
+        const int lead = rowElement[r];
         const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
         const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
         blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
@@ -146,48 +149,74 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
       _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right, left), left));
     }
   }
-  blendSeparableColumns(rowBlend, y, originY, taps);
+  blendSeparableColumns(rowBlend, y, kBlockRowLeads, originY, taps);
   return true;
 }
 
 // blendHalfSeparable16 for a grid whose block columns lie two texels apart, as where a
 // full-screen pass reads a mip of twice its size (the bloom downsample: 10x10 texels a block,
-// wider than that path's 8). It takes the block only where the taps line up exactly so: tap
-// i of column c spans window texels 2c + i and 2c + i + 1 along x in every lane of the column,
-// the weights are the column's, and the taps along y follow the block's rows as in
-// blendHalfSeparable16. Then a window row's ten texels are three loads, and each tap
-// column's left and right texels for the four block columns are one 128-bit shuffle of them
-// (texels 0 2 4 6, 1 3 5 7, 2 4 6 8 and 3 5 7 9, each shared by two taps), where the
+// wider than that path's 8). It takes a block whose coordinates are the same down each
+// column and along each row (a full-screen pass's, whose planes have no cross term), so that
+// the taps along x are the four columns' and those along y the four rows': one register of
+// eight lanes' coordinates, wrapped once a tap (as bloomGridTaps16 wraps each lane's), where
+// the lane-by-lane grid wraps sixteen lanes along each axis. It takes it only where tap i of
+// column c spans window texels 2c + i and 2c + i + 1: then a window row's ten texels are
+// three loads, and each tap column's texels for the four block columns one 128-bit shuffle
+// of them (texels 0 2 4 6, 1 3 5 7, 2 4 6 8 and 3 5 7 9, each shared by two taps), where the
 // lane-by-lane grid loads, converts and transposes each lane's 4x4 window. The same
-// operations on the same texels per lane (rows, then columns), so the same bits. False
-// (nothing written) where the taps do not line up so: near an edge, where clamping piles
-// taps up, or where a mip of odd size makes the step drift off two texels.
-[[gnu::always_inline]] inline bool blendHalfStrided16(const Texture& t, const LinearTaps16 (&x)[3],
-                                                      const LinearTaps16 (&y)[3], simd::Float8x2 (&taps)[9][4]) {
+// operations on the same texels per lane (wraps, rows, then columns), so the same bits.
+// False (nothing written) elsewhere: near an edge, where clamping piles taps up; in a mip of
+// odd size, where the step drifts off two texels; coordinates that vary along a row.
+[[gnu::always_inline]] inline bool blendHalfStrided16(const Texture& t, __m512 s, __m512 tc, float stepS, float stepT,
+                                                      simd::Float8x2 (&taps)[9][4]) {
   const SeparableLanes& lanes = kSeparableLanes;
   const __m512i columnLead = _mm512_load_si512(lanes.columnLead), rowLead = _mm512_load_si512(lanes.rowLead);
-  constexpr int kMaxRows = 12;   // window rows: 10 for the downsample's blocks
-  static_assert(BlockLanes::column(0) == 0, "lane 0 leads the block's first column");
-  const int originX = _mm_cvtsi128_si32(_mm512_castsi512_si128(x[0].i0));
-  const __m512i first = _mm512_add_epi32(_mm512_set1_epi32(originX), _mm512_load_si512(lanes.twiceColumn));
-  __mmask16 inPlace = 0xFFFF;
-  for (int i = 0; i < 3; ++i) {
-    const __m512i left = _mm512_add_epi32(first, _mm512_set1_epi32(i));
-    const __m512i weight = _mm512_castps_si512(x[i].weight);
-    inPlace &= _mm512_cmpeq_epi32_mask(x[i].i0, left) &
-               _mm512_cmpeq_epi32_mask(x[i].i1, _mm512_add_epi32(left, _mm512_set1_epi32(1))) &
-               _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(columnLead, weight), weight);
+  const __mmask16 sameCoordinates =
+      _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(columnLead, _mm512_castps_si512(s)), _mm512_castps_si512(s)) &
+      _mm512_cmpeq_epi32_mask(_mm512_permutexvar_epi32(rowLead, _mm512_castps_si512(tc)), _mm512_castps_si512(tc));
+  if (sameCoordinates != 0xFFFF) return false;
+  // Elements 0-3: the block columns' s, left to right; 4-7: the block rows' t, top to bottom
+  // (as kBlockRowLeads orders them); 8-15 the same again.
+  constexpr __mmask16 kRows = 0xF0F0;
+  const __m512i leads = _mm512_load_si512(lanes.stridedLeads);
+  const __m512 coord = _mm512_mask_permutexvar_ps(_mm512_permutexvar_ps(leads, s), kRows, leads, tc);
+  const __m512 sizeF = _mm512_mask_blend_ps(kRows, _mm512_set1_ps(float(t.width)), _mm512_set1_ps(float(t.height)));
+  const __m512i last = _mm512_mask_blend_epi32(kRows, _mm512_set1_epi32(t.width - 1), _mm512_set1_epi32(t.height - 1));
+  LinearTaps16 tap[3];   // tap k at coord + float(k - 1) * step, as bloomGridTaps16
+  for (int k = 0; k < 3; ++k) {
+    const __m512 offset =
+        _mm512_mask_blend_ps(kRows, _mm512_set1_ps(float(k - 1) * stepS), _mm512_set1_ps(float(k - 1) * stepT));
+    tap[k] = wrapLinearClampToEdge16(_mm512_add_ps(coord, offset), sizeF, last);
   }
-  if (inPlace != 0xFFFF || !tapsFollowLeads16(y, rowLead)) return false;
-  const int originY = _mm512_reduce_min_epi32(_mm512_min_epi32(_mm512_min_epi32(y[0].i0, y[1].i0), y[2].i0));
-  const int lastY = _mm512_reduce_max_epi32(_mm512_max_epi32(_mm512_max_epi32(y[0].i1, y[1].i1), y[2].i1));
+  // Along x, tap k of column c spans texels originX + 2c + k and the next.
+  constexpr __mmask16 kColumns = 0x000F;
+  const int originX = _mm_cvtsi128_si32(_mm512_castsi512_si128(tap[0].i0));
+  const __m512i first =
+      _mm512_add_epi32(_mm512_set1_epi32(originX), _mm512_setr_epi32(0, 2, 4, 6, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0));
+  for (int k = 0; k < 3; ++k) {
+    const __m512i left = _mm512_add_epi32(first, _mm512_set1_epi32(k));
+    if (_mm512_mask_cmpeq_epi32_mask(kColumns, tap[k].i0, left) != kColumns ||
+        _mm512_mask_cmpeq_epi32_mask(kColumns, tap[k].i1, _mm512_add_epi32(left, _mm512_set1_epi32(1))) != kColumns)
+      return false;
+  }
+  // Along y, the window's rows: the least first texel and the greatest second one of the rows'.
+  auto acrossRows = [&](__m128i v, auto op) __attribute__((always_inline)) {
+    v = op(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(1, 0, 3, 2)));
+    return _mm_cvtsi128_si32(op(v, _mm_shuffle_epi32(v, _MM_SHUFFLE(2, 3, 0, 1))));
+  };
+  const auto rowsOf = [](__m512i v) { return _mm512_extracti32x4_epi32(v, 1); };
+  const int originY = acrossRows(_mm_min_epi32(_mm_min_epi32(rowsOf(tap[0].i0), rowsOf(tap[1].i0)), rowsOf(tap[2].i0)),
+                                 [](__m128i a, __m128i b) { return _mm_min_epi32(a, b); });
+  const int lastY = acrossRows(_mm_max_epi32(_mm_max_epi32(rowsOf(tap[0].i1), rowsOf(tap[1].i1)), rowsOf(tap[2].i1)),
+                               [](__m128i a, __m128i b) { return _mm_max_epi32(a, b); });
+  constexpr int kMaxRows = 12;   // window rows: 10 for the downsample's blocks
   if (lastY - originY >= kMaxRows) return false;
   const int rows = lastY - originY + 1;
 
-  // Each tap column's weight for [column 0 rgba | 1 | 2 | 3] (the column's lead lane's).
-  const __m512i spread = _mm512_load_si512(lanes.spread);
+  // Each tap column's weight for [column 0 rgba | 1 | 2 | 3].
+  const __m512i spread = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3);
   __m512 weightX[3];
-  for (int i = 0; i < 3; ++i) weightX[i] = _mm512_permutexvar_ps(spread, x[i].weight);
+  for (int i = 0; i < 3; ++i) weightX[i] = _mm512_permutexvar_ps(spread, tap[i].weight);
   const size_t firstTexel = size_t(originY) * size_t(t.width) + size_t(originX);
   simd::prefetchRowsAhead(t.half.data(), size_t(t.width) * size_t(t.height) - 1, firstTexel, size_t(t.width), rows);
   // Row blends of every window row: rowBlend[row][tap column], [column 0 rgba | 1 | 2 | 3].
@@ -196,11 +225,13 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
   const uint16_t* texels = t.half.data() + firstTexel * 4;
   for (int r = 0; r < rows; ++r) {
     const uint16_t* row = texels + size_t(r) * size_t(t.width) * 4;
-    const __m512 a = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row)));        // texels 0-3
-    const __m512 b = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + 16)));   // 4-7
-    const __m512 c = _mm512_castps256_ps512(_mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 32))));  // 8-9
-    const __m512 a2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(b), _mm512_castps_si512(a), 4));  // 2-5
-    const __m512 b2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(c), _mm512_castps_si512(b), 4));  // 6-9
+    // Texels 0-3 (a), 4-7 (b), 8-9 (c), and the window two texels on: 2-5 (a2), 6-9 (b2).
+    const __m512 a = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row)));
+    const __m512 b = _mm512_cvtph_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(row + 16)));
+    const __m512 c =
+        _mm512_castps256_ps512(_mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 32))));
+    const __m512 a2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(b), _mm512_castps_si512(a), 4));
+    const __m512 b2 = _mm512_castsi512_ps(_mm512_alignr_epi64(_mm512_castps_si512(c), _mm512_castps_si512(b), 4));
     const __m512 even[2] = {_mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(2, 0, 2, 0)),      // texels 0 2 4 6
                             _mm512_shuffle_f32x4(a2, b2, _MM_SHUFFLE(2, 0, 2, 0))};   // 2 4 6 8
     const __m512 odd[2] = {_mm512_shuffle_f32x4(a, b, _MM_SHUFFLE(3, 1, 3, 1)),       // 1 3 5 7
@@ -210,7 +241,8 @@ inline constexpr SeparableLanes kSeparableLanes = [] {
     for (int i = 0; i < 3; ++i)
       _mm512_store_ps(rowBlend[r][i], _mm512_fmadd_ps(weightX[i], _mm512_sub_ps(right[i], left[i]), left[i]));
   }
-  blendSeparableColumns(rowBlend, y, originY, taps);
+  static constexpr int kRowElements[4] = {4, 5, 6, 7};
+  blendSeparableColumns(rowBlend, tap, kRowElements, originY, taps);
   return true;
 }
 

@@ -166,7 +166,7 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
     // The downsample's blocks away from a mip's edges line up two texels a column; the
     // others (edges, a step that is not one texel) take the lane-by-lane grid.
     simd::Float8x2 planes[9][4];
-    if (blendHalfStrided16(texture, uv.x.v, uv.y.v, step.x, step.y, planes)) {
+    if (blendHalfGridStrided16(texture, uv.x.v, uv.y.v, step.x, step.y, planes)) {
       for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
       return;
     }

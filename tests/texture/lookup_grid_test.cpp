@@ -104,7 +104,7 @@ TEST_SUITE("texture") {
               raster::simd::Float8x2 separablePlanes[9][4];
               counts.separable += shared && raster::sampling::mayBeSeparable16(tex, s, t) &&
                                   raster::sampling::blendHalfGridSeparable16(tex, s, t, step.x, step.y, separablePlanes);
-              counts.strided += shared && raster::sampling::blendHalfStrided16(tex, s, t, step.x, step.y, separablePlanes);
+              counts.strided += shared && raster::sampling::blendHalfGridStrided16(tex, s, t, step.x, step.y, separablePlanes);
             }
 #endif
             for (int j = 0; j < 3; ++j)

@@ -107,10 +107,10 @@ template <int Block, bool Least>
     for (int i = 0; i < 3; ++i) {
       __m512 blockRow[4];   // [column 0 rgba | 1 | 2 | 3] of block row r
       for (int r = 0; r < 4; ++r) {
-        const int lead = kLeadRowElements[r];
-        const __m512 above = _mm512_load_ps(rowBlend[top[j][lead]][i]);
-        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][lead]][i]);
-        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][lead]), _mm512_sub_ps(below, above), above);
+        const int row = kLeadRowElements[r];   // block row r's element of the taps
+        const __m512 above = _mm512_load_ps(rowBlend[top[j][row]][i]);
+        const __m512 below = _mm512_load_ps(rowBlend[bottom[j][row]][i]);
+        blockRow[r] = _mm512_fmadd_ps(_mm512_set1_ps(weightY[j][row]), _mm512_sub_ps(below, above), above);
       }
       simd::Float8x2 planes[4];
       lanesToPlanes(blockRow, planes);

@@ -166,13 +166,12 @@ inline void prefetchColor(const Texture& texture, glsl::vec2<simd::Float8x2> uv)
     // The downsample's blocks away from a mip's edges line up two texels a column; the
     // others (edges, a step that is not one texel) take the lane-by-lane grid.
     simd::Float8x2 planes[9][4];
-    if (blendHalfGridStrided16(texture, uv.x.v, uv.y.v, step.x, step.y, planes)) {
-      for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
-      return;
-    }
-    LinearTaps16 x[3], y[3];
-    bloomGridTaps16(texture, uv.x.v, uv.y.v, step.x, step.y, x, y);
-    if (blendHalfGrid16(texture, x, y, planes)) {
+    auto laneByLane = [&]() __attribute__((always_inline)) {
+      LinearTaps16 x[3], y[3];
+      bloomGridTaps16(texture, uv.x.v, uv.y.v, step.x, step.y, x, y);
+      return blendHalfGrid16(texture, x, y, planes);
+    };
+    if (blendHalfGridStrided16(texture, uv.x.v, uv.y.v, step.x, step.y, planes) || laneByLane()) {
       for (int k = 0; k < 9; ++k) taps[k / 3][k % 3] = {planes[k][0], planes[k][1], planes[k][2], planes[k][3]};
       return;
     }

@@ -22,7 +22,7 @@ TEST_SUITE("texture") {
   struct GridCounts {
     long taps = 0, mismatches = 0, shared16 = 0;
     long pickedRows = 0, pickedColumns = 0, pickedBoth = 0;
-    long separable = 0;   // grids whose taps follow the block's columns and rows
+    long separable = 0;   // grids whose coordinates follow the block's columns and rows
     long strided = 0;     // and those whose columns lie two texels apart (a downsample's)
   };
 

@@ -23,8 +23,8 @@ inline bool canShadeBlocksWhole<simd::Float8>(const DrawRecord& draw) {
 
 // One 4x4 block's colours from the fragment shader `shade(in, varyings, out)`: the draw's
 // through its ShaderInstance (a single block of a walk), or a program's own, called directly
-// (shadeTileWholeWith below).
-template <class Shade>
+// (shadeTileWholeWith below), which also knows how many varyings it reads (kVaryingFloats).
+template <int kVaryingFloats, class Shade>
 [[gnu::always_inline]] inline void shadeBlockColorsWith(const TileJob& job, const SetupTriangle& tri,
                                                         const LaneLayout<simd::Float8>& layout, int blockX, int blockY,
                                                         PipelineCounters& counters, const Shade& shade,
@@ -36,7 +36,7 @@ template <class Shade>
   FragmentInput<Float8x2> in;
   Float8x2 varyings[limits::kMaxVaryingFloats];
   const Float8x2 px = Float8x2(float(blockX)) + dx, py = Float8x2(float(blockY)) + dy;
-  interpolateFragment(job, tri, px, py, fragmentDepth(tri, px, py), in, varyings);
+  interpolateFragment<kVaryingFloats>(job, tri, px, py, fragmentDepth(tri, px, py), in, varyings);
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;   // interpolation counts as rasterization
   shade(in, static_cast<const Float8x2*>(varyings), out);
   if (job.timeStages) counters.shadeCycles += cycleCount() - shadeStart;
@@ -46,7 +46,7 @@ template <class Shade>
 }
 
 // shadeBlockColorsWith, then the colours merged into every target.
-template <class Shade>
+template <int kVaryingFloats, class Shade>
 [[gnu::always_inline]] inline void shadeBlockWholeWith(const TileJob& job, const SetupTriangle& tri,
                                                        const LaneLayout<simd::Float8>& layout, int blockX, int blockY,
                                                        PipelineCounters& counters, const Shade& shade) {
@@ -57,7 +57,7 @@ template <class Shade>
   const int outputs = colorOutputsWritten(draw, fb);
   const bool additive = draw.state.blendAdditive;
   FragmentOutput<Float8x2> out;
-  shadeBlockColorsWith(job, tri, layout, blockX, blockY, counters, shade, out);
+  shadeBlockColorsWith<kVaryingFloats>(job, tri, layout, blockX, blockY, counters, shade, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
 
   size_t upper[8], lower[8];
@@ -100,7 +100,7 @@ inline bool storesRgba8Lines(const TileJob& job, const DrawRecord& draw, bool on
 // each memory row of the four is one 64-byte line, stored around the cache. A block's
 // 16-byte rows had each waited on their line's read for ownership (the hdr composite's
 // 8.3 MB at 1920x1080); a streaming store of a whole line needs none.
-template <class Shade>
+template <int kVaryingFloats, class Shade>
 [[gnu::always_inline]] inline void shadeRgba8LinesWith(const TileJob& job, const SetupTriangle& tri,
                                                        const LaneLayout<simd::Float8>& layout, int x, int blockY,
                                                        PipelineCounters& counters, const Shade& shade) {
@@ -108,7 +108,7 @@ template <class Shade>
   __m512i rows[4];   // block b: [its lane 0 row | lane 2 row | lane 8 row | lane 10 row]
   for (int b = 0; b < 4; ++b) {
     FragmentOutput<simd::Float8x2> out;
-    shadeBlockColorsWith(job, tri, layout, x + 4 * b, blockY, counters, shade, out);
+    shadeBlockColorsWith<kVaryingFloats>(job, tri, layout, x + 4 * b, blockY, counters, shade, out);
     rows[b] = merge::rgba8RowsPair(out.color[0]);
   }
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
@@ -136,7 +136,7 @@ template <>
                                                                  const LaneLayout<simd::Float8>& layout, int blockX,
                                                                  int blockY, PipelineCounters& counters) {
   const ShaderInstance& shader = *job.draws[tri.drawIndex].shader;
-  shadeBlockWholeWith(job, tri, layout, blockX, blockY, counters,
+  shadeBlockWholeWith<kVaryingsOfDraw>(job, tri, layout, blockX, blockY, counters,
                       [&](const FragmentInput<simd::Float8x2>& in, const simd::Float8x2* varyings,
                           FragmentOutput<simd::Float8x2>& out) { shader.shadeFragments(in, varyings, out); });
 }
@@ -145,7 +145,7 @@ template <>
 // this loop with a direct call of its own fragment shader (ShaderInstance::shadeTileWhole):
 // one virtual call a tile instead of one a block, which made hdr's frame at 1920x1080 (ten
 // fullscreen passes, the composite and the bright pass the largest) 1-2% shorter.
-template <class Shade>
+template <int kVaryingFloats, class Shade>
 [[gnu::always_inline]] inline void shadeTileWholeWith(const TileJob& job, const TileBounds& tile,
                                                       const SetupTriangle& tri, const LaneLayout<simd::Float8>& layout,
                                                       bool onlyTriangle, PipelineCounters& counters, const Shade& shade) {
@@ -154,8 +154,10 @@ template <class Shade>
   if (storesRgba8Lines(job, job.draws[tri.drawIndex], onlyTriangle)) {
     for (int blockY = tile.y0; blockY <= tile.y1; blockY += kBlock) {
       int blockX = tile.x0;   // a multiple of the tile size, so of 16
-      for (; blockX + 16 <= tile.x1 + 1; blockX += 16) shadeRgba8LinesWith(job, tri, layout, blockX, blockY, counters, shade);
-      for (; blockX <= tile.x1; blockX += kBlock) shadeBlockWholeWith(job, tri, layout, blockX, blockY, counters, shade);
+      for (; blockX + 16 <= tile.x1 + 1; blockX += 16)
+        shadeRgba8LinesWith<kVaryingFloats>(job, tri, layout, blockX, blockY, counters, shade);
+      for (; blockX <= tile.x1; blockX += kBlock)
+        shadeBlockWholeWith<kVaryingFloats>(job, tri, layout, blockX, blockY, counters, shade);
     }
     merge::endStreaming();
     return;
@@ -163,7 +165,7 @@ template <class Shade>
 #endif
   for (int blockY = tile.y0; blockY <= tile.y1; blockY += kBlock)
     for (int blockX = tile.x0; blockX <= tile.x1; blockX += kBlock)
-      shadeBlockWholeWith(job, tri, layout, blockX, blockY, counters, shade);
+      shadeBlockWholeWith<kVaryingFloats>(job, tri, layout, blockX, blockY, counters, shade);
 }
 
 template <>

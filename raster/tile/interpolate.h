@@ -30,9 +30,15 @@ F fragmentDepth(const SetupTriangle& tri, F px, F py) {
   return simd::min(evaluatePlane(tri.z, px, py) + F(tri.depthOffset), F(1.0f));
 }
 
+// The varying count of interpolateFragment's draw, where its caller knows it when compiled
+// (a program's own fullscreen tile loop, covered_tile_avx2.h): the loop over the varyings then
+// unrolls and their values can stay in registers on their way into the port. kVaryingsOfDraw:
+// read from the draw.
+inline constexpr int kVaryingsOfDraw = -1;
+
 // Fragment inputs of lanes at pixels (px, py) with window z: perspective-correct varyings
 // and gl_FragCoord, for a group or a pair of groups (the same operations per lane).
-template <class F>
+template <int kVaryingFloats = kVaryingsOfDraw, class F>
 [[gnu::always_inline]] inline void interpolateFragment(const TileJob& job, const SetupTriangle& tri, F px, F py, F z,
                                                        FragmentInput<F>& in, F* varyings) {
   const Framebuffer& fb = *job.framebuffer;
@@ -45,7 +51,7 @@ template <class F>
   const MethodSet& methodSet = methods::active();
   const bool unitW = tri.w.a0 == 1.0f && tri.w.dadx == 0.0f && tri.w.dady == 0.0f;
   const F w = unitW ? F(1.0f) : evaluatePlane(tri.w, px, py);
-  const int varyingCount = job.draws[tri.drawIndex].varyingFloats;
+  const int varyingCount = kVaryingFloats != kVaryingsOfDraw ? kVaryingFloats : job.draws[tri.drawIndex].varyingFloats;
   const Plane* planes = job.varyingPlanes.data() + tri.varyingBase;
   if (!methods::perspectiveVaryings(methodSet.interp) || unitW) {
     for (int v = 0; v < varyingCount; ++v) varyings[v] = evaluatePlane(planes[v], px, py);

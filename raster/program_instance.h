@@ -61,8 +61,13 @@ class ProgramInstance final : public ShaderInstance {
                       FragmentOutput<PairedLanes>& out) const override {
     shade(in, varyings, out);
   }
-  void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
-                      const LaneLayout<FastLanes>& layout, bool onlyTriangle, PipelineCounters& counters) const override {
+  // Flattened: GCC inlines the port's fragment shader into this loop where it can (hdr's bright,
+  // down and up passes; the composite, SSAO, lighting and blur shaders stay calls), so a block's
+  // varyings and colours stay in registers: hdr's last upsample 0.394 -> 0.341 ms at 640x480,
+  // 2 threads (docs/notes/2026-12-05-varying-count-and-twice-resolution.md).
+  [[gnu::flatten]] void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                                       const LaneLayout<FastLanes>& layout, bool onlyTriangle,
+                                       PipelineCounters& counters) const override {
     shadeTileWholeWith<varyingFloatCount<Program>()>(job, tile, tri, layout, onlyTriangle, counters,
                        [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
                               FragmentOutput<PairedLanes>& out) __attribute__((always_inline)) { shade(in, varyings, out); });

@@ -13,6 +13,13 @@
 #include "raster/shader/texel_planes.h"
 #include "raster/tile/covered_tile.h"
 
+// ProgramInstance::shadeTileWhole's inlining (below), for speed alone.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define RASTER_FLATTEN_TILE_LOOP
+#else
+#define RASTER_FLATTEN_TILE_LOOP [[gnu::flatten]]
+#endif
+
 namespace raster {
 
 template <class Program>
@@ -64,10 +71,11 @@ class ProgramInstance final : public ShaderInstance {
   // Flattened: GCC inlines the port's fragment shader into this loop where it can (hdr's bright,
   // down and up passes; the composite, SSAO, lighting and blur shaders stay calls), so a block's
   // varyings and colours stay in registers: hdr's last upsample 0.394 -> 0.341 ms at 640x480,
-  // 2 threads (docs/notes/2026-12-05-varying-count-and-twice-resolution.md).
-  [[gnu::flatten]] void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
-                                       const LaneLayout<FastLanes>& layout, bool onlyTriangle,
-                                       PipelineCounters& counters) const override {
+  // 2 threads (docs/notes/2026-12-05-varying-count-and-twice-resolution.md). Not in the
+  // sanitizer builds, which check the same code: flattened, they took CI 2.7 minutes longer.
+  RASTER_FLATTEN_TILE_LOOP
+  void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
+                      const LaneLayout<FastLanes>& layout, bool onlyTriangle, PipelineCounters& counters) const override {
     shadeTileWholeWith<varyingFloatCount<Program>()>(job, tile, tri, layout, onlyTriangle, counters,
                        [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
                               FragmentOutput<PairedLanes>& out) __attribute__((always_inline)) { shade(in, varyings, out); });

@@ -76,9 +76,10 @@ class ProgramInstance final : public ShaderInstance {
   RASTER_FLATTEN_TILE_LOOP
   void shadeTileWhole(const TileJob& job, const TileBounds& tile, const SetupTriangle& tri,
                       const LaneLayout<FastLanes>& layout, bool onlyTriangle, PipelineCounters& counters) const override {
-    shadeTileWholeWith<varyingFloatCount<Program>()>(job, tile, tri, layout, onlyTriangle, counters,
-                       [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings,
-                              FragmentOutput<PairedLanes>& out) __attribute__((always_inline)) { shade(in, varyings, out); });
+    shadeTileWholeWith<varyingFloatCount<Program>()>(
+        job, tile, tri, layout, onlyTriangle, counters,
+        [this](const FragmentInput<PairedLanes>& in, const PairedLanes* varyings, FragmentOutput<PairedLanes>& out)
+            __attribute__((always_inline)) { shade(in, varyings, out); });
   }
 #endif
 

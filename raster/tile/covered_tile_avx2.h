@@ -136,9 +136,11 @@ template <>
                                                                  const LaneLayout<simd::Float8>& layout, int blockX,
                                                                  int blockY, PipelineCounters& counters) {
   const ShaderInstance& shader = *job.draws[tri.drawIndex].shader;
-  shadeBlockWholeWith<kVaryingsOfDraw>(job, tri, layout, blockX, blockY, counters,
-                      [&](const FragmentInput<simd::Float8x2>& in, const simd::Float8x2* varyings,
-                          FragmentOutput<simd::Float8x2>& out) { shader.shadeFragments(in, varyings, out); });
+  shadeBlockWholeWith<kVaryingsOfDraw>(
+      job, tri, layout, blockX, blockY, counters,
+      [&](const FragmentInput<simd::Float8x2>& in, const simd::Float8x2* varyings, FragmentOutput<simd::Float8x2>& out) {
+        shader.shadeFragments(in, varyings, out);
+      });
 }
 
 // Every block of the tile, with the fragment shader `shade`. Each program's instance runs

@@ -114,3 +114,5 @@ class ProgramInstance final : public ShaderInstance {
 };
 
 }  // namespace raster
+
+#undef RASTER_FLATTEN_TILE_LOOP

@@ -3,9 +3,11 @@
 
 #include "io/output_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -60,9 +62,23 @@ std::optional<uint64_t> parseUnsigned(const std::string& text) {
   return value;
 }
 
+// Whether this process can make a file in `folder`, tried rather than predicted: for root,
+// access(W_OK) says yes of folders nobody can write into (/proc, /sys), and the run would
+// then fail at its end, after the work, with exit 1. A probe file is made and removed.
 bool writableFolder(const fs::path& folder) {
   std::error_code error;
-  return fs::is_directory(folder, error) && access(folder.c_str(), W_OK | X_OK) == 0;
+  if (!fs::is_directory(folder, error) || access(folder.c_str(), W_OK | X_OK) != 0) return false;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const fs::path probe = folder / (".raster-write-probe-" + std::to_string(getpid()) + "-" + std::to_string(attempt));
+    const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd >= 0) {
+      close(fd);
+      unlink(probe.c_str());
+      return true;
+    }
+    if (errno != EEXIST) return false;
+  }
+  return false;
 }
 
 }  // namespace

@@ -258,6 +258,16 @@ TEST_SUITE("cli") {
     expectRefused("compare " + aScene() + " --out /nonexistent/dir/cmp");
   }
 
+  // To root, access(W_OK) says yes of /proc, which takes no new files: the check tries a
+  // file there, so the run is refused before its work, not failed after it with exit 1.
+  TEST_CASE("a folder that takes no files, even from root, is refused before the work") {
+    expectRefused("render " + aScene() + " --out /proc/x.png", "--out");
+    expectRefused("render " + aScene() + " --dump /proc/dump", "--dump");
+    expectRefused("compare " + aScene() + " --out /proc/cmp", "--out");
+    expectRefused("bench " + aScene() + " --frames 1 --json /proc/b.json", "--json");
+    expectRefused("render " + aScene() + " --out /proc/self/x.png", "--out");
+  }
+
   TEST_CASE("identical images: no difference, infinite PSNR") {
     const compare::TargetStats s = compare::compareImages("t", rgba8Image(4, 4, 7), rgba8Image(4, 4, 7));
     CHECK(s.kind == "rgba8");

@@ -233,6 +233,7 @@ void checkOutputFolder(const std::string& option, const std::string& path) {
   if (!folder.has_filename()) folder = folder.parent_path();   // "out/" -> "out"
   std::error_code error;
   if (fs::exists(folder, error)) {
+    if (!fs::is_directory(folder, error)) throw UsageError(option + ": " + path + " is a file, not a folder");
     if (!writableFolder(folder))
       throw UsageError(option + ": " + path + " is not a writable folder");
     return;

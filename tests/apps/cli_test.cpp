@@ -266,6 +266,9 @@ TEST_SUITE("cli") {
     expectRefused("compare " + aScene() + " --out /proc/cmp", "--out");
     expectRefused("bench " + aScene() + " --frames 1 --json /proc/b.json", "--json");
     expectRefused("render " + aScene() + " --out /proc/self/x.png", "--out");
+    // A file where a folder is asked for says so.
+    expectRefused("render " + aScene() + " --dump /etc/passwd", "/etc/passwd is a file, not a folder");
+    expectRefused("compare " + aScene() + " --out /etc/passwd", "/etc/passwd is a file, not a folder");
   }
 
   TEST_CASE("identical images: no difference, infinite PSNR") {

@@ -1,6 +1,7 @@
 // The catalog of steps and methods, the presets, and the parsing of their names.
 #include "raster/methods.h"
 
+#include <algorithm>
 #include <array>
 #include <type_traits>
 
@@ -284,13 +285,18 @@ void setMethod(MethodSet& set, std::string_view step, std::string_view method) {
 }
 
 void applyMethodOverrides(MethodSet& set, std::string_view overrides) {
+  std::vector<std::string_view> stepsGiven;   // a step twice is ambiguous, not "the last wins"
   while (!overrides.empty()) {
     const size_t comma = overrides.find(',');
     const std::string_view item = overrides.substr(0, comma);
     const size_t eq = item.find('=');
     if (eq == std::string_view::npos || eq == 0)
       throw MethodError(std::string("'").append(item).append("' is not STEP=METHOD (for example math=fast)"));
-    setMethod(set, item.substr(0, eq), item.substr(eq + 1));
+    const std::string_view step = item.substr(0, eq);
+    if (std::find(stepsGiven.begin(), stepsGiven.end(), step) != stepsGiven.end())
+      throw MethodError(std::string("step ").append(step).append(" is given twice"));
+    stepsGiven.push_back(step);
+    setMethod(set, step, item.substr(eq + 1));
     if (comma == std::string_view::npos) break;
     overrides.remove_prefix(comma + 1);
     if (overrides.empty()) throw MethodError("a trailing comma in --method");

@@ -85,6 +85,8 @@ TEST_SUITE("methods") {
           "unknown step 'blend' (steps: math, filter, half, div, interp, lookup, compare, shading)");
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math"); }).empty());
     CHECK(!errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "math=fast,"); }).empty());
+    CHECK(errorOf([] { raster::MethodSet s; raster::applyMethodOverrides(s, "shading=2x2-all,math=fast,shading=1x1"); }) ==
+          "step shading is given twice");
   }
 
   TEST_CASE("each preset's final image against llvmpipe, every scene, at its threshold") {

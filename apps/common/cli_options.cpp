@@ -157,12 +157,17 @@ Frame validateFrame(const FrameArgs& args) {
     throw UsageError("--assets: no such folder: " + args.assets);
   frame.assets = args.assets;
 
-  // --set NAME=VALUE, after the options it may override (time, size, instances).
+  // --set NAME=VALUE, after the options it may override (time, size, instances); a name
+  // set twice is ambiguous, not "the last wins".
+  std::vector<std::string> namesSet;
   for (const std::string& set : args.sets) {
     const size_t equals = set.find('=');
     if (equals == std::string::npos || equals == 0)
       throw UsageError("--set: '" + set + "' is not NAME=VALUE (raster params " + frame.scene + " lists the names)");
     const std::string name = set.substr(0, equals), value = set.substr(equals + 1);
+    if (std::find(namesSet.begin(), namesSet.end(), name) != namesSet.end())
+      throw UsageError("--set: " + name + " is given twice");
+    namesSet.push_back(name);
     try {
       if (name == "size") {
         scenes::findParam(frame.scene, name);

@@ -68,6 +68,8 @@ TEST_SUITE("sweep") {
     expectRefused("render hdr --set instances=2.5", "whole number");
     expectRefused("render shadow --set size=0x5", "size");
     expectRefused("render shadow --set time=nan", "finite");
+    expectRefused("render shadow --set near=0.1 --set near=0.2", "near is given twice");
+    expectRefused("render shadow --method shading=2x2,shading=1x1", "shading is given twice");
   }
 
   TEST_CASE("sweep: bad ranges, method lists and shards are refused before anything is written") {

@@ -25,6 +25,14 @@ void addSweepMergeOptions(CLI::App& command, SweepMergeArgs& args) {
 }
 
 int runSweepMerge(const SweepMergeArgs& args) {
+  // The merge writes sweep.json into --out: into a shard's folder it would replace that
+  // shard's own, and the shards could not be merged again.
+  for (const std::string& folder : args.shards) {
+    std::error_code error;
+    if (fs::equivalent(args.out, folder, error))
+      throw UsageError("--out: " + args.out + " is the shard folder " + folder +
+                       ", whose sweep.json the merge would replace; name another folder");
+  }
   json merged;
   std::map<int, std::string> seen;   // shard index -> folder
   int count = 0;

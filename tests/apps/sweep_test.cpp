@@ -165,6 +165,12 @@ TEST_SUITE("sweep") {
     refused = runCli(temp.path, "sweep-merge part1 part1 part2 part3 --out m2");
     CHECK(refused.status == 2);
     CHECK(refused.err.find("also in") != std::string::npos);
+    // Merged into a shard's own folder, the shard's sweep.json would be lost.
+    const std::string part2Before = readText(temp.path / "part2" / "sweep.json");
+    refused = runCli(temp.path, "sweep-merge part1 part2 part3 --out ./part2/");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("is the shard folder part2") != std::string::npos);
+    CHECK(readText(temp.path / "part2" / "sweep.json") == part2Before);
     REQUIRE(runCli(temp.path, "sweep shadow --param light_elevation=10:70:5 --size 48x36 --methods gl,fast --no-softpipe "
                               "--quiet --shard 3/3 --out other").status == 0);
     refused = runCli(temp.path, "sweep-merge part1 part2 other --out m2");

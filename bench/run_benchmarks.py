@@ -18,6 +18,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 import time
 
 from raster_scenes import scene_names
@@ -45,9 +46,14 @@ def run_bench(raster, scene, size, threads, frames, driver="llvmpipe"):
 
 def peak_memory_mb(raster, scene, size, backend):
     """Peak resident memory of one `raster render` process (this pipeline or GL)."""
-    cmd = [raster, "render", scene, "--size", size, "--backend", backend, "--out", os.devnull + ".png"]
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _, status, usage = os.wait4(proc.pid, 0)
+    # The PNG goes to a folder of its own: "/dev/null.png" made a file in /dev as root and was
+    # refused (exit 2, a few MB measured) for anyone else.
+    with tempfile.TemporaryDirectory() as folder:
+        cmd = [raster, "render", scene, "--size", size, "--backend", backend, "--out", os.path.join(folder, "peak.png")]
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        _, status, usage = os.wait4(proc.pid, 0)
+    if status != 0:
+        sys.exit(f"run_benchmarks.py: {' '.join(cmd)} failed (status {status})")
     return usage.ru_maxrss / 1024.0   # ru_maxrss is in KiB on Linux
 
 

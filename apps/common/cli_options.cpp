@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -230,6 +231,14 @@ void checkOutputFile(const std::string& option, const std::string& path) {
   if (!writableFolder(folder))
     throw UsageError(option + ": cannot write into " + folder.string() +
                      " (no such folder, or not writable)");
+}
+
+void checkOutputPng(const std::string& option, const std::string& path) {
+  checkOutputFile(option, path);   // first: a device, FIFO or folder is named as such
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension != ".png")
+    throw UsageError(option + ": " + path + " is written as PNG; give it a name ending in .png");
 }
 
 void checkOutputFolder(const std::string& option, const std::string& path) {

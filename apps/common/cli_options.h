@@ -94,6 +94,9 @@ void addMethodOptions(CLI::App& command, std::string& preset, std::string& metho
 
 // Checks that `path` can be created or replaced: its folder exists and is writable.
 void checkOutputFile(const std::string& option, const std::string& path);
+// checkOutputFile for a PNG: the name must also end in .png, so that a y.jpg is not given PNG
+// bytes under another format's name.
+void checkOutputPng(const std::string& option, const std::string& path);
 // Checks that `path` is a writable folder, or can be made in an existing writable folder.
 void checkOutputFolder(const std::string& option, const std::string& path);
 

@@ -19,7 +19,7 @@ int runRender(const RenderArgs& args) {
   if (args.backend == "gl" && !(frame.methods == raster::MethodSet{}))
     throw UsageError("--preset/--method choose this pipeline's methods; --backend gl renders with GL's own");
   const std::string out = args.out.empty() ? frame.scene + ".png" : args.out;
-  checkOutputFile("--out", out);
+  checkOutputPng("--out", out);
   if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);
   if (args.backend == "gl") scenes::checkGalliumEnvironment();
 

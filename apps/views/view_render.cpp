@@ -43,7 +43,7 @@ ViewRequest checkRequest(const RenderArgs& args, const Frame& frame) {
   }
   request.out = args.out.empty() ? frame.scene + "-" + args.view + ".png" : args.out;
   request.sidecar = sidecarPath(request.out);
-  checkOutputFile("--out", request.out);
+  checkOutputPng("--out", request.out);
   checkOutputFile("--out (its sidecar JSON)", request.sidecar);
   if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);
   return request;

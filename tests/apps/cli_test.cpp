@@ -271,6 +271,15 @@ TEST_SUITE("cli") {
     expectRefused("compare " + aScene() + " --out /etc/passwd", "/etc/passwd is a file, not a folder");
   }
 
+  TEST_CASE("render writes PNG only under a .png name") {
+    expectRefused("render " + aScene() + " --out x.jpg", "ending in .png");
+    expectRefused("render " + aScene() + " --out x", "ending in .png");
+    expectRefused("render " + aScene() + " --view overdraw --out x.jpeg", "ending in .png");
+    TempFolder temp;
+    REQUIRE(runCli(temp.path, "render " + aScene() + " --size 8x6 --quiet --out X.PNG").status == 0);
+    CHECK(fs::file_size(temp.path / "X.PNG") > 0);
+  }
+
   TEST_CASE("identical images: no difference, infinite PSNR") {
     const compare::TargetStats s = compare::compareImages("t", rgba8Image(4, 4, 7), rgba8Image(4, 4, 7));
     CHECK(s.kind == "rgba8");

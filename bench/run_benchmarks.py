@@ -53,7 +53,7 @@ def peak_memory_mb(raster, scene, size, backend):
         proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         _, status, usage = os.wait4(proc.pid, 0)
     if status != 0:
-        sys.exit(f"run_benchmarks.py: {' '.join(cmd)} failed (status {status})")
+        sys.exit(f"run_benchmarks.py: {' '.join(cmd)} failed (exit status {os.waitstatus_to_exitcode(status)})")
     return usage.ru_maxrss / 1024.0   # ru_maxrss is in KiB on Linux
 
 

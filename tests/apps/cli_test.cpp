@@ -188,6 +188,9 @@ TEST_SUITE("cli") {
     // GL has its own numerics: asking it for ours is refused rather than ignored.
     expectRefused("render " + aScene() + " --backend gl --preset fast");
     expectRefused("compare " + aScene() + " --test softpipe --method math=fast");
+    // Nor does GL have our SIMD paths to turn off.
+    expectRefused("render " + aScene() + " --backend gl --scalar", "--scalar");
+    expectRefused("compare " + aScene() + " --test softpipe --scalar", "--scalar");
   }
 
   TEST_CASE("render --preset and --method change this pipeline's image; gl is the default's bytes") {

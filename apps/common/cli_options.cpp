@@ -191,7 +191,7 @@ Frame validateFrame(const FrameArgs& args) {
   if (!args.maxMemory.empty()) {
     uint64_t bytes = 0;
     if (!scenes::memory::parseBytes(args.maxMemory, bytes))
-      throw UsageError("--max-memory: '" + args.maxMemory + "' is not a size (a number with K, M, G or T, e.g. 8G)");
+      throw UsageError("--max-memory: '" + args.maxMemory + "' is not a size (a number of bytes above 0, or of K, M, G or T, e.g. 8G; below 16 EiB)");
     scenes::memory::setCap(bytes);
   }
   return frame;

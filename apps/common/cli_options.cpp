@@ -218,6 +218,12 @@ double parseFiniteNumber(const std::string& option, const std::string& text) {
   return value;
 }
 
+void refuseOwnOptionsOnGl(const Frame& frame, const std::string& side) {
+  if (!(frame.methods == raster::MethodSet{}))
+    throw UsageError("--preset/--method choose this pipeline's methods; " + side + " renders with GL's own");
+  if (frame.scalar) throw UsageError("--scalar turns off this pipeline's SIMD paths; " + side + " is GL");
+}
+
 void checkOutputFile(const std::string& option, const std::string& path) {
   const fs::path file(path);
   const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();

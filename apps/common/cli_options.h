@@ -92,6 +92,11 @@ void addQuietOption(CLI::App& command, bool& quiet);
 // Adds --preset and --method to a command.
 void addMethodOptions(CLI::App& command, std::string& preset, std::string& method);
 
+// This pipeline's own options (--preset, --method, --scalar) given to a GL side are refused,
+// not ignored: GL has its own numerics and none of our SIMD paths. `side` names the GL side
+// as the command line chose it ("--backend gl", "--test softpipe").
+void refuseOwnOptionsOnGl(const Frame& frame, const std::string& side);
+
 // Checks that `path` can be created or replaced: its folder exists and is writable.
 void checkOutputFile(const std::string& option, const std::string& path);
 // checkOutputFile for a PNG: the name must also end in .png, so that a y.jpg is not given PNG

@@ -43,10 +43,7 @@ int runCompare(const CompareArgs& args) {
     throw UsageError("--test: '" + args.test + "' is neither raster nor softpipe");
   if (args.reference != "llvmpipe" && args.reference != "softpipe")
     throw UsageError("--reference: '" + args.reference + "' is neither llvmpipe nor softpipe");
-  if (args.test != "raster" && !(frame.methods == raster::MethodSet{}))
-    throw UsageError("--preset/--method choose this pipeline's methods; --test " + args.test + " renders with GL's own");
-  if (args.test != "raster" && frame.scalar)
-    throw UsageError("--scalar turns off this pipeline's SIMD paths; --test " + args.test + " is GL");
+  if (args.test != "raster") refuseOwnOptionsOnGl(frame, "--test " + args.test);
   const Thresholds limits = validateThresholds(args);
   const std::string outFolder = args.out.empty() ? "compare-" + frame.scene : args.out;
   checkOutputFolder("--out", outFolder);

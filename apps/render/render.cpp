@@ -16,10 +16,7 @@ int runRender(const RenderArgs& args) {
     throw UsageError("--backend: '" + args.backend + "' is neither raster nor gl");
   if (!args.view.empty()) return runViewRender(args, frame);
   if (!args.pass.empty()) throw UsageError("--pass chooses the pass of a --view");
-  if (args.backend == "gl" && !(frame.methods == raster::MethodSet{}))
-    throw UsageError("--preset/--method choose this pipeline's methods; --backend gl renders with GL's own");
-  if (args.backend == "gl" && frame.scalar)
-    throw UsageError("--scalar turns off this pipeline's SIMD paths; --backend gl is GL");
+  if (args.backend == "gl") refuseOwnOptionsOnGl(frame, "--backend gl");
   const std::string out = args.out.empty() ? frame.scene + ".png" : args.out;
   checkOutputPng("--out", out);
   if (!args.dump.empty()) checkOutputFolder("--dump", args.dump);

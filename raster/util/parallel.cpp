@@ -10,7 +10,11 @@
 #include <thread>
 #include <vector>
 #else
+#include <algorithm>
+#include <mutex>
+
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -47,9 +51,21 @@ void ThreadPool::parallelFor(int count, const std::function<void(int)>& fn) {
 
 #else
 
+// oneTBB admits as many workers as the machine has cores unless told otherwise: an arena
+// asked for more (--threads 16 on 2 cores, as llvmpipe's LP_NUM_THREADS=16 runs 16) would run
+// on fewer and print a warning on stderr. The limit is process-wide, so it is raised to the
+// largest pool made so far and never lowered: an arena is still capped at its own count.
+static void admitWorkersFor(int threads) {
+  static std::mutex mutex;
+  static std::unique_ptr<tbb::global_control> limit;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (size_t(threads) <= tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)) return;
+  limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, size_t(threads));
+}
+
 struct ThreadPool::Arena {
   tbb::task_arena arena;
-  explicit Arena(int threads) : arena(threads) {}
+  explicit Arena(int threads) : arena(threads) { admitWorkersFor(threads); }
 };
 
 ThreadPool::ThreadPool(int threads)

@@ -3,12 +3,16 @@
 // SIMD lane type computes exactly what the plain C++ one does.
 #include <doctest/doctest.h>
 
+#include <atomic>
+#include <chrono>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "backends/backends.h"
 #include "raster/methods.h"
+#include "raster/util/parallel.h"
 #include "scenes/soup/soup_check.h"
 #include "tests/method_sets.h"
 #include "tests/scene_test_helpers.h"
@@ -16,6 +20,32 @@
 using testing_support::checkSameBytes;
 
 TEST_SUITE("determinism") {
+  // The tests below that run more threads than this machine has cores test something only if
+  // those threads run at once: a pool of N must have N items in flight together (oneTBB
+  // admits only as many workers as there are cores unless it is told otherwise). Each item
+  // waits, at most 5 s in all, until as many are in flight as the pool has threads.
+  TEST_CASE("a pool of more threads than cores runs that many items at once") {
+    for (int threads : {3, 16}) {
+      raster::ThreadPool pool(threads);
+      std::atomic<int> inFlight{0};
+      std::atomic<int> mostAtOnce{0};
+      std::atomic<bool> gaveUp{false};
+      const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+      pool.parallelFor(threads, [&](int) {
+        const int now = ++inFlight;
+        int most = mostAtOnce.load();
+        while (now > most && !mostAtOnce.compare_exchange_weak(most, now)) {
+        }
+        while (mostAtOnce.load() < threads && !gaveUp.load()) {
+          if (std::chrono::steady_clock::now() > giveUp) gaveUp = true;
+          std::this_thread::yield();
+        }
+        --inFlight;
+      });
+      CHECK_MESSAGE(mostAtOnce.load() == threads, "pool of ", threads, " threads");
+    }
+  }
+
   TEST_CASE("threads 1, 2 and 7 and the scalar path give identical bytes") {
     for (const auto& [w, h] : {std::pair{640, 480}, std::pair{333, 217}}) {
       auto one = scenes::makeRasterBackend(1);

@@ -54,6 +54,11 @@ import re
 import statistics
 import sys
 
+from chart_files import write_text_atomically
+from input_checks import NUMBER, BadInput, check_output_path, check_record, fail, read_json
+
+PROG = "scaling_model.py"
+
 SCENES = ["shadow", "deferred", "hdr", "pbr"]
 
 # The paper bound of each pass at 640x480 on 2 cores, ms: its arithmetic at the cores' peak
@@ -121,11 +126,36 @@ DEPTH_ONLY = {
 TILE, REGION, LP_MAX_THREADS, MAX_DEPTH_RANGES = 64, 16, 32, 4
 
 
+RUN_FIELDS = {"passes": list, "backends": list}
+RUN_PASS_FIELDS = {"raster_ms": NUMBER, "llvmpipe_ms": NUMBER}
+TILES_FIELDS = {"passes": list, "tsc_ghz": NUMBER}
+TILES_PASS_FIELDS = {"label": str, "tile_cycles": list, "tiles_x": int, "tiles_y": int, "height": int}
+
+
+def read_checked(path, what, fields, pass_fields):
+    """One JSON file, its fields and each pass's checked; anything else exits 2 naming it."""
+    doc = read_json(PROG, path, what)
+    try:
+        check_record(doc, fields, "")
+        if not doc["passes"]:
+            raise BadInput("no passes")
+        for i, p in enumerate(doc["passes"]):
+            check_record(p, pass_fields, f"pass {i}")
+    except BadInput as e:
+        fail(PROG, f"{path}: not {what} ({e})")
+    return doc
+
+
 def load_runs(folder, scene, threads):
-    runs = []
-    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_t{threads}_r*.json"))):
-        with open(path) as f:
-            runs.append(json.load(f))
+    pattern = os.path.join(folder, f"{scene}_t{threads}_r*.json")
+    runs = [read_checked(path, "a `raster bench --passes --json` run", RUN_FIELDS, RUN_PASS_FIELDS)
+            for path in sorted(glob.glob(pattern))]
+    if not runs:
+        fail(PROG, f"no run matches {pattern} (see --help's Usage for the names)")
+    for path, run in zip(sorted(glob.glob(pattern)), runs):
+        names = {b.get("name") for b in run["backends"] if isinstance(b, dict) and "median_ms" in b}
+        if not {"raster", "llvmpipe"} <= names:
+            fail(PROG, f"{path}: not a `raster bench` run against llvmpipe (its backends: {sorted(map(str, names))})")
     return runs
 
 
@@ -142,10 +172,15 @@ def median_frame(runs, backend):
 
 def load_tiles(folder, scene):
     """Per pass label: per-tile cost, the median over runs of each tile's cycles; and the pass's shape."""
-    runs = []
-    for path in sorted(glob.glob(os.path.join(folder, f"{scene}_r*.json"))):
-        with open(path) as f:
-            runs.append(json.load(f))
+    pattern = os.path.join(folder, f"{scene}_r*.json")
+    runs = [read_checked(path, "`bench/tile_costs` output", TILES_FIELDS, TILES_PASS_FIELDS)
+            for path in sorted(glob.glob(pattern))]
+    if not runs:
+        fail(PROG, f"no tile costs match {pattern} (see --help's Usage for the names)")
+    shape = [(p["label"], len(p["tile_cycles"])) for p in runs[0]["passes"]]
+    for path, r in zip(sorted(glob.glob(pattern))[1:], runs[1:]):
+        if [(p["label"], len(p["tile_cycles"])) for p in r["passes"]] != shape:
+            fail(PROG, f"{path}: its passes or tiles differ from {sorted(glob.glob(pattern))[0]}'s (another size?)")
     passes = {}
     for i, p in enumerate(runs[0]["passes"]):
         costs = [statistics.median(r["passes"][i]["tile_cycles"][t] for r in runs) for t in range(len(p["tile_cycles"]))]
@@ -218,6 +253,14 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
         T1, T2, LT1, LT2 = frames
     passes_note = " (the runs' passes, not the hour of --frames)" if frames else ""
     tile_passes = load_tiles(tiles, scene)
+    labels = [label for label, _, _, _ in BOUNDS[scene]]
+    missing = [label for label in labels if label not in tile_passes]
+    if missing:
+        fail(PROG, f"--tiles {tiles}: {scene}'s tile costs have no pass {', '.join(missing)} (passes: "
+                   f"{', '.join(tile_passes)})")
+    for name, got in (("--runs at 1 thread", t1), ("--runs at 2 threads", t2)):
+        if len(got) != len(labels):
+            fail(PROG, f"{name}: {scene}'s runs time {len(got)} passes, its bound has {len(labels)}")
     passes = []
     for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
         tp = tile_passes[label]
@@ -309,18 +352,37 @@ def main():
                              "shares from, in place of --runs' (e.g. a quieter hour's run_benchmarks.py); repeatable")
     parser.add_argument("--json", help="also write every figure to this file")
     args = parser.parse_args()
-    thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
+    for option, folder in (("--runs", args.runs), ("--tiny", args.tiny), ("--tiles", args.tiles),
+                           ("--tiles-tiny", args.tiles_tiny)):
+        if folder is not None and not os.path.isdir(folder):
+            fail(PROG, f"{option} {folder}: not a folder")
+    scenes = args.scenes.split(",")
+    for scene in scenes:
+        if scene not in BOUNDS:
+            fail(PROG, f"--scenes: {scene!r} has no paper bound here (scenes: {', '.join(BOUNDS)})")
+    try:
+        thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
+    except ValueError:
+        fail(PROG, f"--threads {args.threads}: not a comma-separated list of whole numbers")
+    if thread_list[0] < 1:
+        fail(PROG, f"--threads {args.threads}: thread counts start at 1")
     frames = {}
     for item in args.frames:
-        name, values = item.split("=", 1)
-        frames[name] = [float(v) for v in values.split(",")]
+        name, _, values = item.partition("=")
+        try:
+            frames[name] = [float(v) for v in values.split(",")]
+        except ValueError:
+            frames[name] = []
+        if name not in BOUNDS or len(frames[name]) != 4 or not all(math.isfinite(v) and v > 0 for v in frames[name]):
+            fail(PROG, f"--frames {item}: not SCENE=T1,T2,LT1,LT2 (a scene and four times in ms above 0)")
+    if args.json:
+        check_output_path(PROG, "--json", args.json)
     models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
-              for s in args.scenes.split(",")]
+              for s in scenes]
     for m in models:
         print_scene(m, thread_list)
     if args.json:
-        with open(args.json, "w") as f:
-            json.dump(models, f, indent=1)
+        write_text_atomically(json.dumps(models, indent=1), args.json)
     return 0
 
 

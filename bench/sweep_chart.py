@@ -12,14 +12,13 @@ broken too.
 --metric flip puts the final image's mean LDR-FLIP error against llvmpipe (compare/flip.h:
 0 no visible difference, 1 the most) on the y axis instead; identical points read 0 and the
 dB threshold is not drawn (failure is still PSNR's, as sweep.json says). A sweep written
-before FLIP was measured has none: the chart says so and exits 1.
+before FLIP was measured has none: the chart says so and exits 2.
 
 Usage: sweep_chart.py SWEEP.json --out PREFIX [--metric psnr|flip]
 writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
+A file that is not a sweep.json, or a PREFIX whose folder takes no files, exits 2 naming it.
 """
 import argparse
-import json
-import sys
 
 import matplotlib
 
@@ -27,25 +26,46 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
+from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, read_json  # noqa: E402
+
+PROG = "sweep_chart.py"
+# The fields the chart reads, of the sweep and of each point (raster sweep writes more).
+SWEEP_FIELDS = {"points": list, "param": str, "scene": str, "threshold_db": NUMBER, "range": dict, "size": list,
+                "time": NUMBER}
+POINT_FIELDS = {"method": str, "value": NUMBER, "value_index": int, "fails": bool, "nonfinite_pixels": int,
+                "psnr_vs_llvmpipe_db": OPTIONAL(NUMBER)}
 
 STYLE = {"softpipe": dict(color="#d62728", linestyle="--", marker="D")}
 
 
-def load(path):
+def load(path, flip):
+    """The sweep in path, its fields checked (and each point's FLIP where flip is charted)."""
+    sweep = read_json(PROG, path, "a sweep.json")
     try:
-        with open(path) as f:
-            sweep = json.load(f)
-        sweep["points"], sweep["param"], sweep["scene"]  # noqa: B018 (the fields the chart needs)
-        return sweep
-    except (OSError, ValueError, KeyError, TypeError) as e:
-        sys.exit(f"sweep_chart.py: {path}: not a sweep.json ({e})")
+        check_record(sweep, SWEEP_FIELDS, "")
+        check_record(sweep["range"], {"log": bool}, "'range'")
+        if len(sweep["size"]) != 2 or not all(isinstance(n, int) and n > 0 for n in sweep["size"]):
+            raise BadInput("'size' is not [width, height]")
+        if not sweep["points"]:
+            raise BadInput("no points")
+        for i, point in enumerate(sweep["points"]):
+            check_record(point, POINT_FIELDS, f"point {i}")
+    except BadInput as e:
+        fail(PROG, f"{path}: not a sweep.json ({e})")
+    if flip:
+        if any("flip_vs_llvmpipe" not in p for p in sweep["points"]):
+            fail(PROG, f"{path}: the sweep has no FLIP (written before it was measured); "
+                       "run raster sweep again or chart --metric psnr")
+        try:
+            for i, point in enumerate(sweep["points"]):
+                check_record(point, {"flip_vs_llvmpipe": OPTIONAL(NUMBER)}, f"point {i}")
+        except BadInput as e:
+            fail(PROG, f"{path}: not a sweep.json ({e})")
+    return sweep
 
 
 def draw_flip(sweep):
     points = sweep["points"]
-    if any("flip_vs_llvmpipe" not in p for p in points):
-        sys.exit("sweep_chart.py: the sweep has no FLIP (written before it was measured); "
-                 "run raster sweep again or chart --metric psnr")
     sides = [p["method"] for p in points if p["value_index"] == points[0]["value_index"]] if points else []
     fig, ax = plt.subplots(figsize=(8.5, 5))
     top = 0.0
@@ -132,7 +152,8 @@ def main():
     parser.add_argument("--metric", choices=("psnr", "flip"), default="psnr",
                         help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
-    sweep = load(args.sweep)
+    sweep = load(args.sweep, args.metric == "flip")
+    check_output_path(PROG, "--out", args.out)
     fig = draw_flip(sweep) if args.metric == "flip" else draw(sweep)
     for ext in ("png", "svg"):
         write_atomically(fig, f"{args.out}.{ext}")

@@ -19,12 +19,18 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from chart_files import write_text_atomically  # noqa: E402
+from input_checks import check_output_path, fail, read_json  # noqa: E402
 from raster_scenes import scene_names  # noqa: E402
+
+PROG = "target_hashes.py"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def parse_args():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--raster", default="build/raster", help="the raster binary (default build/raster)")
+    parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"),
+                        help="the raster binary (default: the repository's build/raster)")
     parser.add_argument("--scenes", help="comma-separated scenes (default: every registry scene)")
     parser.add_argument("--sizes", default="640x480,333x197,64x48", help="comma-separated WxH")
     parser.add_argument("--threads", default="1,2,3,4,5", help="comma-separated thread counts")
@@ -49,6 +55,14 @@ def target_hashes(dump_dir):
 
 def main():
     args = parse_args()
+    # What the end of the run reads or writes is checked before its minutes of renders.
+    before = None
+    if args.against:
+        before = read_json(PROG, args.against, "an earlier --out of this script")
+        if not isinstance(before, dict) or not all(isinstance(v, str) for v in before.values()):
+            fail(PROG, f"{args.against}: not an earlier --out of this script (an object of target hashes)")
+    if args.out:
+        check_output_path(PROG, "--out", args.out)
     scenes = args.scenes.split(",") if args.scenes else scene_names(args.raster)
     sizes = args.sizes.split(",")
     threads = args.threads.split(",")
@@ -62,6 +76,8 @@ def main():
             if scalar:
                 command.append("--scalar")
             done = subprocess.run(command, capture_output=True, text=True)
+            if done.returncode == 2:   # raster refused the input (a size, a scene): so does this script
+                fail(PROG, f"{' '.join(command)}: {done.stderr.strip()}")
             if done.returncode != 0:
                 sys.exit(f"{' '.join(command)} exited {done.returncode}: {done.stderr.strip()}")
             for target, digest in target_hashes(dump).items():
@@ -69,8 +85,7 @@ def main():
             print(f"\r{index}/{len(runs)} runs, {len(hashes)} target hashes", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
     if args.out:
-        with open(args.out, "w") as f:
-            json.dump(hashes, f, indent=1, sort_keys=True)
+        write_text_atomically(json.dumps(hashes, indent=1, sort_keys=True), args.out)
     per_config = {}
     for key, digest in hashes.items():
         scene, size, _, _, target = key.split(" ")
@@ -80,9 +95,7 @@ def main():
           f"{len(varying)} targets differ between thread counts or --scalar")
     for scene, size, target in varying:
         print(f"  varies: {scene} {size} {target}")
-    if args.against:
-        with open(args.against) as f:
-            before = json.load(f)
+    if before is not None:
         changed = sorted(k for k in hashes if k in before and before[k] != hashes[k])
         missing = sorted(set(before) ^ set(hashes))
         print(f"against {args.against}: {len(hashes) - len(changed) - len(set(hashes) - set(before))} same, "

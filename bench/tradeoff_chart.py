@@ -12,16 +12,15 @@ softpipe as drivers, the Pareto front (no point both faster and closer) as a lin
 most) on the y axis instead: log scale, smaller errors higher up, so "up" still reads "more
 accurate"; identical images (FLIP 0) sit on a marked line above the smallest error, and the
 Pareto front is the one FLIP makes (the JSON's "pareto" is PSNR's). Results written before
-FLIP was measured have no FLIP: the chart says so and exits 1.
+FLIP was measured have no FLIP: the chart says so and exits 2.
 
 Usage: tradeoff_chart.py RESULT.json [RESULT.json ...] --out PREFIX [--metric psnr|flip]
 writes PREFIX.png and PREFIX.svg, each complete or not at all (written beside, then renamed).
 A RESULT.json holds one scene's object, or a list of them (`raster tradeoff all`).
+A file that is not one, or a PREFIX whose folder takes no files, exits 2 naming it.
 """
 import argparse
-import json
 import math
-import sys
 
 import matplotlib
 
@@ -29,6 +28,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
+from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, read_json  # noqa: E402
+
+PROG = "tradeoff_chart"
 
 FAST_THRESHOLD_DB = 40.0
 KIND_STYLE = {
@@ -38,20 +40,30 @@ KIND_STYLE = {
 }
 
 
-def load_results(paths):
+def load_results(paths, metric):
+    """Every scene's result in paths, the fields the chart reads checked (METRICS[metric]'s)."""
+    point_fields = {"name": str, "kind": str, "speedup_vs_llvmpipe": NUMBER}
+    point_fields.update({field: OPTIONAL(NUMBER) for field, _ in METRICS[metric]["fields"]})
     results = []
     for path in paths:
-        try:
-            with open(path) as f:
-                data = json.load(f)
-        except (OSError, ValueError) as e:
-            sys.exit(f"tradeoff_chart: cannot read {path}: {e}")
+        data = read_json(PROG, path, "a tradeoff result")
         for result in data if isinstance(data, list) else [data]:
-            if not isinstance(result, dict) or "points" not in result or "scene" not in result:
-                sys.exit(f"tradeoff_chart: {path}: not a tradeoff result (no scene / points)")
+            try:
+                check_record(result, {"scene": str, "points": list}, "")
+                if not result["points"]:
+                    raise BadInput(f"{result['scene']}: no points")
+                for i, point in enumerate(result["points"]):
+                    if metric == "flip" and "flip_vs_llvmpipe" not in point:
+                        fail(PROG, f"{path}: {result['scene']}: the result has no FLIP (written before it was "
+                                   "measured); run raster tradeoff again or chart --metric psnr")
+                    check_record(point, point_fields, f"{result['scene']} point {i}")
+                    if not point["speedup_vs_llvmpipe"] > 0:
+                        raise BadInput(f"{result['scene']} point {i}: 'speedup_vs_llvmpipe' is not above 0")
+            except BadInput as e:
+                fail(PROG, f"{path}: not a tradeoff result ({e})")
             results.append(result)
     if not results:
-        sys.exit("tradeoff_chart: no results to draw")
+        fail(PROG, "no results to draw")
     return results
 
 
@@ -60,14 +72,6 @@ METRICS = {
     "psnr": dict(fields=(("psnr_vs_llvmpipe_db", "llvmpipe"), ("psnr_vs_precise_db", "precise"))),
     "flip": dict(fields=(("flip_vs_llvmpipe", "llvmpipe"), ("flip_vs_precise", "precise"))),
 }
-
-
-def check_flip(results):
-    for r in results:
-        for p in r["points"]:
-            if "flip_vs_llvmpipe" not in p or "flip_vs_precise" not in p:
-                sys.exit(f"tradeoff_chart: {r['scene']}: the result has no FLIP (written before it was measured); "
-                         "run raster tradeoff again or chart --metric psnr")
 
 
 def flip_floor_of(results, field):
@@ -186,9 +190,8 @@ def main():
     parser.add_argument("--metric", choices=sorted(METRICS), default="psnr",
                         help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
-    results = load_results(args.results)
-    if args.metric == "flip":
-        check_flip(results)
+    results = load_results(args.results, args.metric)
+    check_output_path(PROG, "--out", args.out)
     # Rows of up to three scenes: each scene against llvmpipe, and below it against precise.
     columns = min(3, len(results))
     scene_rows = math.ceil(len(results) / columns)

@@ -111,6 +111,13 @@ add_test(NAME goal_runs COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/go
          ${CMAKE_SOURCE_DIR})
 set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness COST 30)
 
+# The bench scripts that chart or model files a person hands them (bench/sweep_chart.py,
+# tradeoff_chart.py, scaling_model.py, target_hashes.py): the repository's own results drawn
+# and modelled, anything else refused with exit 2 and a line naming it, before any work.
+add_test(NAME bench_scripts COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/bench_scripts_test.py
+         $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
+set_tests_properties(bench_scripts PROPERTIES TIMEOUT 180 LABELS harness COST 15)
+
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.
 add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py

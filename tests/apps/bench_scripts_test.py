@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""The bench scripts that read files a person hands them (sweep_chart.py, tradeoff_chart.py,
+scaling_model.py, target_hashes.py) draw the repository's own results, and refuse anything
+else with exit 2 and one line naming the file and what is wrong: no Python traceback, no
+half-written output, and for target_hashes.py no minutes of renders before the refusal.
+scaling_model.py on the committed runs reproduces bench/results/scaling/model.md, the table
+BENCHMARKS.md quotes.
+
+Usage: bench_scripts_test.py RASTER_BINARY SOURCE_DIR
+"""
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+raster, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+bench = os.path.join(source, "bench")
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED: " + message, file=sys.stderr)
+
+
+def run(script, *args, cwd=None):
+    return subprocess.run([sys.executable, os.path.join(bench, script), *map(str, args)], capture_output=True,
+                          text=True, cwd=cwd)
+
+
+def expect_refused(script, args, naming, outputs=(), cwd=None):
+    """Exit 2, one line on stderr holding `naming`, no traceback, none of `outputs` written."""
+    done = run(script, *args, cwd=cwd)
+    what = f"{script} {' '.join(map(str, args))}"
+    check(done.returncode == 2, f"{what} exited {done.returncode}, not 2: {done.stderr[-1500:]}")
+    check("Traceback" not in done.stderr, f"{what} printed a traceback: {done.stderr[-1500:]}")
+    check(naming in done.stderr and len(done.stderr.strip().splitlines()) == 1,
+          f"{what}: stderr is not one line naming {naming!r}: {done.stderr[-1500:]}")
+    for path in outputs:
+        check(not os.path.exists(path), f"{what} left {path} behind")
+
+
+with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
+    def write(name, text):
+        path = os.path.join(tmp, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    malformed = write("malformed.json", '{"points": [')
+    a_list = write("list.json", "[1, 2]")
+    missing = os.path.join(tmp, "missing.json")
+    sweep = sorted(glob.glob(os.path.join(source, "docs", "stability", "*", "sweep.json")))[0]
+    with open(sweep) as f:
+        sweep_doc = json.load(f)
+    tradeoff = os.path.join(source, "docs", "tradeoff", "640x480", "tradeoff.json")
+    with open(tradeoff) as f:
+        tradeoff_doc = json.load(f)
+
+    # The charts draw the repository's own results, under both metrics.
+    for script, result in (("sweep_chart.py", sweep), ("tradeoff_chart.py", tradeoff)):
+        for metric in ("psnr", "flip"):
+            prefix = os.path.join(tmp, f"{script}-{metric}")
+            done = run(script, result, "--out", prefix, "--metric", metric)
+            check(done.returncode == 0, f"{script} {result} --metric {metric} exited {done.returncode}: {done.stderr}")
+            for ext, magic in (("png", b"\x89PNG"), ("svg", b"<?xml")):
+                with open(f"{prefix}.{ext}", "rb") as f:
+                    check(f.read(5).startswith(magic), f"{prefix}.{ext} is not a {ext}")
+
+    # A point with a field gone, of the wrong type, or a sweep without FLIP charted by FLIP.
+    point_gone = dict(sweep_doc, points=[{k: v for k, v in p.items() if k != "value_index"} for p in sweep_doc["points"]])
+    wrong_type = dict(sweep_doc, points=[dict(p, value="high") for p in sweep_doc["points"]])
+    no_flip = dict(sweep_doc, points=[{k: v for k, v in p.items() if k != "flip_vs_llvmpipe"} for p in sweep_doc["points"]])
+    out = os.path.join(tmp, "refused")
+    outputs = [out + ".png", out + ".svg"]
+    for path, naming in ((malformed, "malformed.json: not a sweep.json"), (a_list, "list.json: not a sweep.json"),
+                         (missing, "missing.json: not a sweep.json"),
+                         (write("gone.json", json.dumps(point_gone)), "point 0: no 'value_index'"),
+                         (write("type.json", json.dumps(wrong_type)), "point 0: 'value' is not a number"),
+                         (write("empty.json", json.dumps(dict(sweep_doc, points=[]))), "no points")):
+        expect_refused("sweep_chart.py", [path, "--out", out], naming, outputs)
+    expect_refused("sweep_chart.py", [write("noflip.json", json.dumps(no_flip)), "--out", out, "--metric", "flip"],
+                   "the sweep has no FLIP", outputs)
+    expect_refused("sweep_chart.py", [sweep, "--out", "/proc/chart"], "--out /proc/chart: cannot write in /proc")
+    expect_refused("sweep_chart.py", [sweep, "--out", os.path.join(tmp, "no", "chart")], "does not exist")
+
+    first = tradeoff_doc[0] if isinstance(tradeoff_doc, list) else tradeoff_doc
+    slow = dict(first, points=[dict(p, speedup_vs_llvmpipe=0) for p in first["points"]])
+    nameless = dict(first, points=[{k: v for k, v in p.items() if k != "name"} for p in first["points"]])
+    for path, naming in ((malformed, "malformed.json: not a tradeoff result"), (a_list, "an object was expected"),
+                         (write("slow.json", json.dumps(slow)), "'speedup_vs_llvmpipe' is not above 0"),
+                         (write("nameless.json", json.dumps(nameless)), "point 0: no 'name'")):
+        expect_refused("tradeoff_chart.py", [path, "--out", out], naming, outputs)
+    expect_refused("tradeoff_chart.py", [tradeoff, "--out", "/proc/chart"], "cannot write in /proc")
+
+    # The paper bounds and the scaling model from the committed runs: model.md's tables.
+    runs, tiles = os.path.join(bench, "results", "scaling", "runs"), os.path.join(bench, "results", "scaling", "tiles")
+    done = run("scaling_model.py", "--runs", runs, "--tiles", tiles)
+    check(done.returncode == 0, f"scaling_model.py exited {done.returncode}: {done.stderr[-1500:]}")
+    with open(os.path.join(bench, "results", "scaling", "model.md")) as f:
+        committed = [line for line in f.read().splitlines() if line and not line.startswith("<!--")]
+    check([line for line in done.stdout.splitlines() if line] == committed,
+          "scaling_model.py on bench/results/scaling no longer prints model.md's tables")
+    broken_runs = os.path.join(tmp, "runs")
+    shutil.copytree(runs, broken_runs)
+    with open(os.path.join(broken_runs, "hdr_t2_r2.json"), "w") as f:
+        json.dump({"passes": [{"raster_ms": 1.0}], "backends": []}, f)
+    expect_refused("scaling_model.py", ["--runs", broken_runs, "--tiles", tiles, "--scenes", "hdr"],
+                   "hdr_t2_r2.json: not a `raster bench --passes --json` run (pass 0: no 'llvmpipe_ms')")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", runs], "no tile costs match")
+    expect_refused("scaling_model.py", ["--runs", os.path.join(tmp, "none"), "--tiles", tiles], "not a folder")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--scenes", "cat"], "'cat' has no paper bound")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--threads", "1,x"], "--threads 1,x")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--frames", "hdr=1,2,3"], "--frames hdr=1,2,3")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--json", "/proc/model.json"],
+                   "cannot write in /proc")
+
+    # target_hashes.py reads --against and tries --out before its renders, from any folder.
+    expect_refused("target_hashes.py", ["--raster", raster, "--against", malformed], "not an earlier --out", cwd=tmp)
+    expect_refused("target_hashes.py", ["--raster", raster, "--out", "/proc/hashes.json"], "cannot write in /proc",
+                   cwd=tmp)
+    hashes = os.path.join(tmp, "hashes.json")
+    done = run("target_hashes.py", "--raster", raster, "--scenes", "shadow", "--sizes", "24x16", "--threads", "1,3",
+               "--out", hashes, cwd=tmp)
+    check(done.returncode == 0, f"target_hashes.py exited {done.returncode}: {done.stderr[-1500:]}")
+    done = run("target_hashes.py", "--raster", raster, "--scenes", "shadow", "--sizes", "24x16", "--threads", "2",
+               "--against", hashes, cwd=tmp)
+    check(done.returncode == 1 and "present on one side only" in done.stdout,
+          f"another thread count against --out: exit {done.returncode}, {done.stdout[-500:]}")
+    done = run("target_hashes.py", "--raster", raster, "--scenes", "shadow", "--sizes", "24x16", "--threads", "3,1",
+               "--against", hashes, cwd=tmp)
+    check(done.returncode == 0 and " 0 changed" in done.stdout, f"the same runs again: {done.stdout[-500:]}")
+
+if failures:
+    print(f"{len(failures)} failure(s)", file=sys.stderr)
+    sys.exit(1)
+print("bench scripts: every check passed")

@@ -35,6 +35,7 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
+from input_checks import NUMBER, OPTIONAL, BadInput, check_record, fail, read_json
 from raster_scenes import scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -196,16 +197,33 @@ def chart(args, rows, host, path):
 def replot(args):
     """The table and the chart again from goals.json, with the settings it was measured with."""
     path = os.path.join(args.out, "goals.json")
+    result = read_json("goal_runs: --replot", path, "a goals.json")
     try:
-        with open(path) as f:
-            result = json.load(f)
+        check_record(result, {"configurations": list, "threads": int, "frames": int, "goal": NUMBER, "floor": NUMBER,
+                              "pass_goal": OPTIONAL(NUMBER), "host": str}, "")
         rows = result["configurations"]
-        args.runs = len(rows[0]["ratios"])
-    except (OSError, ValueError, KeyError, IndexError) as error:
-        sys.stderr.write(f"goal_runs: --replot: cannot read {path}: {error}\n")
-        return 2
-    ordered = lambda key: list(dict.fromkeys(row[key] for row in rows))
-    args.sizes, args.presets, args.scenes = ordered("size"), ordered("preset"), ordered("scene")
+        if not rows:
+            raise BadInput("no configurations")
+        for i, row in enumerate(rows):
+            where = f"configuration {i}"
+            check_record(row, {"size": str, "preset": str, "scene": str, "ratios": list, "median": NUMBER,
+                               "min": NUMBER, "met": bool}, where)
+            if not row["ratios"] or len(row["ratios"]) != len(rows[0]["ratios"]) or not all(
+                    isinstance(r, (int, float)) and not isinstance(r, bool) for r in row["ratios"]):
+                raise BadInput(f"{where}: 'ratios' is not as many numbers as the first configuration's")
+            if result["pass_goal"] is not None:
+                check_record(row, {"passes": list}, where)
+                for k, p in enumerate(row["passes"]):
+                    check_record(p, {"pass": int, "program": str, "median_ratio": NUMBER}, f"{where} pass {k}")
+        ordered = lambda key: list(dict.fromkeys(row[key] for row in rows))
+        args.sizes, args.presets, args.scenes = ordered("size"), ordered("preset"), ordered("scene")
+        present = {(row["size"], row["preset"], row["scene"]) for row in rows}
+        for config in ((z, p, s) for z in args.sizes for p in args.presets for s in args.scenes):
+            if config not in present:   # the chart has a bar for every size, preset and scene
+                raise BadInput(f"no configuration for size {config[0]}, preset {config[1]}, scene {config[2]}")
+    except BadInput as error:
+        fail("goal_runs: --replot", f"{path}: not a goals.json ({error})")
+    args.runs = len(rows[0]["ratios"])
     args.threads, args.frames, args.goal, args.floor = result["threads"], result["frames"], result["goal"], result["floor"]
     args.passes, args.pass_goal = result["pass_goal"] is not None, result["pass_goal"]
     write_outputs(args, rows, result["host"], json.dumps(result, indent=1) + "\n")

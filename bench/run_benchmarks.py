@@ -21,12 +21,15 @@ import sys
 import tempfile
 import time
 
+from chart_files import write_atomically, write_text_atomically
+from input_checks import NUMBER, BadInput, check_record, fail, read_json
 from raster_scenes import scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RASTER = os.path.join(ROOT, "build", "raster")
 OUT = os.path.join(ROOT, "bench", "results")
 SIZES = ["640x480", "1280x720", "1920x1080", "3840x2160"]
+SIZE = re.compile(r"([1-9][0-9]*)x([1-9][0-9]*)")
 LINE = re.compile(r"scene=(\S+) backend=(\S+) threads=(\d+) size=(\S+) median_ms=([\d.]+)")
 
 
@@ -66,9 +69,10 @@ def main():
     parser.add_argument("--replot", action="store_true", help="only rewrite the table and chart from results.json")
     parser.add_argument("--dry-run", action="store_true", help="print the `raster bench` command lines, run none")
     args = parser.parse_args()
+    if args.frames < 1:
+        parser.error(f"--frames {args.frames}: at least 1")
     if args.replot:
-        with open(os.path.join(OUT, "results.json")) as f:
-            results = json.load(f)
+        results = load_results(os.path.join(OUT, "results.json"))
         write_table(results)
         # The scenes in the order the runs first name them.
         write_chart(results, list(dict.fromkeys(r["scene"] for r in results["runs"])))
@@ -106,11 +110,33 @@ def main():
         for backend in ("raster", "gl"):
             results["memory_mb"].setdefault(scene, {})[backend] = peak_memory_mb(args.raster, scene, "1920x1080", backend)
 
-    with open(os.path.join(OUT, "results.json"), "w") as f:
-        json.dump(results, f, indent=1)
+    write_text_atomically(json.dumps(results, indent=1), os.path.join(OUT, "results.json"))
     write_table(results)
     write_chart(results, scenes)
     print(f"wrote {OUT}/results.json, results.md, frame_time.png")
+
+
+def load_results(path):
+    """results.json for --replot, with the fields the table and the chart read checked."""
+    results = read_json("run_benchmarks: --replot", path, "a results.json")
+    try:
+        check_record(results, {"runs": list, "memory_mb": dict}, "")
+        for i, run in enumerate(results["runs"]):
+            check_record(run, {"scene": str, "size": str, "threads": int, "medians_ms": dict}, f"run {i}")
+            if not SIZE.fullmatch(run["size"]):
+                raise BadInput(f"run {i}: 'size' is not WxH")
+            other = "softpipe" if run.get("driver") == "softpipe" else "llvmpipe"
+            check_record(run["medians_ms"], {"raster": NUMBER, other: NUMBER}, f"run {i}: 'medians_ms'")
+        for scene, memory in results["memory_mb"].items():
+            check_record(memory, {"raster": NUMBER, "gl": NUMBER}, f"memory_mb: {scene}")
+    except BadInput as e:
+        fail("run_benchmarks: --replot", f"{path}: not a results.json ({e})")
+    return results
+
+
+def megapixels(size):
+    width, height = SIZE.fullmatch(size).groups()
+    return int(width) * int(height) / 1e6
 
 
 def write_table(results):
@@ -127,8 +153,7 @@ def write_table(results):
               "| scene | raster | GL (llvmpipe) |", "| --- | --- | --- |"]
     for scene, mem in results["memory_mb"].items():
         lines.append(f"| {scene} | {mem['raster']:.0f} | {mem['gl']:.0f} |")
-    with open(os.path.join(OUT, "results.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    write_text_atomically("\n".join(lines) + "\n", os.path.join(OUT, "results.md"))
 
 
 def write_chart(results, scenes):
@@ -141,7 +166,7 @@ def write_chart(results, scenes):
             for threads in (1, 2):
                 runs = [r for r in results["runs"] if r["scene"] == scene and r["threads"] == threads
                         and r.get("driver") != "softpipe"]
-                pixels = [eval(r["size"].replace("x", "*")) / 1e6 for r in runs]
+                pixels = [megapixels(r["size"]) for r in runs]
                 ax.plot(pixels, [r["medians_ms"][backend] for r in runs], style, label=f"{backend}, {threads} thr")
         ax.set_title(scene)
         ax.set_xlabel("megapixels")
@@ -151,7 +176,7 @@ def write_chart(results, scenes):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "frame_time.png"), dpi=110)
+    write_atomically(fig, os.path.join(OUT, "frame_time.png"))
 
 
 if __name__ == "__main__":

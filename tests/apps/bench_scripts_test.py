@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The bench scripts that read files a person hands them (sweep_chart.py, tradeoff_chart.py,
-scaling_model.py, target_hashes.py) draw the repository's own results, and refuse anything
-else with exit 2 and one line naming the file and what is wrong: no Python traceback, no
-half-written output, and for target_hashes.py no minutes of renders before the refusal.
-scaling_model.py on the committed runs reproduces bench/results/scaling/model.md, the table
-BENCHMARKS.md quotes.
+scaling_model.py, goal_runs.py --replot, target_hashes.py) draw the repository's own
+results, and refuse anything else with exit 2 and one line naming the file and what is
+wrong: no Python traceback, no half-written output, and for target_hashes.py no minutes of
+renders before the refusal. scaling_model.py on the committed runs reproduces
+bench/results/scaling/model.md, and goal_runs.py --replot bench/results/issue69/goals.md:
+the tables BENCHMARKS.md quotes.
 
 Usage: bench_scripts_test.py RASTER_BINARY SOURCE_DIR
 """
@@ -32,13 +33,15 @@ def run(script, *args, cwd=None):
                           text=True, cwd=cwd)
 
 
-def expect_refused(script, args, naming, outputs=(), cwd=None):
-    """Exit 2, one line on stderr holding `naming`, no traceback, none of `outputs` written."""
+def expect_refused(script, args, naming, outputs=(), cwd=None, usage=False):
+    """Exit 2, one line on stderr holding `naming` (after argparse's usage lines where `usage`),
+    no traceback, none of `outputs` written."""
     done = run(script, *args, cwd=cwd)
     what = f"{script} {' '.join(map(str, args))}"
     check(done.returncode == 2, f"{what} exited {done.returncode}, not 2: {done.stderr[-1500:]}")
     check("Traceback" not in done.stderr, f"{what} printed a traceback: {done.stderr[-1500:]}")
-    check(naming in done.stderr and len(done.stderr.strip().splitlines()) == 1,
+    lines = done.stderr.strip().splitlines()
+    check(bool(lines) and naming in lines[-1] and (usage or len(lines) == 1),
           f"{what}: stderr is not one line naming {naming!r}: {done.stderr[-1500:]}")
     for path in outputs:
         check(not os.path.exists(path), f"{what} left {path} behind")
@@ -118,6 +121,26 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--frames", "hdr=1,2,3"], "--frames hdr=1,2,3")
     expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--json", "/proc/model.json"],
                    "cannot write in /proc")
+
+    # goal_runs.py --replot redraws the committed goal run's table from its goals.json, and
+    # refuses a goals.json whose configurations are not what it wrote.
+    replot = os.path.join(tmp, "replot")
+    os.makedirs(replot)
+    committed_goals = os.path.join(bench, "results", "issue69")
+    shutil.copy(os.path.join(committed_goals, "goals.json"), replot)
+    done = run("goal_runs.py", "--replot", "--out", replot)
+    check(done.returncode == 0, f"goal_runs.py --replot exited {done.returncode}: {done.stderr[-1500:]}")
+    with open(os.path.join(replot, "goals.md")) as mine, open(os.path.join(committed_goals, "goals.md")) as theirs:
+        check(mine.read() == theirs.read(), "goal_runs.py --replot no longer writes bench/results/issue69/goals.md")
+    with open(os.path.join(committed_goals, "goals.json")) as f:
+        goals = json.load(f)
+    for broken, naming in ((dict(goals, configurations=[1]), "configuration 0: an object was expected"),
+                           (dict(goals, configurations=goals["configurations"][1:]), "no configuration for size")):
+        with open(os.path.join(replot, "goals.json"), "w") as f:
+            json.dump(broken, f)
+        expect_refused("goal_runs.py", ["--replot", "--out", replot], naming)
+
+    expect_refused("run_benchmarks.py", ["--frames", "0", "--dry-run"], "--frames 0: at least 1", usage=True)
 
     # target_hashes.py reads --against and tries --out before its renders, from any folder.
     expect_refused("target_hashes.py", ["--raster", raster, "--against", malformed], "not an earlier --out", cwd=tmp)

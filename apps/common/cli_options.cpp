@@ -63,10 +63,12 @@ std::optional<uint64_t> parseUnsigned(const std::string& text) {
   return value;
 }
 
+}  // namespace
+
 // Whether this process can make a file in `folder`, tried rather than predicted: for root,
 // access(W_OK) says yes of folders nobody can write into (/proc, /sys), and the run would
 // then fail at its end, after the work, with exit 1. A probe file is made and removed.
-bool writableFolder(const fs::path& folder) {
+bool writableFolder(const std::filesystem::path& folder) {
   std::error_code error;
   if (!fs::is_directory(folder, error) || access(folder.c_str(), W_OK | X_OK) != 0) return false;
   for (int attempt = 0; attempt < 8; ++attempt) {
@@ -81,8 +83,6 @@ bool writableFolder(const fs::path& folder) {
   }
   return false;
 }
-
-}  // namespace
 
 void addMethodOptions(CLI::App& command, std::string& preset, std::string& method) {
   std::string presets;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -97,6 +98,9 @@ void addMethodOptions(CLI::App& command, std::string& preset, std::string& metho
 // as the command line chose it ("--backend gl", "--test softpipe").
 void refuseOwnOptionsOnGl(const Frame& frame, const std::string& side);
 
+// Whether this process can make a file in `folder`, tried with a probe file rather than
+// predicted (root's access(W_OK) says yes of /proc and /sys, which take no files).
+bool writableFolder(const std::filesystem::path& folder);
 // Checks that `path` can be created or replaced: its folder exists and is writable.
 void checkOutputFile(const std::string& option, const std::string& path);
 // checkOutputFile for a PNG: the name must also end in .png, so that a y.jpg is not given PNG

@@ -2,7 +2,6 @@
 #include "apps/report/report_folder.h"
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -44,7 +43,7 @@ void checkReportFolder(const std::string& out) {
   }
   // The report is made beside DIR and renamed onto it: the parent must be writable too.
   const fs::path parent = parentOf(folder);
-  if (access(parent.c_str(), W_OK | X_OK) != 0)
+  if (!cli::writableFolder(parent))
     throw UsageError("--out: cannot write into " + parent.string() + " (the report is made beside " + out + ")");
 }
 

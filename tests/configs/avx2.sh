@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The AVX2 build without AVX-512 (-DRASTER_AVX512=OFF), on a host that has AVX-512: what a
+# machine without it (most desktops, AMD before Zen 4) runs. The default build asks the CPU
+# (RASTER_AVX512=AUTO, CMakeLists.txt), so on an AVX-512 host every other configuration
+# here compiles the *_avx512 siblings and Float8x2 in one 512-bit register, and the AVX2
+# forms they replace would go unchecked; this one holds those forms' bytes to llvmpipe's.
+# On a host without AVX-512 the default build already is this one, and on one without AVX2
+# it cannot run: either way it is skipped.
+#
+# The suites whose bytes depend on the lane code: the four scenes' (every target against
+# llvmpipe), the feature and method suites, the SIMD and math suites, and determinism
+# (these lanes against the plain ones, on 1 to 7 threads). Only their sources are compiled
+# (RASTER_TEST_SUITES_ONLY), at -O1 as in the SIMD-off configuration (the same bits at any
+# level), the command line at -O0 (it only runs the scenes' softpipe renders and refusals
+# here). About two minutes on two cores.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null || true)
+if ! grep -qw avx2 <<< "$flags"; then
+  echo "skipped: this CPU has no AVX2"
+  exit 0
+fi
+if ! grep -qw avx512f <<< "$flags"; then
+  echo "skipped: this CPU has no AVX-512, so the default build (release) already runs the AVX2 forms"
+  exit 0
+fi
+cmake -S . -B build-avx2 -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -DNDEBUG" -DRASTER_AVX512=OFF \
+  -DRASTER_COMMAND_LINE_OPTIONS=-O0 \
+  -DRASTER_TEST_SUITES_ONLY="scene_shadow;scene_deferred;scene_hdr;scene_pbr;raster_vs_gl;hdr_features;shadow_compare;clears;texture;format;derivatives;geometry;shaders;simd;gl_math;math_methods;methods;shading_rate;determinism" \
+  > /dev/null
+cmake --build build-avx2 -j"$(nproc)" --target raster_tests raster_cli
+ctest --test-dir build-avx2 --output-on-failure -j"$(nproc)"

@@ -81,7 +81,7 @@ endif()
 # The three largest gather working sets are left out (their misses take the longest).
 if(benchmark_FOUND)
   set(micro_peaks "")
-  if(NOT RASTER_AVX2)
+  if(NOT raster_use_avx2)
     set(micro_peaks --no-peaks)   # the peaks are AVX2 intrinsics
   endif()
   add_test(NAME micro_smoke COMMAND python3 ${CMAKE_SOURCE_DIR}/bench/run_micro.py --check ${micro_peaks}

@@ -5,6 +5,8 @@
 // the layout that it did not follow would send those paths' texels to the wrong lanes.
 #include <doctest/doctest.h>
 
+#include <initializer_list>
+
 #include "raster/simd/lanes.h"
 #include "raster/tile/lane_layout.h"
 

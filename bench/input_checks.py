@@ -69,6 +69,15 @@ def check_record(record, fields, where):
             raise BadInput(f"{prefix}'{field}' is not {_name(kind)}")
 
 
+def check_each(records, fields, name):
+    """Raises BadInput unless records holds at least one record and each has fields (the
+    message counts them from 0: `point 3: no 'value'`)."""
+    if not records:
+        raise BadInput(f"no {name}s")
+    for i, record in enumerate(records):
+        check_record(record, fields, f"{name} {i}")
+
+
 def check_output_path(prog, option, path):
     """An output file's path (or the PREFIX of PREFIX.png and PREFIX.svg), given as `option`:
     its folder must exist and take files, checked before any work (a probe file made and

@@ -55,7 +55,7 @@ import statistics
 import sys
 
 from chart_files import write_text_atomically
-from input_checks import NUMBER, BadInput, check_output_path, check_record, fail, read_json
+from input_checks import NUMBER, BadInput, check_each, check_output_path, check_record, fail, read_json
 
 PROG = "scaling_model.py"
 
@@ -137,10 +137,7 @@ def read_checked(path, what, fields, pass_fields):
     doc = read_json(PROG, path, what)
     try:
         check_record(doc, fields, "")
-        if not doc["passes"]:
-            raise BadInput("no passes")
-        for i, p in enumerate(doc["passes"]):
-            check_record(p, pass_fields, f"pass {i}")
+        check_each(doc["passes"], pass_fields, "pass")
     except BadInput as e:
         fail(PROG, f"{path}: not {what} ({e})")
     return doc

@@ -26,7 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
-from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, read_json  # noqa: E402
+from input_checks import (NUMBER, OPTIONAL, BadInput, check_each, check_output_path, check_record, fail,  # noqa: E402
+                          read_json)
 
 PROG = "sweep_chart.py"
 # The fields the chart reads, of the sweep and of each point (raster sweep writes more).
@@ -46,10 +47,7 @@ def load(path, flip):
         check_record(sweep["range"], {"log": bool}, "'range'")
         if len(sweep["size"]) != 2 or not all(isinstance(n, int) and n > 0 for n in sweep["size"]):
             raise BadInput("'size' is not [width, height]")
-        if not sweep["points"]:
-            raise BadInput("no points")
-        for i, point in enumerate(sweep["points"]):
-            check_record(point, POINT_FIELDS, f"point {i}")
+        check_each(sweep["points"], POINT_FIELDS, "point")
     except BadInput as e:
         fail(PROG, f"{path}: not a sweep.json ({e})")
     if flip:

@@ -10,7 +10,6 @@
 #include <thread>
 #include <vector>
 #else
-#include <algorithm>
 #include <mutex>
 
 #include <tbb/blocked_range.h>

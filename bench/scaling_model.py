@@ -145,11 +145,11 @@ def read_checked(path, what, fields, pass_fields):
 
 def load_runs(folder, scene, threads):
     pattern = os.path.join(folder, f"{scene}_t{threads}_r*.json")
-    runs = [read_checked(path, "a `raster bench --passes --json` run", RUN_FIELDS, RUN_PASS_FIELDS)
-            for path in sorted(glob.glob(pattern))]
-    if not runs:
+    paths = sorted(glob.glob(pattern))
+    if not paths:
         fail(PROG, f"no run matches {pattern} (see --help's Usage for the names)")
-    for path, run in zip(sorted(glob.glob(pattern)), runs):
+    runs = [read_checked(path, "a `raster bench --passes --json` run", RUN_FIELDS, RUN_PASS_FIELDS) for path in paths]
+    for path, run in zip(paths, runs):
         names = {b.get("name") for b in run["backends"] if isinstance(b, dict) and "median_ms" in b}
         if not {"raster", "llvmpipe"} <= names:
             fail(PROG, f"{path}: not a `raster bench` run against llvmpipe (its backends: {sorted(map(str, names))})")
@@ -170,14 +170,14 @@ def median_frame(runs, backend):
 def load_tiles(folder, scene):
     """Per pass label: per-tile cost, the median over runs of each tile's cycles; and the pass's shape."""
     pattern = os.path.join(folder, f"{scene}_r*.json")
-    runs = [read_checked(path, "`bench/tile_costs` output", TILES_FIELDS, TILES_PASS_FIELDS)
-            for path in sorted(glob.glob(pattern))]
-    if not runs:
+    paths = sorted(glob.glob(pattern))
+    if not paths:
         fail(PROG, f"no tile costs match {pattern} (see --help's Usage for the names)")
+    runs = [read_checked(path, "`bench/tile_costs` output", TILES_FIELDS, TILES_PASS_FIELDS) for path in paths]
     shape = [(p["label"], len(p["tile_cycles"])) for p in runs[0]["passes"]]
-    for path, r in zip(sorted(glob.glob(pattern))[1:], runs[1:]):
+    for path, r in zip(paths[1:], runs[1:]):
         if [(p["label"], len(p["tile_cycles"])) for p in r["passes"]] != shape:
-            fail(PROG, f"{path}: its passes or tiles differ from {sorted(glob.glob(pattern))[0]}'s (another size?)")
+            fail(PROG, f"{path}: its passes or tiles differ from {paths[0]}'s (another size?)")
     passes = {}
     for i, p in enumerate(runs[0]["passes"]):
         costs = [statistics.median(r["passes"][i]["tile_cycles"][t] for r in runs) for t in range(len(p["tile_cycles"]))]

@@ -35,7 +35,7 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
-from input_checks import NUMBER, OPTIONAL, BadInput, check_record, fail, read_json
+from input_checks import NUMBER, OPTIONAL, BadInput, check_record, fail, is_number, read_json
 from raster_scenes import scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -209,7 +209,7 @@ def replot(args):
             check_record(row, {"size": str, "preset": str, "scene": str, "ratios": list, "median": NUMBER,
                                "min": NUMBER, "met": bool}, where)
             if not row["ratios"] or len(row["ratios"]) != len(rows[0]["ratios"]) or not all(
-                    isinstance(r, (int, float)) and not isinstance(r, bool) for r in row["ratios"]):
+                    map(is_number, row["ratios"])):
                 raise BadInput(f"{where}: 'ratios' is not as many numbers as the first configuration's")
             if result["pass_goal"] is not None:
                 check_record(row, {"passes": list}, where)

@@ -38,11 +38,16 @@ def OPTIONAL(kind):  # noqa: N802 (reads as a type in the field tables)
     return ("optional", kind)
 
 
+def is_number(value):
+    """An int or float (JSON's number), not a bool."""
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)
+
+
 def _matches(value, kind):
     if isinstance(kind, tuple) and len(kind) == 2 and kind[0] == "optional":
         return value is None or _matches(value, kind[1])
     if kind == NUMBER:
-        return isinstance(value, numbers.Real) and not isinstance(value, bool)
+        return is_number(value)
     if kind is int:
         return isinstance(value, int) and not isinstance(value, bool)
     return isinstance(value, kind)

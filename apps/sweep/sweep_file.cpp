@@ -37,10 +37,15 @@ json firstFailures(const json& sweep) {
 std::string markdown(const json& sweep) {
   std::ostringstream md;
   const json& r = sweep.at("range");
-  md << "# Sweep of `" << sweep.at("param").get<std::string>() << "` in " << sweep.at("scene").get<std::string>()
-     << "\n\nFrom " << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
-     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << sweep.at("size")[0] << "x" << sweep.at("size")[1]
-     << ", t=" << sixDigits(sweep.at("time")) << ". Each side against llvmpipe; a side fails at a final image below "
+  const std::string param = sweep.at("param").get<std::string>();
+  // The base size and time it records, unless the sweep moves that one (a size's height
+  // follows its width at 4:3).
+  const std::string size = param == "size" ? std::string("each width at 4:3")
+                                           : sweep.at("size")[0].dump() + "x" + sweep.at("size")[1].dump();
+  const std::string time = param == "time" ? std::string("each value's time") : "t=" + sixDigits(sweep.at("time"));
+  md << "# Sweep of `" << param << "` in " << sweep.at("scene").get<std::string>() << "\n\nFrom "
+     << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
+     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << size << ", " << time << ". Each side against llvmpipe; a side fails at a final image below "
      << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";

@@ -34,9 +34,11 @@ PROG = "sweep_chart.py"
 SWEEP_FIELDS = {"points": list, "param": str, "scene": str, "threshold_db": NUMBER, "range": dict, "size": list,
                 "time": NUMBER}
 POINT_FIELDS = {"method": str, "value": NUMBER, "value_index": int, "fails": bool, "nonfinite_pixels": int,
-                "psnr_vs_llvmpipe_db": OPTIONAL(NUMBER)}
+                "psnr_vs_llvmpipe_db": OPTIONAL(NUMBER), "identical_to_llvmpipe": bool}
 
-STYLE = {"softpipe": dict(color="#d62728", linestyle="--", marker="D")}
+# softpipe (GL against GL) in grey, outside the colours the method sets take in turn (the
+# fourth of which, C3, is the red it had, which draft took) and apart from the red crosses.
+STYLE = {"softpipe": dict(color="#555555", linestyle="--", marker="D")}
 
 
 def load(path, flip):
@@ -62,11 +64,47 @@ def load(path, flip):
     return sweep
 
 
+def setting(sweep):
+    """The base size and time the sweep records, as sweep.md states them: not the one it moves."""
+    w, h = sweep["size"]
+    size = "each width at 4:3" if sweep["param"] == "size" else f"{w}x{h}"
+    time = "each value's time" if sweep["param"] == "time" else f"t={sweep['time']:g}"
+    return f"{size}, {time}"
+
+
+def legend_label(side, points, drawn):
+    """The side's name, and where its line lies on another's at every value, which: the
+    legend is where a reader can tell such lines apart. drawn maps each series of values
+    already drawn (a tuple) to its side, and takes this side's."""
+    series = tuple((p["identical_to_llvmpipe"], p["psnr_vs_llvmpipe_db"], p.get("flip_vs_llvmpipe")) for p in points)
+    if points and all(p["identical_to_llvmpipe"] for p in points):
+        return f"{side} (identical at every value)"
+    if series in drawn:
+        return f"{side} (the same as {drawn[series]} at every value)"
+    drawn[series] = side
+    return side
+
+
+def mark_failures(ax, failures, below):
+    """A red X at each side's first failure, (side, value, y); one label a value, naming every
+    side that first fails there (labels of sides failing at one value would print over each
+    other), beside the lowest (below=True) or highest of their crosses."""
+    for side, value, y in failures:
+        ax.plot([value], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
+    for value in dict.fromkeys(v for _, v, _ in failures):
+        here = [(side, y) for side, v, y in failures if v == value]
+        names = ", ".join(side for side, _ in here)
+        y = min(y for _, y in here) if below else max(y for _, y in here)
+        ax.annotate(f"{names} fail{'s' if len(here) == 1 else ''}\n{value:.4g}", (value, y),
+                    textcoords="offset points", xytext=(6, -24) if below else (6, 6), fontsize=8, color="red")
+
+
 def draw_flip(sweep):
     points = sweep["points"]
     sides = [p["method"] for p in points if p["value_index"] == points[0]["value_index"]] if points else []
     fig, ax = plt.subplots(figsize=(8.5, 5))
     top = 0.0
+    failures, drawn = [], {}
     for side in sides:
         if side == "llvmpipe":
             continue
@@ -75,13 +113,11 @@ def draw_flip(sweep):
         ys = [p["flip_vs_llvmpipe"] if p["flip_vs_llvmpipe"] is not None else float("nan") for p in mine]
         top = max([top] + [y for y in ys if y == y])
         style = STYLE.get(side, dict(marker="o"))
-        ax.plot(xs, ys, label=side, markersize=4, linewidth=1.4, **style)
+        ax.plot(xs, ys, label=legend_label(side, mine, drawn), markersize=4, linewidth=1.4, **style)
         first = next((p for p in mine if p["fails"]), None)
         if first is not None and first["flip_vs_llvmpipe"] is not None:
-            y = first["flip_vs_llvmpipe"]
-            ax.plot([first["value"]], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
-            ax.annotate(f"{side} fails\n{first['value']:.4g}", (first["value"], y), textcoords="offset points",
-                        xytext=(6, 6), fontsize=8, color="red")
+            failures.append((side, first["value"], first["flip_vs_llvmpipe"]))
+    mark_failures(ax, failures, below=False)
     for p in points:
         if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
             ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
@@ -90,8 +126,7 @@ def draw_flip(sweep):
     ax.set_ylim(bottom=0, top=max(top * 1.15, 1e-3))
     ax.set_xlabel(sweep["param"])
     ax.set_ylabel("final image mean FLIP against llvmpipe (0: identical)")
-    w, h = sweep["size"]
-    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {w}x{h}, t={sweep['time']:g}; "
+    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {setting(sweep)}; "
                  f"red X: first failure (< {sweep['threshold_db']:g} dB or non-finite)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
@@ -105,6 +140,7 @@ def draw(sweep):
     finite = [p["psnr_vs_llvmpipe_db"] for p in points if p["psnr_vs_llvmpipe_db"] is not None]
     ceiling = max(finite + [sweep["threshold_db"]]) + 10 if finite else sweep["threshold_db"] + 20
     fig, ax = plt.subplots(figsize=(8.5, 5))
+    failures, drawn = [], {}
     for side in sides:
         if side == "llvmpipe":
             continue
@@ -112,13 +148,12 @@ def draw(sweep):
         xs = [p["value"] for p in mine]
         ys = [ceiling if p["psnr_vs_llvmpipe_db"] is None else p["psnr_vs_llvmpipe_db"] for p in mine]
         style = STYLE.get(side, dict(marker="o"))
-        ax.plot(xs, ys, label=side, markersize=4, linewidth=1.4, **style)
+        ax.plot(xs, ys, label=legend_label(side, mine, drawn), markersize=4, linewidth=1.4, **style)
         first = next((p for p in mine if p["fails"]), None)
         if first is not None:
-            y = ceiling if first["psnr_vs_llvmpipe_db"] is None else first["psnr_vs_llvmpipe_db"]
-            ax.plot([first["value"]], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
-            ax.annotate(f"{side} fails\n{first['value']:.4g}", (first["value"], y), textcoords="offset points",
-                        xytext=(6, -24), fontsize=8, color="red")
+            failures.append((side, first["value"], ceiling if first["psnr_vs_llvmpipe_db"] is None
+                             else first["psnr_vs_llvmpipe_db"]))
+    mark_failures(ax, failures, below=True)
     for p in points:
         if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
             ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
@@ -133,8 +168,7 @@ def draw(sweep):
     ax.set_ylim(bottom=0, top=ceiling + 8)
     ax.set_xlabel(sweep["param"])
     ax.set_ylabel("final image PSNR against llvmpipe (dB)")
-    w, h = sweep["size"]
-    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {w}x{h}, t={sweep['time']:g}"
+    ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {setting(sweep)}"
                  + (" (grey: llvmpipe has non-finite pixels)" if any(
                      p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0 for p in points) else ""), fontsize=10)
     ax.grid(True, which="both", alpha=0.3)

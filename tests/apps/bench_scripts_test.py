@@ -74,6 +74,22 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
                 with open(f"{prefix}.{ext}", "rb") as f:
                     check(f.read(5).startswith(magic), f"{prefix}.{ext} is not a {ext}")
 
+    # What the sweep chart says where lines or labels would lie on one another (matplotlib
+    # keeps each text as a comment in the SVG): hdr's time sweep, where precise and softpipe
+    # first fail at one value, and shadow's near sweep, where draft is fast (no post pass).
+    def sweep_svg_texts(name):
+        prefix = os.path.join(tmp, name)
+        done = run("sweep_chart.py", os.path.join(source, "docs", "stability", name, "sweep.json"), "--out", prefix)
+        check(done.returncode == 0, f"sweep_chart.py {name} exited {done.returncode}: {done.stderr}")
+        with open(prefix + ".svg") as f:
+            return f.read()
+    hdr_time = sweep_svg_texts("hdr-time")
+    check("<!-- precise, softpipe fail -->" in hdr_time, "hdr-time: precise and softpipe not named in one label")
+    check("each value's time" in hdr_time and "t=1" not in hdr_time, "hdr-time: the title names a base time")
+    shadow_near = sweep_svg_texts("shadow-near")
+    check("<!-- draft (the same as fast at every value) -->" in shadow_near, "shadow-near: draft's line not told apart")
+    check("<!-- gl (identical at every value) -->" in shadow_near, "shadow-near: gl's line not told apart")
+
     # A point with a field gone, of the wrong type, or a sweep without FLIP charted by FLIP.
     point_gone = dict(sweep_doc, points=[{k: v for k, v in p.items() if k != "value_index"} for p in sweep_doc["points"]])
     wrong_type = dict(sweep_doc, points=[dict(p, value="high") for p in sweep_doc["points"]])

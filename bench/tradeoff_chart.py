@@ -4,9 +4,13 @@
 x: speed-up over llvmpipe (log scale); y: PSNR of the final image against llvmpipe (dB),
 and in a second row against the `precise` preset (the most accurate methods).
 Points identical to llvmpipe have no PSNR (it is infinite): they are drawn on a marked
-ceiling above the highest finite value. One labelled point per method set, llvmpipe and
-softpipe as drivers, the Pareto front (no point both faster and closer) as a line, and the
-40 dB line the `fast` preset must stay above. One column per scene (per size, per result).
+ceiling above the highest finite value. One labelled point per method set (points drawn on
+one another share a label naming them all; labels are placed where they overlap nothing),
+llvmpipe and softpipe as drivers, the Pareto front (no point both faster and closer) as a
+line, and the 40 dB line the `fast` preset must stay above. The speed-up axis spans the
+presets, the methods and llvmpipe: a driver far slower (softpipe) is drawn at its left end
+as an arrow, its speed-up in its label. One column per scene (per size, per result), up to
+four a row.
 
 --metric flip puts the mean LDR-FLIP error (compare/flip.h: 0 no visible difference, 1 the
 most) on the y axis instead: log scale, smaller errors higher up, so "up" still reads "more
@@ -21,11 +25,14 @@ A file that is not one, or a PREFIX whose folder takes no files, exits 2 naming 
 """
 import argparse
 import math
+import textwrap
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import NullFormatter  # noqa: E402
+from matplotlib.transforms import Bbox  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
 from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, read_json  # noqa: E402
@@ -74,6 +81,31 @@ METRICS = {
 }
 
 
+def set_speed_axis(ax, lo, hi):
+    """A log axis from lo to hi with its speed-ups written out (0.5, 1, 2, 3, 5, ...): the
+    span is about a decade, where a log axis's own ticks would name only 10^0."""
+    ax.set_xscale("log")
+    ax.set_xlim(lo, hi)
+    ticks = [t for t in (0.1, 0.2, 0.3, 0.5, 1, 2, 3, 4, 5, 6, 8, 10, 15, 20, 30, 50, 100) if lo <= t <= hi]
+    ax.set_xticks(ticks, [f"{t:g}" for t in ticks])
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
+def scatter_point(ax, point, x, y, outlined, off_scale):
+    """One point in its kind's style, outlined where it is on the Pareto front; a point off
+    the axis's left end is drawn there as an arrow pointing left."""
+    style = dict(KIND_STYLE.get(point["kind"], KIND_STYLE["method"]))
+    if off_scale:
+        style["marker"] = "<"
+    ax.scatter([x], [y], zorder=3, edgecolors="black" if outlined else "none", linewidths=1.2, clip_on=False,
+               **style)
+
+
+def point_label(point, off_scale):
+    """A point's name; off the axis, with the speed-up its place no longer shows."""
+    return f"{point['name']} ({point['speedup_vs_llvmpipe']:.2g}x)" if off_scale else point["name"]
+
+
 def flip_floor_of(results, field):
     """Where FLIP 0 (identical) is drawn: a third of the smallest error measured."""
     positive = [p[field] for r in results for p in r["points"] if p[field] is not None and p[field] > 0]
@@ -87,29 +119,26 @@ def flip_pareto(xs, ys):
 
 
 def draw_flip_panel(ax, result, floor, field, reference):
-    """One scene's points with the mean FLIP in `field` against `reference` on the y axis."""
+    """One scene's points with the mean FLIP in `field` against `reference` on the y axis; returns
+    their labels and where they are drawn (names, xs, ys) for label_points."""
     points = result["points"]
     xs = [p["speedup_vs_llvmpipe"] for p in points]
     values = [p[field] for p in points]
     ys = [floor if v is None or v <= 0 else v for v in values]
     against_llvmpipe = reference == "llvmpipe"
     front = flip_pareto(xs, ys)
-    for p, x, y, on_front in zip(points, xs, ys, front):
-        style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
-        edge = "black" if against_llvmpipe and on_front else "none"
-        ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
+    lo, hi, off_scale = x_range(xs, [p["kind"] for p in points])
+    for p, x, y, on_front, off in zip(points, xs, ys, front, off_scale):
+        scatter_point(ax, p, lo if off else x, y, against_llvmpipe and on_front, off)
     line = sorted((x, y) for x, y, f in zip(xs, ys, front) if f)
     if against_llvmpipe and len(line) > 1:
         ax.plot([f[0] for f in line], [f[1] for f in line], color="black", linewidth=1, linestyle="--", zorder=2)
     ax.axhline(floor, color="#2ca02c", linewidth=0.8)
     ax.text(0.01, floor, f" identical to {reference}", color="#2ca02c", fontsize=7, va="bottom",
             transform=ax.get_yaxis_transform())
-    ax.set_xscale("log")
+    set_speed_axis(ax, lo, hi)
     ax.set_yscale("log")
-    lo, hi = min(xs), max(xs)
-    ax.set_xlim(lo / 1.5, hi * 1.6)
     ax.set_ylim(max(ys + [floor]) * 2.0, floor / 2.0)   # inverted: smaller errors higher up
-    label_points(ax, [p["name"] for p in points], xs, ys)
     size = result.get("size", ["?", "?"])
     ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads: "
                  f"against {reference}", fontsize=9)
@@ -117,6 +146,8 @@ def draw_flip_panel(ax, result, floor, field, reference):
     ax.set_ylabel(f"mean FLIP of the final image vs {reference} (log, 0 best)", fontsize=8)
     ax.grid(True, which="both", linewidth=0.3)
     ax.tick_params(labelsize=7)
+    return ([point_label(p, off) for p, off in zip(points, off_scale)],
+            [lo if off else x for x, off in zip(xs, off_scale)], ys)
 
 
 def ceiling_of(results, field):
@@ -128,15 +159,14 @@ def ceiling_of(results, field):
 def draw_panel(ax, result, ceiling, field, reference):
     """One scene's points: y is the PSNR in `field` against `reference` (llvmpipe: with the
     Pareto front and the fast preset's floor; precise: how near each point is to the most
-    accurate methods)."""
+    accurate methods). Returns the labels and where they are drawn, as draw_flip_panel does."""
     points = result["points"]
     xs = [p["speedup_vs_llvmpipe"] for p in points]
     ys = [ceiling if p[field] is None else p[field] for p in points]
     against_llvmpipe = reference == "llvmpipe"
-    for p, x, y in zip(points, xs, ys):
-        style = KIND_STYLE.get(p["kind"], KIND_STYLE["method"])
-        edge = "black" if against_llvmpipe and p.get("pareto") else "none"
-        ax.scatter([x], [y], zorder=3, edgecolors=edge, linewidths=1.2, **style)
+    lo, hi, off_scale = x_range(xs, [p["kind"] for p in points])
+    for p, x, y, off in zip(points, xs, ys, off_scale):
+        scatter_point(ax, p, lo if off else x, y, against_llvmpipe and p.get("pareto"), off)
     front = sorted((x, y) for p, x, y in zip(points, xs, ys) if p.get("pareto"))
     if against_llvmpipe and len(front) > 1:
         ax.plot([f[0] for f in front], [f[1] for f in front], color="black", linewidth=1, linestyle="--",
@@ -148,11 +178,8 @@ def draw_panel(ax, result, ceiling, field, reference):
         ax.axhline(FAST_THRESHOLD_DB, color="#ff7f0e", linewidth=0.8, linestyle=":")
         ax.text(0.01, FAST_THRESHOLD_DB, f" {FAST_THRESHOLD_DB:.0f} dB (fast preset floor)", color="#ff7f0e",
                 fontsize=7, va="bottom", transform=ax.get_yaxis_transform())
-    ax.set_xscale("log")
-    lo, hi = min(xs), max(xs)
-    ax.set_xlim(lo / 1.5, hi * 1.6)
+    set_speed_axis(ax, lo, hi)
     ax.set_ylim(min(ys + [FAST_THRESHOLD_DB]) - 8, ceiling + 6)
-    label_points(ax, [p["name"] for p in points], xs, ys)
     size = result.get("size", ["?", "?"])
     ax.set_title(f"{result['scene']} {size[0]}x{size[1]}, t={result.get('time')}, {result.get('threads')} threads: "
                  f"against {reference}", fontsize=9)
@@ -160,27 +187,107 @@ def draw_panel(ax, result, ceiling, field, reference):
     ax.set_ylabel(f"PSNR of the final image vs {reference} (dB)", fontsize=8)
     ax.grid(True, which="both", linewidth=0.3)
     ax.tick_params(labelsize=7)
+    return ([point_label(p, off) for p, off in zip(points, off_scale)],
+            [lo if off else x for x, off in zip(xs, off_scale)], ys)
+
+
+def label_offsets():
+    """Where a label may go, in points from its point, nearest first: beside it on the
+    right, then on the left, then ever further up or down on either side."""
+    yield 6, 3
+    yield -6, 3
+    for step in range(1, 16):
+        for dy in (3 - 11 * step, 3 + 11 * step):
+            yield 6, dy
+            yield -6, dy
+
+
+def coincident_groups(centres, within):
+    """Points whose centres lie within `within` pixels of the group's first, in order: they
+    are drawn on one another, so they share one label."""
+    groups = []
+    for i, (x, y) in enumerate(centres):
+        for group in groups:
+            gx, gy = centres[group[0]]
+            if abs(gx - x) <= within and abs(gy - y) <= within:
+                group.append(i)
+                break
+        else:
+            groups.append([i])
+    return groups
 
 
 def label_points(ax, names, xs, ys):
-    """Labels every point; points that land close together (method sets of about the same
-    speed and accuracy) get their labels stacked in one column beside the first, so none
-    hides another."""
-    to_axes = ax.transData + ax.transAxes.inverted()
-    placed = []  # (axes x, axes y, labels stacked there so far)
-    order = sorted(range(len(names)), key=lambda i: (-ys[i], xs[i]))
-    for i in order:
-        ax_x, ax_y = to_axes.transform((xs[i], ys[i]))
-        for k, (px, py, count) in enumerate(placed):
-            if abs(px - ax_x) < 0.06 and abs(py - ax_y) < 0.06:
-                ax.annotate(names[i], (xs[i], ys[i]), xycoords="data", textcoords="offset points",
-                            xytext=(6, 3 - 9 * count), fontsize=6.5,
-                            arrowprops=dict(arrowstyle="-", color="#bbbbbb", linewidth=0.5))
-                placed[k] = (px, py, count + 1)
+    """Labels every point where it overlaps no other label and no point: the first free
+    place of label_offsets() inside the panel, with a grey leader where it is not beside its
+    point (where none is free, beside it on the right). Points drawn on one another share a
+    label that names them all. Called once the figure's layout is final, since it measures
+    the labels on the canvas."""
+    renderer = ax.figure.canvas.get_renderer()
+    panel = ax.get_window_extent(renderer)
+    centres = [tuple(ax.transData.transform((x, y))) for x, y in zip(xs, ys)]
+    radius = 4.0 * ax.figure.dpi / 72.0   # a marker's half width, in pixels
+    taken = [Bbox.from_bounds(cx - radius, cy - radius, 2 * radius, 2 * radius) for cx, cy in centres]
+    taken += [text.get_window_extent(renderer) for text in ax.texts]   # the reference lines' names
+    groups = coincident_groups(centres, radius / 2)
+    # Most accurate first, then fastest: the ceiling's labels are the ones read first.
+    for group in sorted(groups, key=lambda g: (-ys[g[0]], xs[g[0]])):
+        i = group[0]
+        text = textwrap.fill(", ".join(names[k] for k in group), 44)
+        for dx, dy in label_offsets():
+            beside = dy == 3
+            place = dict(textcoords="offset points", xytext=(dx, dy), fontsize=6.5,
+                         ha="left" if dx > 0 else "right", va="bottom" if beside else "center")
+            label = ax.annotate(text, (xs[i], ys[i]), **place)
+            box = label.get_window_extent(renderer)   # the text's (a leader would add its own span)
+            label.remove()
+            inside = panel.x0 <= box.x0 and box.x1 <= panel.x1 and panel.y0 <= box.y0 and box.y1 <= panel.y1
+            if inside and not any(box.overlaps(other) for other in taken):
+                leader = None if beside else dict(arrowstyle="-", color="#bbbbbb", linewidth=0.5)
+                ax.annotate(text, (xs[i], ys[i]), arrowprops=leader, **place)
+                taken.append(box)
                 break
         else:
-            ax.annotate(names[i], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3), fontsize=6.5)
-            placed.append((ax_x, ax_y, 1))
+            taken.append(ax.annotate(text, (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3),
+                                     fontsize=6.5).get_window_extent(renderer))
+
+
+def x_range(xs, kinds):
+    """The speed-up axis: every preset and method, and 1 (llvmpipe). A driver far slower than
+    those (softpipe, 50-100 times slower than llvmpipe) would squeeze them into the right
+    edge of a log axis; it is drawn at the left edge instead (off_scale), labelled with its
+    speed-up."""
+    main = [x for x, kind in zip(xs, kinds) if kind != "driver"] + [1.0]
+    lo, hi = min(main) / 1.5, max(xs) * 1.6
+    return lo, hi, [x < lo for x in xs]
+
+
+def figure(results, metric):
+    """The chart of results (load_results') under metric, labelled and laid out."""
+    # Rows of up to four scenes, as even as they go (four: one row; five: three and two): each
+    # scene against llvmpipe, and below it against precise.
+    scene_rows = math.ceil(len(results) / 4)
+    columns = math.ceil(len(results) / scene_rows)
+    fig, axes = plt.subplots(2 * scene_rows, columns, figsize=(5.2 * columns, 4.2 * 2 * scene_rows), squeeze=False)
+    labels = []   # (panel, its points' labels and places), placed once the layout is final
+    for row_offset, (field, reference) in enumerate(METRICS[metric]["fields"]):
+        for k, result in enumerate(results):
+            ax = axes[2 * (k // columns) + row_offset][k % columns]
+            if metric == "flip":
+                labels.append((ax, draw_flip_panel(ax, result, flip_floor_of(results, field), field, reference)))
+            else:
+                labels.append((ax, draw_panel(ax, result, ceiling_of(results, field), field, reference)))
+    for k in range(len(results), scene_rows * columns):
+        axes[2 * (k // columns)][k % columns].axis("off")
+        axes[2 * (k // columns) + 1][k % columns].axis("off")
+    handles = [plt.Line2D([], [], linestyle="", marker=s["marker"], color=s["color"], label=k)
+               for k, s in KIND_STYLE.items()]
+    handles.append(plt.Line2D([], [], color="black", linestyle="--", label="Pareto front (outlined points)"))
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
+    for ax, (names, xs, ys) in labels:
+        label_points(ax, names, xs, ys)
+    return fig
 
 
 def main():
@@ -192,25 +299,7 @@ def main():
     args = parser.parse_args()
     results = load_results(args.results, args.metric)
     check_output_path(PROG, "--out", args.out)
-    # Rows of up to three scenes: each scene against llvmpipe, and below it against precise.
-    columns = min(3, len(results))
-    scene_rows = math.ceil(len(results) / columns)
-    fig, axes = plt.subplots(2 * scene_rows, columns, figsize=(5.2 * columns, 4.2 * 2 * scene_rows), squeeze=False)
-    for row_offset, (field, reference) in enumerate(METRICS[args.metric]["fields"]):
-        for k, result in enumerate(results):
-            ax = axes[2 * (k // columns) + row_offset][k % columns]
-            if args.metric == "flip":
-                draw_flip_panel(ax, result, flip_floor_of(results, field), field, reference)
-            else:
-                draw_panel(ax, result, ceiling_of(results, field), field, reference)
-    for k in range(len(results), scene_rows * columns):
-        axes[2 * (k // columns)][k % columns].axis("off")
-        axes[2 * (k // columns) + 1][k % columns].axis("off")
-    handles = [plt.Line2D([], [], linestyle="", marker=s["marker"], color=s["color"], label=k)
-               for k, s in KIND_STYLE.items()]
-    handles.append(plt.Line2D([], [], color="black", linestyle="--", label="Pareto front (outlined points)"))
-    fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.05, 1, 1))
+    fig = figure(results, args.metric)
     for ext in ("png", "svg"):
         write_atomically(fig, f"{args.out}.{ext}")
 

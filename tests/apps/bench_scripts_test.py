@@ -12,6 +12,7 @@ Usage: bench_scripts_test.py RASTER_BINARY SOURCE_DIR
 import glob
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -89,6 +90,42 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     shadow_near = sweep_svg_texts("shadow-near")
     check("<!-- draft (the same as fast at every value) -->" in shadow_near, "shadow-near: draft's line not told apart")
     check("<!-- gl (identical at every value) -->" in shadow_near, "shadow-near: gl's line not told apart")
+
+    # The tradeoff chart of each committed result, under both metrics: no label covers
+    # another in any panel (the chart's clusters of methods at one speed and accuracy are
+    # what it is read for), and every point is named in one.
+    sys.dont_write_bytecode = True   # no __pycache__ left in bench/
+    sys.path.insert(0, bench)
+    import matplotlib.text  # noqa: E402
+    import tradeoff_chart  # noqa: E402
+    current = [path for path in sorted(glob.glob(os.path.join(source, "docs", "tradeoff", "*", "tradeoff.json")))
+               if re.fullmatch(r"[0-9]+x[0-9]+", os.path.basename(os.path.dirname(path)))]   # not dated runs
+    check(len(current) >= 2, f"{len(current)} current tradeoff results in docs/tradeoff/")
+    for result_path in current:
+        for metric in ("psnr", "flip"):
+            results = tradeoff_chart.load_results([result_path], metric)
+            fig = tradeoff_chart.figure(results, metric)
+            renderer = fig.canvas.get_renderer()
+            what = f"{os.path.relpath(result_path, source)} ({metric})"
+            panels = [ax for ax in fig.axes if ax.axison]
+            check(len(panels) == 2 * len(results), f"{what}: {len(panels)} panels for {len(results)} scenes")
+            for ax in panels:
+                texts = [t for t in ax.texts if t.get_text()]
+                # The text's own box (an annotation's extent would take in its leader line),
+                # once the annotation has placed its text.
+                for t in texts:
+                    if isinstance(t, matplotlib.text.Annotation):
+                        t.update_positions(renderer)
+                boxes = [matplotlib.text.Text.get_window_extent(t, renderer) for t in texts]
+                for a in range(len(texts)):
+                    for b in range(a):
+                        check(not boxes[a].overlaps(boxes[b]), f"{what}, {ax.get_title()}: "
+                              f"{texts[a].get_text()!r} covers {texts[b].get_text()!r}")
+                named = ", ".join(t.get_text().replace("\n", " ") for t in texts)
+                scene = next(r for r in results if ax.get_title().startswith(r["scene"] + " "))
+                for point in scene["points"]:
+                    check(point["name"] in named, f"{what}, {ax.get_title()}: {point['name']} is not named")
+            tradeoff_chart.plt.close(fig)
 
     # A point with a field gone, of the wrong type, or a sweep without FLIP charted by FLIP.
     point_gone = dict(sweep_doc, points=[{k: v for k, v in p.items() if k != "value_index"} for p in sweep_doc["points"]])

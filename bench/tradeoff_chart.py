@@ -225,31 +225,35 @@ def label_points(ax, names, xs, ys):
     the labels on the canvas."""
     renderer = ax.figure.canvas.get_renderer()
     panel = ax.get_window_extent(renderer)
+    pixels = ax.figure.dpi / 72.0   # pixels a point
     centres = [tuple(ax.transData.transform((x, y))) for x, y in zip(xs, ys)]
-    radius = 4.0 * ax.figure.dpi / 72.0   # a marker's half width, in pixels
+    radius = 4.0 * pixels   # a marker's half width
     taken = [Bbox.from_bounds(cx - radius, cy - radius, 2 * radius, 2 * radius) for cx, cy in centres]
     taken += [text.get_window_extent(renderer) for text in ax.texts]   # the reference lines' names
     groups = coincident_groups(centres, radius / 2)
     # Most accurate first, then fastest: the ceiling's labels are the ones read first.
     for group in sorted(groups, key=lambda g: (-ys[g[0]], xs[g[0]])):
-        i = group[0]
+        i, (cx, cy) = group[0], centres[group[0]]
         text = textwrap.fill(", ".join(names[k] for k in group), 44)
+        # The text's size, measured once; each place's box follows from its offset and alignment.
+        probe = ax.annotate(text, (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3), fontsize=6.5)
+        width, height = probe.get_window_extent(renderer).size
+        probe.remove()
         for dx, dy in label_offsets():
             beside = dy == 3
-            place = dict(textcoords="offset points", xytext=(dx, dy), fontsize=6.5,
-                         ha="left" if dx > 0 else "right", va="bottom" if beside else "center")
-            label = ax.annotate(text, (xs[i], ys[i]), **place)
-            box = label.get_window_extent(renderer)   # the text's (a leader would add its own span)
-            label.remove()
+            x0 = cx + dx * pixels - (0 if dx > 0 else width)   # ha: left on the right, right on the left
+            y0 = cy + dy * pixels - (0 if beside else height / 2)   # va: bottom beside, else centre
+            box = Bbox.from_bounds(x0, y0, width, height)
             inside = panel.x0 <= box.x0 and box.x1 <= panel.x1 and panel.y0 <= box.y0 and box.y1 <= panel.y1
             if inside and not any(box.overlaps(other) for other in taken):
-                leader = None if beside else dict(arrowstyle="-", color="#bbbbbb", linewidth=0.5)
-                ax.annotate(text, (xs[i], ys[i]), arrowprops=leader, **place)
+                ax.annotate(text, (xs[i], ys[i]), textcoords="offset points", xytext=(dx, dy), fontsize=6.5,
+                            ha="left" if dx > 0 else "right", va="bottom" if beside else "center",
+                            arrowprops=None if beside else dict(arrowstyle="-", color="#bbbbbb", linewidth=0.5))
                 taken.append(box)
                 break
         else:
-            taken.append(ax.annotate(text, (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3),
-                                     fontsize=6.5).get_window_extent(renderer))
+            ax.annotate(text, (xs[i], ys[i]), textcoords="offset points", xytext=(6, 3), fontsize=6.5)
+            taken.append(Bbox.from_bounds(cx + 6 * pixels, cy + 3 * pixels, width, height))
 
 
 def x_range(xs, kinds):

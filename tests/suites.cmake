@@ -116,7 +116,7 @@ set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness COST 30)
 # and modelled, anything else refused with exit 2 and a line naming it, before any work.
 add_test(NAME bench_scripts COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/bench_scripts_test.py
          $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
-set_tests_properties(bench_scripts PROPERTIES TIMEOUT 180 LABELS harness COST 15)
+set_tests_properties(bench_scripts PROPERTIES TIMEOUT 180 LABELS harness COST 45)
 
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.

@@ -177,10 +177,12 @@ def chart(args, rows, host, path):
             mine = [next(r for r in rows if (r["size"], r["preset"], r["scene"]) == (size, preset, scene))
                     for scene in args.scenes]
             x = [i + (p - (len(args.presets) - 1) / 2) * width for i in range(len(args.scenes))]
-            bars = ax.bar(x, [r["median"] for r in mine], width * 0.9, label=f"{preset} (median)", alpha=0.75)
+            ax.bar(x, [r["median"] for r in mine], width * 0.9, label=f"{preset} (median)", alpha=0.75)
             for xi, row in zip(x, mine):
                 ax.plot([xi] * len(row["ratios"]), row["ratios"], "k.", markersize=4)
-            ax.bar_label(bars, fmt="%.2f", fontsize=7)
+                # The median above its bar and its runs' dots, not under them.
+                ax.annotate(f"{row['median']:.2f}", (xi, max([row["median"]] + row["ratios"])),
+                            textcoords="offset points", xytext=(0, 3), ha="center", fontsize=7)
         ax.axhline(args.goal, color="#2ca02c", linestyle="--", linewidth=1, label=f"goal {args.goal:g}x")
         ax.axhline(args.floor, color="#d62728", linestyle=":", linewidth=1, label=f"floor {args.floor:g}x")
         ax.set_xticks(range(len(args.scenes)), args.scenes)

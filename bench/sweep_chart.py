@@ -85,18 +85,20 @@ def legend_label(side, points, drawn):
     return side
 
 
-def mark_failures(ax, failures, below):
+def mark_failures(ax, failures, below, top):
     """A red X at each side's first failure, (side, value, y); one label a value, naming every
     side that first fails there (labels of sides failing at one value would print over each
-    other), beside the lowest (below=True) or highest of their crosses."""
+    other), beside the lowest (below=True) or highest of their crosses: under it, or over it
+    where that would run past the y axis's end (0 or top)."""
     for side, value, y in failures:
         ax.plot([value], [y], marker="x", color="red", markersize=12, markeredgewidth=2.5, linestyle="none")
     for value in dict.fromkeys(v for _, v, _ in failures):
         here = [(side, y) for side, v, y in failures if v == value]
         names = ", ".join(side for side, _ in here)
         y = min(y for _, y in here) if below else max(y for _, y in here)
+        under = y > 0.15 * top if below else y > 0.85 * top
         ax.annotate(f"{names} fail{'s' if len(here) == 1 else ''}\n{value:.4g}", (value, y),
-                    textcoords="offset points", xytext=(6, -24) if below else (6, 6), fontsize=8, color="red")
+                    textcoords="offset points", xytext=(6, -24) if under else (6, 6), fontsize=8, color="red")
 
 
 def draw_flip(sweep):
@@ -117,13 +119,13 @@ def draw_flip(sweep):
         first = next((p for p in mine if p["fails"]), None)
         if first is not None and first["flip_vs_llvmpipe"] is not None:
             failures.append((side, first["value"], first["flip_vs_llvmpipe"]))
-    mark_failures(ax, failures, below=False)
+    ax.set_ylim(bottom=0, top=max(top * 1.15, 1e-3))
+    mark_failures(ax, failures, below=False, top=max(top * 1.15, 1e-3))
     for p in points:
         if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
             ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
     if sweep["range"]["log"]:
         ax.set_xscale("log")
-    ax.set_ylim(bottom=0, top=max(top * 1.15, 1e-3))
     ax.set_xlabel(sweep["param"])
     ax.set_ylabel("final image mean FLIP against llvmpipe (0: identical)")
     ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {setting(sweep)}; "
@@ -153,7 +155,7 @@ def draw(sweep):
         if first is not None:
             failures.append((side, first["value"], ceiling if first["psnr_vs_llvmpipe_db"] is None
                              else first["psnr_vs_llvmpipe_db"]))
-    mark_failures(ax, failures, below=True)
+    mark_failures(ax, failures, below=True, top=ceiling + 8)
     for p in points:
         if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
             ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)

@@ -258,7 +258,7 @@ def label_points(ax, names, xs, ys):
 
 def x_range(xs, kinds):
     """The speed-up axis: every preset and method, and 1 (llvmpipe). A driver far slower than
-    those (softpipe, 50-100 times slower than llvmpipe) would squeeze them into the right
+    those (softpipe, 20-170 times slower than llvmpipe) would squeeze them into the right
     edge of a log axis; it is drawn at the left edge instead (off_scale), labelled with its
     speed-up."""
     main = [x for x, kind in zip(xs, kinds) if kind != "driver"] + [1.0]

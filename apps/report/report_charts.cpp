@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "apps/common/cli_options.h"
 #include "apps/report/report_folder.h"
 #include "apps/report/report_html.h"
 #include "apps/report/report_results.h"
@@ -36,12 +37,20 @@ std::string chartSection(const ChartResult& result, const fs::path& reportFolder
   const std::string base = "charts/" + std::to_string(index) + "-" + fileSafe(result.label);
   fs::create_directories(reportFolder / base);
   const std::string jsonFile = result.kind + ".json";
-  const std::string jsonText = readFile(result.folder / jsonFile);
+  // A result the user's --include folders hold that is not one is bad input (exit 2), as a
+  // bad option is: the message names the file and what is wrong with it.
+  const auto badResult = [&](const std::string& why) {
+    return cli::UsageError("--include: " + (result.folder / jsonFile).string() + ": " + why);
+  };
+  std::string jsonText;
   json data;
   try {
+    jsonText = readFile(result.folder / jsonFile);
     data = json::parse(jsonText);
   } catch (const json::exception& e) {
-    throw std::runtime_error("cannot read " + (result.folder / jsonFile).string() + ": " + e.what());
+    throw badResult(std::string("not a ") + result.kind + " result: " + e.what());
+  } catch (const std::runtime_error&) {
+    throw badResult("cannot be read");
   }
   compare::writeOutputFile((reportFolder / base / jsonFile).string(), jsonText);
   std::string html = "<h3>" + escape(result.kind + ": " + result.label) + "</h3>\n";
@@ -63,7 +72,7 @@ std::string chartSection(const ChartResult& result, const fs::path& reportFolder
   try {
     html += result.kind == "tradeoff" ? tradeoffTables(data, id) : sweepTables(data, id);
   } catch (const json::exception& e) {
-    throw std::runtime_error("cannot read " + (result.folder / jsonFile).string() + ": " + e.what());
+    throw badResult(std::string("not a ") + result.kind + " result: " + e.what());
   }
   record = {{"kind", result.kind}, {"source", result.label}, {"json", base + "/" + jsonFile}, {"image", image}, {"id", id}};
   return html;

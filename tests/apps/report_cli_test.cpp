@@ -52,6 +52,25 @@ TEST_CASE("report: bad input exits 2 with one line before anything renders") {
   CHECK(fs::is_empty(temp.path / "real"));
   CHECK(readText(temp.path / "file") == "x");
   CHECK(hiddenEntries(temp.path) == 0);
+
+  // A result under --include that is not one: refused naming its file, before the scenes
+  // render (a 1920x1080 report of every scene would take minutes before reaching it).
+  const std::pair<const char*, const char*> bad[] = {{"tradeoff.json", "{\"points\": ["},
+                                                     {"sweep.json", "[1, 2]"},
+                                                     {"tradeoff.json", "{\"scene\": \"shadow\"}"}};
+  for (const auto& [name, text] : bad) {
+    TempFolder results;
+    fs::create_directories(results.path / "inc" / "one");
+    { std::ofstream(results.path / "inc" / "one" / name) << text; }
+    const RunResult result =
+        runCli(results.path, "report all --size 1920x1080 --include inc --no-default-include --quiet --out r");
+    INFO(name << " holding " << text << ": " << result.err);
+    CHECK(result.status == 2);
+    CHECK(result.err.find("--include: inc/one/" + std::string(name)) != std::string::npos);
+    CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 1);
+    CHECK(!fs::exists(results.path / "r"));
+    CHECK(hiddenEntries(results.path) == 0);
+  }
 }
 
 TEST_CASE("report: every target's images and metrics; a second run replaces the first whole") {

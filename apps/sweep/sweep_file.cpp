@@ -45,8 +45,9 @@ std::string markdown(const json& sweep) {
   const std::string time = param == "time" ? std::string("each value's time") : "t=" + sixDigits(sweep.at("time"));
   md << "# Sweep of `" << param << "` in " << sweep.at("scene").get<std::string>() << "\n\nFrom "
      << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
-     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << size << ", " << time << ". Each side against llvmpipe; a side fails at a final image below "
-     << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
+     << (r.at("log").get<bool>() ? " log" : "") << " steps, " << size << ", " << time
+     << ". Each side against llvmpipe; a side fails at a final image below " << sixDigits(sweep.at("threshold_db"))
+     << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";
     for (const auto& [side, value] : sweep.at("first_failure").items())

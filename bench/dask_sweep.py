@@ -88,10 +88,10 @@ def parse_args(argv):
 
 
 def check_arguments(args):
-    """Lets raster check everything (range, methods, size, output folder) before any task runs."""
-    with tempfile.TemporaryDirectory(prefix="sweep-check-") as folder:
-        done = subprocess.run([args.raster, "sweep", args.scene, "--param", args.param, "--out",
-                               os.path.join(folder, "out"), "--check"] + args.extra, capture_output=True, text=True)
+    """Lets raster check everything (range, methods, size, the shard count, the output folder:
+    the one the merge writes) before any task runs; --check makes nothing."""
+    done = subprocess.run([args.raster, "sweep", args.scene, "--param", args.param, "--shard", f"1/{args.shards}",
+                           "--out", args.out, "--check"] + args.extra, capture_output=True, text=True)
     if done.returncode != 0:
         print(done.stderr.strip() or f"raster sweep refused the arguments (exit {done.returncode})", file=sys.stderr)
         sys.exit(2 if done.returncode == 2 else 1)
@@ -120,7 +120,11 @@ def main(argv):
                                dashboard_address=None)
         client = Client(cluster)
     else:
-        client = Client(args.scheduler)
+        try:
+            client = Client(args.scheduler)
+        except OSError as e:   # no scheduler there, or not reachable: one line, not a traceback
+            print(f"dask_sweep.py: --scheduler: cannot reach {args.scheduler}: {e}", file=sys.stderr)
+            return 1
     try:
         futures = {}
         for k in range(1, args.shards + 1):

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """A sweep sharded on a 2-worker Dask LocalCluster equals the single-machine sweep, byte for
-byte, even when a worker dies under a shard (the task is rescheduled); bad input exits 2.
+byte, even when a worker dies under a shard (the task is rescheduled); bad input (an unknown
+parameter, too many shards, an --out in a folder that does not exist) exits 2 before any
+cluster starts.
 
 Usage: dask_sweep_test.py RASTER_BINARY SOURCE_DIR
 """
@@ -46,6 +48,16 @@ with tempfile.TemporaryDirectory(prefix="dask-sweep-test-") as tmp:
     check(done.returncode == 2, f"an unknown parameter exited {done.returncode}, not 2")
     check("no_such" in done.stderr and "light_elevation" in done.stderr, f"the error does not list the parameters: {done.stderr}")
     check(not os.path.exists(os.path.join(tmp, "bad", "sweep.json")), "bad input left a sweep.json")
+
+    # More shards than raster takes, and an --out whose parent folder does not exist: refused
+    # by raster's check before any cluster starts, and nothing made (the folder once was).
+    for shards, out, naming in (("20000", os.path.join(tmp, "many"), "--shard"),
+                                ("2", os.path.join(tmp, "no", "such"), "--out")):
+        done = subprocess.run([sys.executable, runner] + sweep + ["--shards", shards, "--local-workers", "2",
+                               "--out", out, "--raster", raster], capture_output=True, text=True)
+        check(done.returncode == 2, f"--shards {shards} --out {out} exited {done.returncode}, not 2: {done.stderr[-2000:]}")
+        check(naming in done.stderr and "Traceback" not in done.stderr, f"the refusal does not name {naming}: {done.stderr[-2000:]}")
+        check(not os.path.exists(out), f"the refused run made {out}")
 
 print("dask_sweep_test: " + ("passed" if not failures else f"{len(failures)} failed"))
 sys.exit(1 if failures else 0)

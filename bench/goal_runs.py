@@ -36,10 +36,9 @@ import time
 
 from chart_files import write_atomically, write_text_atomically
 from input_checks import NUMBER, OPTIONAL, BadInput, check_record, fail, is_number, read_json
-from raster_scenes import scene_names
+from raster_scenes import preset_names, scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PRESETS = ("gl", "precise", "fast")
 
 
 def cpu_model():
@@ -59,7 +58,7 @@ def parse_args(argv):
     parser.add_argument("--frames", type=int, default=9, help="timed frames per backend and run (default 9)")
     parser.add_argument("--threads", type=int, default=2, help="threads for both backends (default 2)")
     parser.add_argument("--sizes", default="640x480,1920x1080", help="comma-separated WxH list")
-    parser.add_argument("--presets", default="gl,fast", help="comma-separated: gl, precise, fast")
+    parser.add_argument("--presets", default="gl,fast", help="comma-separated presets (`raster methods` lists them)")
     parser.add_argument("--scenes", help="comma-separated scene names (default: every scene of `raster scenes`)")
     parser.add_argument("--goal", type=float, default=4.0, help="median ratio a configuration needs (default 4.0, issue 69)")
     parser.add_argument("--floor", type=float, default=3.6, help="lowest ratio any run may read (default 3.6, issue 69)")
@@ -85,18 +84,28 @@ def parse_args(argv):
     for size in args.sizes:
         if not re.fullmatch(r"[1-9]\d*x[1-9]\d*", size):
             parser.error(f"--sizes: '{size}' is not WxH (e.g. 640x480)")
-    for name, given, valid in (("--presets", args.presets, PRESETS), ("--scenes", args.scenes, known_scenes)):
+    for name, given, valid in (("--presets", args.presets, preset_names(args.raster)),
+                               ("--scenes", args.scenes, known_scenes)):
         for value in given:
             if value not in valid:
                 parser.error(f"{name}: unknown '{value}' (valid: {', '.join(valid)})")
     if args.runs < 1 or args.frames < 1 or args.threads < 1:
         parser.error("--runs, --frames and --threads must be at least 1")
-    try:   # before any rendering: a run of many minutes must not end on an unwritable folder
-        os.makedirs(args.out, exist_ok=True)
-        with tempfile.TemporaryFile(dir=args.out):
-            pass
-    except OSError as error:
-        parser.error(f"--out: cannot write to {args.out}: {error.strerror}")
+    # Before any rendering: a run of many minutes must not end on an unwritable folder. The
+    # folder itself may be made, not the folders above it (a mistyped path is refused), and
+    # --dry-run makes nothing.
+    parent = os.path.dirname(os.path.abspath(args.out))
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        parser.error(f"--out: {args.out} is not a folder")
+    if not os.path.isdir(args.out) and not os.path.isdir(parent):
+        parser.error(f"--out: cannot make {args.out}: no such folder {parent}")
+    if not args.dry_run:
+        try:
+            os.makedirs(args.out, exist_ok=True)
+            with tempfile.TemporaryFile(dir=args.out):
+                pass
+        except OSError as error:
+            parser.error(f"--out: cannot write to {args.out}: {error.strerror}")
     return args
 
 

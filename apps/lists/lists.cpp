@@ -25,9 +25,30 @@ nlohmann::json paramsJson(const std::vector<scenes::ParamSpec>& specs) {
 
 }  // namespace
 
+void addMethodsOptions(CLI::App& command, MethodsArgs& args) {
+  command.add_flag("--json", args.json, "As JSON: each step's methods (the default first) and each preset's methods and promise");
+}
+
 // `raster methods`: every step, its methods (the default first) and what each trades; then
-// the presets as step=method lists, each with what it promises and where.
-int listMethods() {
+// the presets as step=method lists, each with what it promises and where. With --json the
+// same as one object, which bench/goal_runs.py reads its preset names from.
+int listMethods(const MethodsArgs& args) {
+  if (args.json) {
+    nlohmann::json steps = nlohmann::json::array(), presets = nlohmann::json::array();
+    for (const raster::StepInfo& step : raster::methodCatalog()) {
+      nlohmann::json methods = nlohmann::json::array();
+      for (size_t i = 0; i < step.methods.size(); ++i)
+        methods.push_back({{"name", step.methods[i].name}, {"trade", step.methods[i].trade}, {"default", i == 0}});
+      steps.push_back({{"name", step.name}, {"what", step.what}, {"methods", methods}});
+    }
+    for (const std::string& preset : raster::presetNames()) {
+      nlohmann::json methods = nlohmann::json::object();
+      for (const auto& [step, method] : raster::methodNames(raster::presetMethods(preset))) methods[step] = method;
+      presets.push_back({{"name", preset}, {"methods", methods}, {"promise", raster::presetPromise(preset)}});
+    }
+    std::cout << nlohmann::json{{"steps", steps}, {"presets", presets}}.dump(2) << "\n";
+    return 0;
+  }
   for (const raster::StepInfo& step : raster::methodCatalog()) {
     std::cout << step.name << ": " << step.what << "\n";
     for (size_t i = 0; i < step.methods.size(); ++i)

@@ -171,6 +171,26 @@ TEST_SUITE("cli") {
                              "shading=2x2-local", "shading=2x2-offscreen", "shading=2x2-smooth", "lookup=linear (default)", "lookup=nearest",
                              "  gl  math=llvmpipe", "  precise ", "  fast ", "  draft ", "    promise: llvmpipe's bytes"})
       CHECK(list.out.find(line) != std::string::npos);
+    // --json: the same registry as one object (bench/goal_runs.py takes its presets from it).
+    const RunResult listed = runCli(cwd, "methods --json");
+    REQUIRE(listed.status == 0);
+    const nlohmann::json methods = nlohmann::json::parse(listed.out);
+    REQUIRE(methods["steps"].size() == raster::methodCatalog().size());
+    for (size_t i = 0; i < raster::methodCatalog().size(); ++i) {
+      const raster::StepInfo& step = raster::methodCatalog()[i];
+      CHECK(methods["steps"][i]["name"] == step.name);
+      REQUIRE(methods["steps"][i]["methods"].size() == step.methods.size());
+      CHECK(methods["steps"][i]["methods"][0]["default"] == true);
+      CHECK(methods["steps"][i]["methods"].back()["name"] == step.methods.back().name);
+    }
+    REQUIRE(methods["presets"].size() == raster::presetNames().size());
+    for (size_t i = 0; i < raster::presetNames().size(); ++i) {
+      const std::string& preset = raster::presetNames()[i];
+      CHECK(methods["presets"][i]["name"] == preset);
+      CHECK(methods["presets"][i]["promise"] == raster::presetPromise(preset));
+      for (const auto& [step, method] : raster::methodNames(raster::presetMethods(preset)))
+        CHECK(methods["presets"][i]["methods"][step] == method);
+    }
     for (const char* command : {"render", "compare", "bench"}) {
       expectRefused(std::string(command) + " " + aScene() + " --preset turbo");
       expectRefused(std::string(command) + " " + aScene() + " --method math=slow");

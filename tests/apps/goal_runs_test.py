@@ -94,9 +94,13 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
     # Bad input: exit 2, one line that names the problem, nothing written.
     blocker = os.path.join(tmp, "a-file")
     open(blocker, "w").close()
-    for extra, says in ((["--presets", "gl,slow"], "gl, precise, fast"), (["--scenes", "forest"], "shadow, deferred, hdr"),
+    # The presets are the binary's (`raster methods --json`), draft included.
+    for extra, says in ((["--presets", "gl,slow"], "gl, precise, fast, draft"),
+                        (["--scenes", "forest"], "shadow, deferred, hdr"),
                         (["--sizes", "640"], "WxH"), (["--sizes", "0x480"], "WxH"), (["--runs", "0"], "--runs"),
-                        (["--out", os.path.join(blocker, "under")], "cannot write")):
+                        (["--out", os.path.join(blocker, "under")], "no such folder"),
+                        (["--out", blocker], "not a folder"),
+                        (["--out", os.path.join(tmp, "no", "such")], "no such folder")):
         bad = os.path.join(tmp, "bad")
         args = extra if "--out" in extra else extra + ["--out", bad]
         done = goal_runs(*args)
@@ -104,6 +108,11 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
         check(says in done.stderr, f"{extra}: the error does not say '{says}': {done.stderr}")
         check("[1/" not in done.stderr, f"{extra}: a run started before the error")
         check(not os.path.exists(os.path.join(bad, "goals.json")), f"{extra} left a goals.json")
+    check(not os.path.exists(os.path.join(tmp, "no")), "a refused --out made the folders above it")
+    dry = os.path.join(tmp, "dry")
+    done = goal_runs("--presets", "draft", "--dry-run", "--out", dry)
+    check(done.returncode == 0 and "--preset draft" in done.stdout, f"--presets draft --dry-run: {done.stderr}")
+    check(not os.path.exists(dry), "--dry-run made its --out")
 
 print("goal_runs_test: " + ("passed" if not failures else f"{len(failures)} failed"))
 sys.exit(1 if failures else 0)

@@ -35,7 +35,7 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
-from input_checks import NUMBER, OPTIONAL, BadInput, check_record, fail, is_number, read_json
+from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, is_number, read_json
 from raster_scenes import preset_names, scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -92,20 +92,14 @@ def parse_args(argv):
     if args.runs < 1 or args.frames < 1 or args.threads < 1:
         parser.error("--runs, --frames and --threads must be at least 1")
     # Before any rendering: a run of many minutes must not end on an unwritable folder. The
-    # folder itself may be made, not the folders above it (a mistyped path is refused), and
-    # --dry-run makes nothing.
-    parent = os.path.dirname(os.path.abspath(args.out))
+    # folder must take files, or, not made yet, the folder above it (a mistyped path is
+    # refused, not made parents and all); --dry-run makes nothing.
     if os.path.exists(args.out) and not os.path.isdir(args.out):
         parser.error(f"--out: {args.out} is not a folder")
-    if not os.path.isdir(args.out) and not os.path.isdir(parent):
-        parser.error(f"--out: cannot make {args.out}: no such folder {parent}")
+    made = os.path.isdir(args.out)
+    check_output_path("goal_runs.py", "--out", os.path.join(args.out, "goals.json") if made else args.out)
     if not args.dry_run:
-        try:
-            os.makedirs(args.out, exist_ok=True)
-            with tempfile.TemporaryFile(dir=args.out):
-                pass
-        except OSError as error:
-            parser.error(f"--out: cannot write to {args.out}: {error.strerror}")
+        os.makedirs(args.out, exist_ok=True)
     return args
 
 

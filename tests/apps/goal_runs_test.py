@@ -98,9 +98,10 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
     for extra, says in ((["--presets", "gl,slow"], "gl, precise, fast, draft"),
                         (["--scenes", "forest"], "shadow, deferred, hdr"),
                         (["--sizes", "640"], "WxH"), (["--sizes", "0x480"], "WxH"), (["--runs", "0"], "--runs"),
-                        (["--out", os.path.join(blocker, "under")], "no such folder"),
+                        (["--out", os.path.join(blocker, "under")], f"the folder {blocker} does not exist"),
                         (["--out", blocker], "not a folder"),
-                        (["--out", os.path.join(tmp, "no", "such")], "no such folder")):
+                        (["--out", os.path.join(tmp, "no", "such")],
+                         f"the folder {os.path.join(tmp, 'no')} does not exist")):
         bad = os.path.join(tmp, "bad")
         args = extra if "--out" in extra else extra + ["--out", bad]
         done = goal_runs(*args)

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "apps/common/cli_options.h"
 
 namespace report {
@@ -25,6 +27,20 @@ fs::path folderOf(const std::string& out) {
 
 fs::path parentOf(const fs::path& folder) { return folder.has_parent_path() ? folder.parent_path() : fs::path("."); }
 
+// Whether `folder` holds an earlier report: its index.html, and a report.json that this
+// command wrote (its "made_by"). A file of that common name alone is not enough: another
+// tool's report.json would have the user's folder replaced whole.
+bool holdsEarlierReport(const fs::path& folder) {
+  std::error_code error;
+  const fs::path record = folder / "report.json";
+  if (!fs::is_regular_file(record, error) || !fs::is_regular_file(folder / "index.html", error)) return false;
+  const auto size = fs::file_size(record, error);
+  if (error || size > (64u << 20)) return false;   // far above any report's record
+  std::ifstream in(record, std::ios::binary);
+  const nlohmann::json parsed = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  return parsed.is_object() && parsed.value("made_by", nlohmann::json()) == "raster report";
+}
+
 }  // namespace
 
 void checkReportFolder(const std::string& out) {
@@ -38,8 +54,9 @@ void checkReportFolder(const std::string& out) {
     if (S_ISLNK(info.st_mode)) throw UsageError("--out: " + out + " is a symbolic link; name the folder itself");
     if (!S_ISDIR(info.st_mode)) throw UsageError("--out: " + out + " exists and is not a folder");
     std::error_code error;
-    if (!fs::is_empty(folder, error) && !fs::is_regular_file(folder / "report.json", error))
-      throw UsageError("--out: " + out + " is not empty and holds no earlier report (report.json); name a new folder");
+    if (!fs::is_empty(folder, error) && !holdsEarlierReport(folder))
+      throw UsageError("--out: " + out + " is not empty and holds no earlier report (an index.html and the report.json "
+                       "raster report writes); name a new folder");
   }
   // The report is made beside DIR and renamed onto it: the parent must be writable too.
   const fs::path parent = parentOf(folder);

@@ -1,7 +1,7 @@
 // Where `raster report` writes (report.h): nothing is half-written. The report is made in a
 // temporary folder beside DIR and moved onto DIR when complete; a DIR that exists must be
-// empty or an earlier report (it holds report.json), which is then replaced whole, so a
-// mistyped --out never replaces a user's folder.
+// empty or an earlier report (it holds index.html and the report.json this command writes),
+// which is then replaced whole, so a mistyped --out never replaces a user's folder.
 #pragma once
 
 #include <filesystem>

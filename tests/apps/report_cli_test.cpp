@@ -42,6 +42,20 @@ TEST_CASE("report: bad input exits 2 with one line before anything renders") {
   fs::create_directory(temp.path / "real");
   fs::create_directory_symlink(temp.path / "real", temp.path / "link");
   { std::ofstream(temp.path / "file") << "x"; }
+  // Another tool's report.json (a common name), even beside an index.html, is no earlier
+  // report of this command: the folder is not replaced.
+  for (const char* other : {"", "{}", "{\"made_by\": \"pytest-json-report\"}"}) {
+    fs::create_directory(temp.path / "theirs");
+    { std::ofstream(temp.path / "theirs" / "report.json") << other; }
+    { std::ofstream(temp.path / "theirs" / "index.html") << "<p>theirs</p>"; }
+    { std::ofstream(temp.path / "theirs" / "notes.txt") << "keep me"; }
+    const RunResult result = runCli(temp.path, "report shadow --size 16x12 --quiet --out theirs");
+    INFO("report.json holding '" << other << "': " << result.err);
+    CHECK(result.status == 2);
+    CHECK(result.err.find("holds no earlier report") != std::string::npos);
+    CHECK(readText(temp.path / "theirs" / "notes.txt") == "keep me");
+    fs::remove_all(temp.path / "theirs");
+  }
   for (const char* out : {"mine", "link", "file"}) {
     const RunResult result = runCli(temp.path, std::string("report shadow --size 16x12 --quiet --out ") + out);
     INFO("--out " << out << ": " << result.err);

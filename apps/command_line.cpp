@@ -32,6 +32,33 @@ int refuse(const std::string& message) {
   return 2;
 }
 
+// An option given an empty value (`--max-rmse ""`, `--out=`) is refused: CLI11 counts it as
+// given but stores nothing, so the command would run as if it were left out (a compare
+// threshold off, a whole sweep instead of its shard, the default file name).
+void refuseEmptyValues(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_type_size_max() == 0) continue;   // a flag takes no value
+    for (const std::string& value : option->results())
+      if (value.empty())
+        throw UsageError(option->get_name() + ": an empty value (give one, or leave the option out)");
+  }
+}
+
+// A scene parameter given twice, as --set NAME=VALUE (or a sweep's --param NAME=RANGE) and as
+// the command's own --NAME (time, size, instances): neither silently wins.
+void refuseParameterGivenTwice(const CLI::App& command) {
+  for (const char* byName : {"--set", "--param"}) {
+    const CLI::Option* option = command.get_option_no_throw(byName);
+    if (option == nullptr) continue;
+    for (const std::string& text : option->results()) {
+      const std::string name = text.substr(0, text.find('='));
+      const CLI::Option* rival = name.empty() ? nullptr : command.get_option_no_throw("--" + name);
+      if (rival != nullptr && rival != option && rival->count() > 0)
+        throw UsageError(std::string(byName) + " " + text + " and --" + name + " both give the " + name + "; give one");
+    }
+  }
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -57,7 +84,11 @@ int run(int argc, char** argv) {
   // Run: bad input and scene problems exit 2, anything else is an internal failure (1).
   try {
     for (const auto& [subcommand, runCommand] : runs)
-      if (subcommand->parsed()) return runCommand();
+      if (subcommand->parsed()) {
+        refuseEmptyValues(*subcommand);
+        refuseParameterGivenTwice(*subcommand);
+        return runCommand();
+      }
     return refuse("no command given (commands: " + commandList() + ")");   // require_subcommand(1) stops this first
   } catch (const UsageError& e) {
     return refuse(e.what());

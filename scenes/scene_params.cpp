@@ -62,12 +62,19 @@ bool parseSizeValue(const std::string& text, int& width, int& height) {
   return whole(text.substr(0, x), width) && whole(text.substr(x + 1), height);
 }
 
+std::optional<double> parseDecimal(const std::string& text) {
+  // from_chars, unlike strtod, takes no leading spaces, no '+' and no "0x" hex.
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
 double parseParamValue(const std::string& scene, const std::string& name, const std::string& value) {
   const ParamSpec spec = findParam(scene, name);
-  char* end = nullptr;
-  const double v = std::strtod(value.c_str(), &end);
-  if (value.empty() || *end != '\0' || !std::isfinite(v))
-    throw ParamError(name + ": '" + value + "' is not a finite number");
+  const std::optional<double> parsed = parseDecimal(value);
+  if (!parsed) throw ParamError(name + ": '" + value + "' is not a finite number");
+  const double v = *parsed;
   if (spec.integer && v != std::floor(v)) throw ParamError(name + ": '" + value + "' is not a whole number");
   if (v < spec.min || v > spec.max) {
     char range[96];

@@ -55,6 +55,9 @@ struct ParamError : std::invalid_argument {
 std::vector<ParamSpec> sceneParams(const std::string& scene);
 ParamSpec findParam(const std::string& scene, const std::string& name);   // ParamError
 
+// A finite decimal number that is the whole text: no spaces, no hex, no inf or nan (the
+// form every number of the command line takes, so that --time and --set time= agree).
+std::optional<double> parseDecimal(const std::string& text);
 // Parses and range-checks VALUE for parameter `name` of `scene` (ParamError naming both).
 // `size` is not a number: see parseSizeValue.
 double parseParamValue(const std::string& scene, const std::string& name, const std::string& value);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -111,6 +112,19 @@ scenes::SceneOptions sceneOptions(const Frame& frame) {
   return options;
 }
 
+std::vector<std::string> childFrameOptions(const Frame& frame) {
+  char time[32];
+  std::snprintf(time, sizeof time, "%.9g", frame.time);
+  std::vector<std::string> options = {"--size", std::to_string(frame.width) + "x" + std::to_string(frame.height),
+                                      "--time", time, "--instances", std::to_string(frame.instances)};
+  if (!frame.assets.empty()) options.insert(options.end(), {"--assets", frame.assets});
+  for (const std::string& set : frame.sets) {
+    const std::string name = set.substr(0, set.find('='));
+    if (name != "time" && name != "size" && name != "instances") options.insert(options.end(), {"--set", set});
+  }
+  return options;
+}
+
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides) {
   try {
     raster::MethodSet set = raster::presetMethods(preset);
@@ -134,12 +148,12 @@ Frame validateFrame(const FrameArgs& args) {
 
   std::tie(frame.width, frame.height) = parseSize("--size", args.size);
 
-  // --time: finite, not negative, and still finite as a float.
-  const double time = parseFiniteNumber("--time", args.time);
-  if (time < 0) throw UsageError("--time: " + args.time + " is negative (0 or more seconds)");
-  if (!std::isfinite(float(time)))
-    throw UsageError("--time: " + args.time + " overflows a float (scenes take their time as a float: at most 3.4e38 seconds)");
-  frame.time = float(time);
+  // --time: the scene parameter `time`, read and range-checked as --set time= reads it.
+  try {
+    frame.time = float(scenes::parseParamValue(frame.scene, "time", args.time));
+  } catch (const scenes::ParamError& e) {
+    throw UsageError(std::string("--") + e.what());   // "--time: ..."
+  }
 
   if (args.threads < 0 || args.threads > kMaxThreads)
     throw UsageError("--threads: " + std::to_string(args.threads) + " is out of range (0.." +
@@ -211,11 +225,9 @@ std::pair<int, int> parseSize(const std::string& option, const std::string& text
 std::optional<uint64_t> parseWholeNumber(const std::string& text) { return parseUnsigned(text); }
 
 double parseFiniteNumber(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(value))
-    throw UsageError(option + ": '" + text + "' is not a finite number");
-  return value;
+  const std::optional<double> value = scenes::parseDecimal(text);
+  if (!value) throw UsageError(option + ": '" + text + "' is not a finite number");
+  return *value;
 }
 
 void refuseOwnOptionsOnGl(const Frame& frame, const std::string& side) {

@@ -68,11 +68,17 @@ struct Frame {
 // The scene options of a validated frame.
 scenes::SceneOptions sceneOptions(const Frame& frame);
 
+// The options that make a child process (`raster render`, `bench`, `trace`) render this
+// frame: --size, --time (9 digits: the same float back), --instances, --assets, and a --set of
+// each scene setting. Time, size and instances go as their own options only, whether they
+// came from them or from --set: both at once is refused as ambiguous.
+std::vector<std::string> childFrameOptions(const Frame& frame);
+
 // Adds the options every frame command shares (the scene, --time, --size, --threads,
 // --preset, --set, ...) to a command.
 void addFrameOptions(CLI::App& command, FrameArgs& args);
 
-// Checks the shared options: a known scene, WxH within 1..16384, a finite time >= 0,
+// Checks the shared options: a known scene, WxH within 1..16384, a time within 0..1e30 (as --set time=),
 // threads within 0..1024, an existing asset folder, a memory cap (which it sets: the run
 // allocates nothing before this).
 Frame validateFrame(const FrameArgs& args);
@@ -81,7 +87,7 @@ Frame validateFrame(const FrameArgs& args);
 std::pair<int, int> parseSize(const std::string& option, const std::string& text);
 // A non-negative decimal integer, the whole text, that fits in 64 bits; nullopt otherwise.
 std::optional<uint64_t> parseWholeNumber(const std::string& text);
-// A finite number, the whole text; UsageError naming the option otherwise.
+// A finite decimal number, the whole text (scenes::parseDecimal); UsageError naming the option otherwise.
 double parseFiniteNumber(const std::string& option, const std::string& text);
 
 // The method set of --preset and --method; UsageError naming the valid names otherwise.

@@ -85,18 +85,13 @@ struct TempFolder {
 // Renders one frame with GL under another Gallium driver, in a child process of this program.
 Side renderInChild(const Frame& frame, const std::string& driver) {
   TempFolder dump;
-  char time[32];
-  std::snprintf(time, sizeof time, "%.9g", frame.time);   // 9 digits: the same float back
-  std::vector<std::string> args = {"raster", "render", frame.scene, "--backend", "gl",
-                                   "--size", std::to_string(frame.width) + "x" + std::to_string(frame.height),
-                                   "--time", time, "--threads", std::to_string(frame.threads),
+  std::vector<std::string> args = {"raster", "render", frame.scene, "--backend", "gl", "--threads", std::to_string(frame.threads),
                                    "--dump", dump.path, "--out", dump.path + "/out.png"};
-  if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
+  const std::vector<std::string> frameOptions = childFrameOptions(frame);
+  args.insert(args.end(), frameOptions.begin(), frameOptions.end());
   // The child gets what this process has left of the cap (its targets are loaded back here).
   const uint64_t left = scenes::memory::cap() - std::min(scenes::memory::cap(), scenes::memory::reserved());
   args.insert(args.end(), {"--max-memory", std::to_string(std::max<uint64_t>(left / 2, 1))});
-  args.insert(args.end(), {"--instances", std::to_string(frame.instances)});
-  for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
   if (frame.quiet) args.push_back("--quiet");
   if (frame.floatFinal) args.push_back("--float-final");
 

@@ -49,11 +49,8 @@ std::string lastLine(const std::string& output) {
 // `command` with the options that make a child render the same frame, with the same method set.
 std::vector<std::string> withFrameOptions(std::vector<std::string> command, const SceneWork& scene) {
   const cli::Frame& frame = scene.frame;
-  char time[32];
-  std::snprintf(time, sizeof time, "%.9g", frame.time);   // 9 digits: the same float back
-  command.insert(command.end(), {"--size", std::to_string(frame.width) + "x" + std::to_string(frame.height), "--time", time});
-  if (!frame.assets.empty()) command.insert(command.end(), {"--assets", frame.assets});
-  for (const std::string& set : frame.sets) command.insert(command.end(), {"--set", set});
+  const std::vector<std::string> frameOptions = cli::childFrameOptions(frame);
+  command.insert(command.end(), frameOptions.begin(), frameOptions.end());
   if (!(frame.methods == raster::MethodSet{})) command.insert(command.end(), {"--preset", scene.args.preset});
   if (!scene.args.method.empty()) command.insert(command.end(), {"--method", scene.args.method});
   return command;

@@ -94,15 +94,10 @@ Stage makeStage(std::unique_ptr<scenes::Backend> backend, const Frame& frame) {
 // Softpipe, timed in a child `raster bench --gl-driver softpipe` against this pipeline's
 // gl set: returns {softpipe median, gl median} of the child, in ms.
 std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int frames, const std::string& jsonPath) {
-  char time[32];
-  std::snprintf(time, sizeof time, "%.9g", frame.time);
-  std::vector<std::string> args = {"raster", "bench", frame.scene, "--gl-driver", "softpipe",
-                                   "--size", std::to_string(frame.width) + "x" + std::to_string(frame.height),
-                                   "--time", time, "--threads", std::to_string(threads),
-                                   "--frames", std::to_string(frames), "--warmup", "1", "--no-pin",
-                                   "--instances", std::to_string(frame.instances), "--json", jsonPath};
-  if (!frame.assets.empty()) args.insert(args.end(), {"--assets", frame.assets});
-  for (const std::string& set : frame.sets) args.insert(args.end(), {"--set", set});
+  std::vector<std::string> args = {"raster", "bench", frame.scene, "--gl-driver", "softpipe", "--threads", std::to_string(threads),
+                                   "--frames", std::to_string(frames), "--warmup", "1", "--no-pin", "--json", jsonPath};
+  const std::vector<std::string> frameOptions = childFrameOptions(frame);
+  args.insert(args.end(), frameOptions.begin(), frameOptions.end());
   std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
   args[0] = "/proc/self/exe";
   if (runChildProcess(args, "the softpipe timing child (raster bench --gl-driver softpipe)") != 0)

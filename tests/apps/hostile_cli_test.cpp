@@ -1,5 +1,6 @@
-// Hostile environment and values: a Gallium driver or thread count Mesa cannot use, a time
-// that overflows a float, images with NaN and infinite pixels in a comparison.
+// Hostile environment and values: a Gallium driver or thread count Mesa cannot use, numbers
+// that are not decimal or out of range, empty values, a parameter given twice, images with
+// NaN and infinite pixels in a comparison.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -39,10 +40,40 @@ TEST_SUITE("hostile") {
                    "LP_NUM_THREADS='-3'");
   }
 
-  // 1e39 passed as a double but became +inf as the scene's float; the message said "out of range".
-  TEST_CASE("values: a time that overflows a float says so") {
-    expectBadInput("exec \"$RASTER\" render shadow --time 1e39", "overflows a float");
-    expectBadInput("exec \"$RASTER\" render shadow --time -1", "is negative");
+  // --time was read by strtod: "0x10" was 16, " 1" was 1, and 1e31 passed though --set time=
+  // (and `raster params`) stop at 1e30. Both now read a decimal number in the parameter's range.
+  TEST_CASE("values: --time takes what --set time= takes, and nothing else") {
+    for (const char* time : {"1e39", "1e31", "-1"}) {
+      expectBadInput(std::string("exec \"$RASTER\" render shadow --time ") + time, "--time: " + std::string(time) + " is out of range (0..1e+30)");
+      expectBadInput(std::string("exec \"$RASTER\" render shadow --set time=") + time, "time: " + std::string(time) + " is out of range");
+    }
+    for (const char* time : {"0x10", "' 1'", "'1 '", "+1", "inf", "nan", "1e"}) {
+      expectBadInput(std::string("exec \"$RASTER\" render shadow --time ") + time, "is not a finite number");
+      expectBadInput(std::string("exec \"$RASTER\" render shadow --set time=") + time, "is not a finite number");
+    }
+    expectBadInput("exec \"$RASTER\" compare shadow --max-rmse 0x1 --out cmp", "--max-rmse: '0x1' is not a finite number");
+  }
+
+  // An empty value was taken as the option left out: `--max-rmse ""` turned a CI gate off,
+  // `--out ""` wrote shadow.png into the working folder.
+  TEST_CASE("values: an option given an empty value is refused, not taken as left out") {
+    expectBadInput("exec \"$RASTER\" compare shadow --size 16x12 --max-rmse '' --out cmp", "--max-rmse: an empty value");
+    expectBadInput("exec \"$RASTER\" render shadow --size 16x12 --out ''", "--out: an empty value");
+    expectBadInput("exec \"$RASTER\" render shadow --size 16x12 --threads '' --out x.png", "--threads: an empty value");
+    expectBadInput("exec \"$RASTER\" sweep shadow --param near=0.01:0.1:2 --shard '' --out s", "--shard: an empty value");
+  }
+
+  // `--set size=64x48 --size 32x24` rendered 64x48: a parameter given two ways is ambiguous.
+  TEST_CASE("values: a parameter given by --set (or a sweep's --param) and by its own option is refused") {
+    expectBadInput("exec \"$RASTER\" render shadow --set size=64x48 --size 32x24 --out x.png", "--set size=64x48 and --size both give the size");
+    expectBadInput("exec \"$RASTER\" render hdr --size 16x12 --instances 5 --set instances=7 --out x.png", "both give the instances");
+    expectBadInput("exec \"$RASTER\" sweep shadow --param time=0:2:3 --time 3 --out s", "--param time=0:2:3 and --time both give the time");
+    // Given once, by --set, it reaches a child process (softpipe's render) as its option only.
+    TempFolder temp;
+    const RunResult child = runCli(temp.path, "compare shadow --set size=20x14 --set time=2 --reference softpipe --max-rmse 1000 --quiet --out cmp");
+    INFO(child.err);
+    CHECK(child.status == 0);
+    CHECK(child.out.find("scene: shadow at 20x14, t=2.000") != std::string::npos);
   }
 
   // Identical NaN pixels made RMSE and PSNR NaN ("psnr nan").

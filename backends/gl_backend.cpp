@@ -89,7 +89,9 @@ class GlBackend : public Backend {
           "check GALLIUM_DRIVER is llvmpipe or softpipe)");
     ++liveBackends;
     ++backendsMade;
-    resizeDefaultFramebuffer(640, 480);
+    // The smallest window until the scene sizes it: a memory cap (--max-memory) is then met
+    // or missed at the size asked for, not at a default nobody asked for.
+    resizeDefaultFramebuffer(1, 1);
 
     // The driver name is the first word of GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

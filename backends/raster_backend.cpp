@@ -31,7 +31,9 @@ class RasterBackend final : public Backend {
     framebuffers_.emplace_back(); // handle 0: the default framebuffer
     meshes_.emplace_back();
     programs_.emplace_back();
-    resizeDefaultFramebuffer(640, 480);
+    // The smallest window until the scene sizes it: a memory cap (--max-memory) is then met
+    // or missed at the size asked for, not at a default nobody asked for.
+    resizeDefaultFramebuffer(1, 1);
   }
 
   ~RasterBackend() override { memory::release(reserved_); }

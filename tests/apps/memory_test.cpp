@@ -79,6 +79,19 @@ TEST_SUITE("memory") {
     CHECK(runCli(cwd, "render shadow --max-memory 0").status == 2);
   }
 
+  // The backends made a 640x480 window before the scene sized it, so an 8x8 render under a
+  // 2 MiB cap was refused for "the 640x480 window": the error names what the run needs.
+  TEST_CASE("memory: the cap is met or missed at the size asked for, not at a default") {
+    TempFolder temp;
+    for (const char* backend : {"raster", "gl"}) {
+      const RunResult r = runCli(temp.path, std::string("render shadow --size 8x8 --max-memory 2M --quiet --out x.png --backend ") + backend);
+      INFO(backend << ": " << r.err);
+      CHECK(r.status == 2);
+      CHECK(r.err.find("640x480") == std::string::npos);
+      CHECK(r.err.find("over the cap of 2.0 MiB") != std::string::npos);
+    }
+  }
+
   // render used to read back every target even without --dump (a 16384x16384 deferred render
   // died with bad_alloc at 21 GB). At 2048x2048 the frame needs under 250 MiB (the material
   // maps kept in strips, footprint_strips.h, 4/3 of their rows, and each decoded image freed

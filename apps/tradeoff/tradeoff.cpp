@@ -93,12 +93,15 @@ Stage makeStage(std::unique_ptr<scenes::Backend> backend, const Frame& frame) {
 
 // Softpipe, timed in a child `raster bench --gl-driver softpipe` against this pipeline's
 // gl set: returns {softpipe median, gl median} of the child, in ms.
-std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int frames, const std::string& jsonPath) {
+// Its warm-up is --warmup's, but at most one frame: softpipe runs at 1-5% of llvmpipe's speed.
+std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int frames, int warmup, const std::string& jsonPath) {
   std::vector<std::string> args = {"raster", "bench", frame.scene, "--gl-driver", "softpipe", "--threads", std::to_string(threads),
-                                   "--frames", std::to_string(frames), "--warmup", "1", "--no-pin", "--json", jsonPath};
+                                   "--frames", std::to_string(frames), "--warmup", std::to_string(std::min(warmup, 1)),
+                                   "--no-pin", "--json", jsonPath};
   const std::vector<std::string> frameOptions = childFrameOptions(frame);
   args.insert(args.end(), frameOptions.begin(), frameOptions.end());
-  std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
+  if (frame.quiet) args.push_back("--quiet");
+  else std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
   args[0] = "/proc/self/exe";
   if (runChildProcess(args, "the softpipe timing child (raster bench --gl-driver softpipe)") != 0)
     throw std::runtime_error("the softpipe timing child (raster bench --gl-driver softpipe) failed");
@@ -154,11 +157,23 @@ std::string markdownTable(const json& result) {
   return md.str();
 }
 
+// The command that makes these results again, with every option that shapes them: the frame
+// as a child process gets it (a --set time or size as its own option), the rounds, softpipe's.
+std::string commandLine(const TradeoffArgs& args, const Frame& frame, int threads) {
+  std::string line = "raster tradeoff " + args.scene;
+  for (const std::string& option : childFrameOptions(frame)) line += " " + option;
+  line += " --threads " + std::to_string(threads) + " --frames " + std::to_string(args.frames) + " --warmup " +
+          std::to_string(args.warmup);
+  line += args.noSoftpipe ? " --no-softpipe" : " --softpipe-frames " + std::to_string(args.softpipeFrames);
+  return line;
+}
+
 json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const std::string& outFolder) {
   std::vector<Point> points = methodPoints();
-  std::cerr << "tradeoff " << frame.scene << " " << sizeAndTime(frame) << " threads=" << threads << ": "
-            << points.size() << " method sets and llvmpipe, " << args.warmup << " warm-up + " << args.frames
-            << " timed rounds" << std::endl;
+  if (!frame.quiet)
+    std::cerr << "tradeoff " << frame.scene << " " << sizeAndTime(frame) << " threads=" << threads << ": "
+              << points.size() << " method sets and llvmpipe, " << args.warmup << " warm-up + " << args.frames
+              << " timed rounds" << std::endl;
 
   // One stage for every method set of this pipeline, one for llvmpipe.
   Stage ours = makeStage(scenes::makeRasterBackend(threads, false), frame);
@@ -203,12 +218,12 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
   all.push_back(std::move(gl));
   if (!args.noSoftpipe) {
     const std::string jsonPath = (fs::path(outFolder) / ".softpipe-bench.json").string();
-    const auto [softpipeMs, childGlMs] = timeSoftpipe(frame, threads, args.softpipeFrames, jsonPath);
+    const auto [softpipeMs, childGlMs] = timeSoftpipe(frame, threads, args.softpipeFrames, args.warmup, jsonPath);
     fs::remove(jsonPath);
     Point softpipe{"softpipe", "driver", std::nullopt, {}, 0, {}};
     // Carried over through the gl set, the same work in both processes.
     softpipe.medianMs = softpipeMs * (glSetMs / childGlMs);
-    std::cerr << "  softpipe: rendering its final image in a child process ..." << std::endl;
+    if (!frame.quiet) std::cerr << "  softpipe: rendering its final image in a child process ..." << std::endl;
     softpipe.image = renderInChild(frame, "softpipe").targets.back().image;
     all.push_back(std::move(softpipe));
   }
@@ -219,6 +234,7 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
                  {"size", {frame.width, frame.height}},
                  {"threads", threads},
                  {"time", frame.time},
+                 {"sets", frame.sets},
                  {"frames", args.frames},
                  {"points", json::array()}};
   std::vector<double> speed, accuracy;
@@ -264,7 +280,7 @@ void addTradeoffOptions(CLI::App& command, TradeoffArgs& args) {
       ->type_name("N")->capture_default_str();
   command.add_option("--frames", args.frames, "Timed rounds (each: every method set once, each after an llvmpipe frame), 1..1000")
       ->capture_default_str();
-  command.add_option("--warmup", args.warmup, "Untimed rounds first (0..100)")->capture_default_str();
+  command.add_option("--warmup", args.warmup, "Untimed rounds first (0..100; softpipe's timing child takes at most 1)")->capture_default_str();
   command.add_option("--softpipe-frames", args.softpipeFrames, "Timed softpipe frames (1..100)")->capture_default_str();
   command.add_flag("--no-softpipe", args.noSoftpipe, "Leave softpipe out (it is slow)");
   command.add_option("--out", args.out,
@@ -303,9 +319,7 @@ int runTradeoff(const TradeoffArgs& args) {
   pinToCores(threads);
 
   json results = json::array();
-  std::string markdown = "# Speed against accuracy\n\nMade by `raster tradeoff " + args.scene + " --size " + args.size +
-                         " --time " + args.time + " --threads " + std::to_string(threads) + " --frames " +
-                         std::to_string(args.frames) + "`. Speed-up: llvmpipe's median frame time over the point's, each of this "
+  std::string markdown = "# Speed against accuracy\n\nMade by `" + commandLine(args, frames.front(), threads) + "`. Speed-up: llvmpipe's median frame time over the point's, each of this "
                          "pipeline's frames timed right after one of llvmpipe's; "
                          "PSNR and pixel shares on the final image (RGBA8, 8-bit steps); FLIP: its mean LDR-FLIP error "
                          "at 67 pixels per degree (0: no visible difference, 1: the most). `*`: Pareto-optimal.\n\n";

@@ -232,14 +232,21 @@ TEST_SUITE("cli") {
     TempFolder temp;
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
-    const RunResult run = runCli(cwd, "tradeoff hdr --size 64x48 --frames 2 --warmup 0 --softpipe-frames 1 --out t");
+    const RunResult run = runCli(cwd, "tradeoff hdr --size 64x48 --set time=2 --frames 2 --warmup 0 --softpipe-frames 1 --quiet --out t");
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
+    CHECK(run.err.empty());   // --quiet: the softpipe child's progress too
+    // tradeoff.md says how to make it again, the --set time among the options.
+    CHECK(readText(cwd / "t" / "tradeoff.md").find("Made by `raster tradeoff hdr --size 64x48 --time 2 --instances 1000 --threads ") !=
+          std::string::npos);
+    CHECK(readText(cwd / "t" / "tradeoff.md").find("--frames 2 --warmup 0 --softpipe-frames 1`") != std::string::npos);
     for (const char* file : {"tradeoff.json", "tradeoff.md", "tradeoff.png", "tradeoff.svg"})
       CHECK(fs::file_size(cwd / "t" / file) > 100);
     const nlohmann::json result = nlohmann::json::parse(readText(cwd / "t" / "tradeoff.json"));
     CHECK(result["scene"] == "hdr");
     CHECK(result["size"] == nlohmann::json::array({64, 48}));
+    CHECK(result["time"] == 2.0);
+    CHECK(result["sets"] == nlohmann::json::array({"time=2"}));
     std::set<std::string> names;
     for (const nlohmann::json& p : result["points"]) {
       names.insert(p["name"].get<std::string>());

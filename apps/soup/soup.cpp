@@ -27,6 +27,9 @@ constexpr int kMaxTriangleOption = 1000000;   // a million triangles a soup: far
 // Backends cannot free meshes (backends/backend.h), so a fresh pair every this many seeds keeps
 // a long run's memory flat.
 constexpr int kSeedsPerBackend = 64;
+// A run's seeds: a million soups take hours (milliseconds each at 64x64), so a longer range
+// is a typo (1:99999999999999 would never end), and a real search is split into runs.
+constexpr uint64_t kMaxSeedsPerRun = 1000000;
 
 struct Plan {
   bool replay = false;
@@ -55,6 +58,9 @@ Plan validate(const SoupArgs& args) {
   if (!first || !last) throw UsageError("--seeds: '" + args.seeds + "' is not A:B (whole numbers, e.g. 0:99) or a single seed");
   if (*first > *last)
     throw UsageError("--seeds: " + args.seeds + " runs backwards (A:B takes seeds A through B, A <= B)");
+  if (*last - *first >= kMaxSeedsPerRun)
+    throw UsageError("--seeds: " + args.seeds + " is more than " + std::to_string(kMaxSeedsPerRun) +
+                     " seeds (split the range into runs)");
   plan.first = *first;
   plan.last = *last;
   std::tie(plan.width, plan.height) = parseSize("--size", args.size);

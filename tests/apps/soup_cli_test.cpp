@@ -189,6 +189,8 @@ TEST_SUITE("soup") {
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
     expectRefused("soup --seeds 5:2", "--seeds: 5:2 runs backwards", cwd);
+    expectRefused("soup --seeds 1:99999999999999", "is more than 1000000 seeds", cwd);
+    expectRefused("soup --seeds 0:1000000", "is more than 1000000 seeds", cwd);
     expectRefused("soup --seeds x:3", "--seeds: 'x:3' is not A:B", cwd);
     expectRefused("soup --seeds 1:", "--seeds", cwd);
     expectRefused("soup --seeds 0:3 --size 0x0", "--size: 0x0 is out of range", cwd);

@@ -324,6 +324,8 @@ std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
 
 void addTraceOptions(CLI::App& command, TraceArgs& args) {
   addFrameOptions(command, args);
+  // Shared with render and compare, where it works; here the help says it is refused (below).
+  command.get_option("--float-final")->description("Refused: the pixel history follows the window's final image (use render or compare with it)");
   command.add_option("--pixel", args.pixel, "The pixel of the final image, row 0 at the top")->required()->type_name("X,Y");
   command.add_option("--json", args.json, "Also write the trace as JSON here")->type_name("FILE");
   command.add_flag("--no-reference", args.noReference, "Leave out GL's values (no llvmpipe render)");

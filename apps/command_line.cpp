@@ -7,6 +7,7 @@
 #include "apps/command_line.h"
 
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -87,7 +88,11 @@ int run(int argc, char** argv) {
       if (subcommand->parsed()) {
         refuseEmptyValues(*subcommand);
         refuseParameterGivenTwice(*subcommand);
-        return runCommand();
+        const int status = runCommand();
+        // A listing or table that did not reach its file (a full disk: `raster scenes --json >
+        // /dev/full`) is a failure, not a success.
+        if (!std::cout.flush()) throw std::runtime_error("cannot write the standard output");
+        return status;
       }
     return refuse("no command given (commands: " + commandList() + ")");   // require_subcommand(1) stops this first
   } catch (const UsageError& e) {

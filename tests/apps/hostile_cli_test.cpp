@@ -76,6 +76,17 @@ TEST_SUITE("hostile") {
     CHECK(child.out.find("scene: shadow at 20x14, t=2.000") != std::string::npos);
   }
 
+  // `raster methods --json > /dev/full` exited 0: the listing was lost without a word.
+  TEST_CASE("output: a listing that cannot be written is a failure, not a success") {
+    TempFolder temp;
+    for (const char* command : {"scenes", "scenes --json", "methods --json", "views", "params shadow"}) {
+      const RunResult r = runShell(temp.path, std::string("exec \"$RASTER\" ") + command + " > /dev/full");
+      INFO(command << ": " << r.err);
+      CHECK(r.status == 1);
+      CHECK(r.err == "raster: cannot write the standard output\n");
+    }
+  }
+
   // Identical NaN pixels made RMSE and PSNR NaN ("psnr nan").
   TEST_CASE("compare: non-finite pixels are counted apart, and no metric is ever NaN") {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();

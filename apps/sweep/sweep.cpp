@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -26,7 +25,6 @@
 namespace cli {
 namespace {
 
-namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kMaxSteps = 10000;
@@ -263,7 +261,6 @@ int runSweep(const SweepArgs& args) {
               << (1 + methods.size() + (args.noSoftpipe ? 0 : 1)) << " sides; the options are valid\n";
     return 0;
   }
-  fs::create_directories(args.out);
 
   json sweep = {{"scene", base.scene},
                 {"param", range.name},

@@ -113,6 +113,7 @@ std::vector<std::string> sweepSides(const json& sweep) {
 void writeSweep(json sweep, const std::string& folder) {
   const bool shard = sweep.contains("shard");
   if (!shard) sweep["first_failure"] = firstFailures(sweep);
+  fs::create_directories(folder);
   const std::string jsonPath = (fs::path(folder) / "sweep.json").string();
   compare::writeOutputFile(jsonPath, sweep.dump(2) + "\n");
   compare::writeOutputFile((fs::path(folder) / "sweep.md").string(), markdown(sweep));

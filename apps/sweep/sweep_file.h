@@ -24,7 +24,8 @@ ShardSpec parseShard(const std::string& text);
 std::vector<std::string> sweepSides(const nlohmann::json& sweep);
 
 // Writes sweep.json and sweep.md into `folder` (a whole run adds "first_failure" and the
-// chart; a shard neither), and says on stdout what it wrote.
+// chart; a shard neither), and says on stdout what it wrote. The folder is made here, with
+// its first file, so that a run that fails before it (a render, a shard refused) leaves none.
 void writeSweep(nlohmann::json sweep, const std::string& folder);
 
 }  // namespace cli

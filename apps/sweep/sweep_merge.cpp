@@ -116,7 +116,6 @@ int runSweepMerge(const SweepMergeArgs& args) {
   merged["points"] = points;
   checkOutputFolder("--out", args.out);
   checkChartTools(kSweepChartScript);
-  fs::create_directories(args.out);
   writeSweep(std::move(merged), args.out);
   return 0;
 }

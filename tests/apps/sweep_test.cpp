@@ -204,4 +204,11 @@ TEST_SUITE("sweep") {
     CHECK(refused.err.find("part1") != std::string::npos);
     CHECK(!fs::exists(temp.path / "m2"));
   }
+
+  // Its --out folder is made with its first file: a run that fails before writing leaves none.
+  TEST_CASE("sweep: a run that fails as it renders leaves no --out folder") {
+    // 1 MiB passes the checks (16x12 frames) but not GL's first window.
+    expectRefused("sweep shadow --param time=1:2:2 --size 16x12 --methods gl --no-softpipe --max-memory 1M --quiet --out s",
+                  "memory:");
+  }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -19,12 +20,16 @@
 #include "apps/common/sides.h"
 #include "apps/sweep/sweep_file.h"
 #include "compare/metrics.h"
+#include "io/assets.h"
+#include "io/memory_budget.h"
 #include "io/output_file.h"
+#include "scenes/registry.h"
 #include "scenes/scene_params.h"
 
 namespace cli {
 namespace {
 
+namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kMaxSteps = 10000;
@@ -202,6 +207,47 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
           {"failure", failure}};
 }
 
+// Every value's scene, made but not set up: a scene checks its parameters as it is made
+// (pbr: its cascade splits must rise) and reads or draws nothing then, so a value the scene
+// refuses stops the sweep here, not after the values before it rendered, and --check says so.
+void checkSceneAtEveryValue(const std::vector<Frame>& frames, const std::string& param, const std::vector<double>& values) {
+  for (size_t i = 0; i < frames.size(); ++i) {
+    try {
+      scenes::makeScene(frames[i].scene, sceneOptions(frames[i]));
+    } catch (const scenes::SceneError& e) {
+      throw UsageError("--param " + param + "=" + valueText(values[i]) + ": " + e.what());
+    }
+  }
+}
+
+// The files the scene reads (its registry row's assets) are looked for, not read: a missing
+// one stops the sweep here rather than at its first render. What a file holds is checked as
+// it loads (io/assets.h), as for every command.
+void checkAssetsPresent(const Frame& frame) {
+  const scenes::SceneOptions options = sceneOptions(frame);
+  for (const std::string& asset : scenes::sceneEntry(frame.scene).assets) {
+    const std::string path = scenes::assetPath(options, asset);
+    std::error_code error;
+    if (!fs::is_regular_file(path, error))
+      throw scenes::SceneError("asset " + path + ": " + (fs::exists(path, error) ? "not a regular file" : "no such file"));
+  }
+}
+
+// The least memory a value needs: the final images of llvmpipe and of the side scored
+// against it, both held while it is scored (RGBA8, 4 bytes a pixel, reserved as each is read
+// back). What a scene's textures and targets take is counted only as they are made, so a cap
+// above this may still stop a frame as it renders; below it, no frame can.
+void checkMemoryFloor(const std::vector<Frame>& frames) {
+  const Frame* largest = &frames.front();
+  for (const Frame& frame : frames)
+    if (uint64_t(frame.width) * uint64_t(frame.height) > uint64_t(largest->width) * uint64_t(largest->height)) largest = &frame;
+  const uint64_t floor = uint64_t(largest->width) * uint64_t(largest->height) * 4 * 2;
+  if (floor > scenes::memory::cap())
+    throw UsageError("--max-memory: the cap of " + scenes::memory::formatBytes(scenes::memory::cap()) + " is below the " +
+                     scenes::memory::formatBytes(floor) + " that llvmpipe's and one side's final images of a " +
+                     std::to_string(largest->width) + "x" + std::to_string(largest->height) + " frame take at once");
+}
+
 }  // namespace
 
 void addSweepOptions(CLI::App& command, SweepArgs& args) {
@@ -233,7 +279,8 @@ void addSweepOptions(CLI::App& command, SweepArgs& args) {
 
 int runSweep(const SweepArgs& args) {
   // Everything is checked before the first frame: the frame, the range and every value in
-  // it, the method sets, the shard, the output folder and the chart's tools.
+  // it (the scene made at each), the method sets, the shard, the assets, the memory the
+  // final images need, the output folder and the chart's tools.
   const Frame base = validateFrame(args);
   const Range range = parseRange(base.scene, args.param);
   for (const std::string& set : args.sets)
@@ -254,11 +301,16 @@ int runSweep(const SweepArgs& args) {
     frameArgs.quiet = true;   // the sweep's own progress replaces the per-render lines
     frames.push_back(validateFrame(frameArgs));
   }
+  checkSceneAtEveryValue(frames, range.name, values);
+  checkAssetsPresent(base);
+  checkMemoryFloor(frames);
   checkOutputFolder("--out", args.out);
   if (!shard.sharded) checkChartTools(kSweepChartScript);
   if (args.check) {
     std::cout << "sweep " << base.scene << " " << range.name << ": " << values.size() << " values x "
-              << (1 + methods.size() + (args.noSoftpipe ? 0 : 1)) << " sides; the options are valid\n";
+              << (1 + methods.size() + (args.noSoftpipe ? 0 : 1))
+              << " sides; the options, the scene at every value and its assets are valid; the memory cap is checked here "
+                 "against the final images only, against textures and targets as they are made\n";
     return 0;
   }
 

@@ -211,4 +211,22 @@ TEST_SUITE("sweep") {
     expectRefused("sweep shadow --param time=1:2:2 --size 16x12 --methods gl --no-softpipe --max-memory 1M --quiet --out s",
                   "memory:");
   }
+
+  // Everything a run would refuse before its first render, --check refuses too: it renders
+  // nothing, so a cluster runner trusts its exit status before sending the run out.
+  TEST_CASE("sweep --check refuses a value the scene refuses, a missing asset and a cap below the frames") {
+    const std::string small = " --size 16x12 --methods gl --no-softpipe --check --out s";
+    // pbr's cascade splits must rise: 5:20:3 reaches 12.5, above cascade_split2's 10.
+    expectRefused("sweep pbr --param cascade_split1=5:20:3" + small, "cascade_split1=12.5");
+    expectRefused("sweep pbr --param cascade_split2=20:1:3" + small, "cascade_split2=1:");
+    TempFolder temp;
+    fs::create_directory(temp.path / "noassets");
+    expectRefused("sweep deferred --param time=1:2:2 --assets " + shellQuote((temp.path / "noassets").string()) + small,
+                  "concrete_cat_statue.obj");
+    expectRefused("sweep shadow --param time=1:2:2 --max-memory 1K" + small, "--max-memory");
+    const RunResult valid = runCli(temp.path, "sweep pbr --param cascade_split1=0.5:9:3" + small);
+    CAPTURE(valid.err);
+    CHECK(valid.status == 0);
+    CHECK(!fs::exists(temp.path / "s"));
+  }
 }

@@ -43,10 +43,13 @@ std::string markdown(const json& sweep) {
   const std::string size = param == "size" ? std::string("each width at 4:3")
                                            : sweep.at("size")[0].dump() + "x" + sweep.at("size")[1].dump();
   const std::string time = param == "time" ? std::string("each value's time") : "t=" + sixDigits(sweep.at("time"));
+  // The scene parameters it was run with, as typed, so that the table can be made again.
+  std::string sets;
+  for (const json& set : sweep.at("sets")) sets += (sets.empty() ? "" : " ") + std::string("--set ") + set.get<std::string>();
   md << "# Sweep of `" << param << "` in " << sweep.at("scene").get<std::string>() << "\n\nFrom "
      << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
      << (r.at("log").get<bool>() ? " log" : "") << " steps, " << size << ", " << time
-     << ". Each side against llvmpipe; a side fails at a final image below " << sixDigits(sweep.at("threshold_db"))
+     << (sets.empty() ? "" : ", with `" + sets + "`") << ". Each side against llvmpipe; a side fails at a final image below " << sixDigits(sweep.at("threshold_db"))
      << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";

@@ -141,20 +141,22 @@ TEST_SUITE("sweep") {
     CHECK(readText(temp.path / "flipchart.svg").find("mean FLIP") != std::string::npos);
   }
 
-  TEST_CASE("sweep.md's header names the base size and time only where the sweep does not move them") {
+  TEST_CASE("sweep.md's header names the base size and time only where the sweep does not move them, and every --set") {
     TempFolder temp;
     const std::string common = " --methods gl --no-softpipe --threads 1 --quiet";
     // (--size or --time beside a sweep of it is refused: hostile_cli_test.cpp.)
     REQUIRE(runCli(temp.path, "sweep shadow --param size=4:8:2 --time 2" + common + " --out size").status == 0);
     REQUIRE(runCli(temp.path, "sweep shadow --param time=0:1:2 --size 8x6" + common + " --out time").status == 0);
-    REQUIRE(runCli(temp.path, "sweep shadow --param near=0.1:0.2:2 --size 8x6 --time 2" + common + " --out near").status == 0);
+    REQUIRE(runCli(temp.path, "sweep shadow --param near=0.1:0.2:2 --size 8x6 --time 2 --set light_elevation=20 --set offset_scale=2" +
+                              common + " --out near").status == 0);
     const std::string size = readText(temp.path / "size" / "sweep.md");
     const std::string time = readText(temp.path / "time" / "sweep.md");
     const std::string near = readText(temp.path / "near" / "sweep.md");
     CHECK(size.find("in 2 steps, each width at 4:3, t=2. ") != std::string::npos);
     CHECK(size.find("640x480") == std::string::npos);   // the default --size, not rendered at
     CHECK(time.find("in 2 steps, 8x6, each value's time. ") != std::string::npos);
-    CHECK(near.find("in 2 steps, 8x6, t=2. ") != std::string::npos);
+    CHECK(near.find("in 2 steps, 8x6, t=2, with `--set light_elevation=20 --set offset_scale=2`. ") != std::string::npos);
+    CHECK(size.find("--set") == std::string::npos);   // none given
   }
 
   TEST_CASE("sweep-merge: shards in any order equal the unsharded sweep.json; missing, doubled or foreign shards refused") {

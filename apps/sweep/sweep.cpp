@@ -32,15 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kMaxSteps = 10000;
-
-// --param NAME=FROM:TO:STEPS[:log]
-struct Range {
-  std::string name;
-  double from = 0, to = 0;
-  int steps = 1;
-  bool log = false;
-};
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -51,11 +42,11 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
-Range parseRange(const std::string& scene, const std::string& text) {
+SweepRange parseRange(const std::string& scene, const std::string& text) {
   const std::string usage = "--param: '" + text + "' is not NAME=FROM:TO:STEPS[:log] (e.g. near=0.1:0.0001:12:log)";
   const size_t equals = text.find('=');
   if (equals == std::string::npos || equals == 0) throw UsageError(usage);
-  Range range;
+  SweepRange range;
   range.name = text.substr(0, equals);
   const std::vector<std::string> parts = split(text.substr(equals + 1), ':');
   if (parts.size() != 3 && parts.size() != 4) throw UsageError(usage);
@@ -78,30 +69,12 @@ Range parseRange(const std::string& scene, const std::string& text) {
   }
   char* end = nullptr;
   const long steps = std::strtol(parts[2].c_str(), &end, 10);
-  if (parts[2].empty() || *end != '\0' || steps < 1 || steps > kMaxSteps)
-    throw UsageError("--param: STEPS '" + parts[2] + "' is not a whole number in 1.." + std::to_string(kMaxSteps));
+  if (parts[2].empty() || *end != '\0' || steps < 1 || steps > kMaxSweepSteps)
+    throw UsageError("--param: STEPS '" + parts[2] + "' is not a whole number in 1.." + std::to_string(kMaxSweepSteps));
   range.steps = int(steps);
   if (range.log && (range.from <= 0 || range.to <= 0))
     throw UsageError("--param: a log range needs FROM and TO above 0 (got " + parts[0] + " and " + parts[1] + ")");
   return range;
-}
-
-// The values of the range, evenly spaced (or evenly in log), rounded to 6 significant digits
-// (1e-05 rather than 1.0000000000000001e-05: a value a user can type back into --set), the
-// last exactly TO; whole numbers for whole-number parameters; repeats after rounding dropped.
-std::vector<double> rangeValues(const Range& range, bool integer) {
-  std::vector<double> values;
-  for (int i = 0; i < range.steps; ++i) {
-    const double f = range.steps == 1 ? 0.0 : double(i) / double(range.steps - 1);
-    double v = range.log ? range.from * std::pow(range.to / range.from, f) : range.from + (range.to - range.from) * f;
-    char rounded[32];
-    std::snprintf(rounded, sizeof rounded, "%.6g", v);
-    v = std::strtod(rounded, nullptr);
-    if (i == range.steps - 1) v = range.to;
-    if (integer) v = std::round(v);
-    if (values.empty() || values.back() != v) values.push_back(v);
-  }
-  return values;
 }
 
 // 17 significant digits: the same double back, so a shard and the whole run agree.
@@ -183,15 +156,7 @@ json scorePoint(double value, size_t valueIndex, const std::string& name, const 
     }
   }
   const uint64_t nonFinite = nonFinitePixels(side);
-  std::string failure;
-  char text[96];
-  if (nonFinite > 0) {
-    std::snprintf(text, sizeof text, "%llu non-finite pixels", static_cast<unsigned long long>(nonFinite));
-    failure = text;
-  } else if (final.psnr < thresholdDb) {
-    std::snprintf(text, sizeof text, "final %.1f dB < %g dB", final.psnr, thresholdDb);
-    failure = text;
-  }
+  const std::string failure = sweepFailure(nonFinite, final.psnr, thresholdDb);
   return {{"value", value},
           {"value_index", valueIndex},
           {"method", name},
@@ -282,12 +247,12 @@ int runSweep(const SweepArgs& args) {
   // it (the scene made at each), the method sets, the shard, the assets, the memory the
   // final images need, the output folder and the chart's tools.
   const Frame base = validateFrame(args);
-  const Range range = parseRange(base.scene, args.param);
+  const SweepRange range = parseRange(base.scene, args.param);
   for (const std::string& set : args.sets)
     if (set.substr(0, set.find('=')) == range.name)
       throw UsageError("--set " + set + ": " + range.name + " is the swept parameter");
   const bool integer = scenes::findParam(base.scene, range.name).integer;
-  const std::vector<double> values = rangeValues(range, integer);
+  const std::vector<double> values = sweepValues(range, integer);
   const std::vector<MethodSide> methods = parseMethodList(args.methods);
   const ShardSpec shard = parseShard(args.shard);
   char* end = nullptr;

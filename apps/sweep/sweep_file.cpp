@@ -1,6 +1,8 @@
 // sweep.json and its table and chart (sweep_file.h).
 #include "apps/sweep/sweep_file.h"
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -16,8 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-constexpr int kMaxShards = 10000;   // as many as a sweep may have values
 
 // For each side, the first value (in sweep order) at which it fails, or null.
 json firstFailures(const json& sweep) {
@@ -81,6 +81,34 @@ std::string markdown(const json& sweep) {
 
 }  // namespace
 
+std::vector<double> sweepValues(const SweepRange& range, bool integer) {
+  std::vector<double> values;
+  for (int i = 0; i < range.steps; ++i) {
+    const double f = range.steps == 1 ? 0.0 : double(i) / double(range.steps - 1);
+    double v = range.log ? range.from * std::pow(range.to / range.from, f) : range.from + (range.to - range.from) * f;
+    char rounded[32];
+    std::snprintf(rounded, sizeof rounded, "%.6g", v);
+    v = std::strtod(rounded, nullptr);
+    if (i == range.steps - 1) v = range.to;
+    if (integer) v = std::round(v);
+    if (values.empty() || values.back() != v) values.push_back(v);
+  }
+  return values;
+}
+
+std::string sweepFailure(uint64_t nonFinitePixels, double finalPsnrDb, double thresholdDb) {
+  char text[96];
+  if (nonFinitePixels > 0) {
+    std::snprintf(text, sizeof text, "%llu non-finite pixels", static_cast<unsigned long long>(nonFinitePixels));
+    return text;
+  }
+  if (finalPsnrDb < thresholdDb) {
+    std::snprintf(text, sizeof text, "final %.1f dB < %g dB", finalPsnrDb, thresholdDb);
+    return text;
+  }
+  return "";
+}
+
 ShardSpec parseShard(const std::string& text) {
   ShardSpec shard;
   if (text.empty()) return shard;
@@ -96,7 +124,7 @@ ShardSpec parseShard(const std::string& text) {
   const long n = parts.size() == 2 ? std::strtol(parts[1].c_str(), &end2, 10) : 0;
   if (parts.size() != 2 || parts[0].empty() || parts[1].empty() || *end1 != '\0' || *end2 != '\0')
     throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
-  if (n < 1 || n > kMaxShards) throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxShards) + ")");
+  if (n < 1 || n > kMaxSweepSteps) throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxSweepSteps) + ")");
   if (k < 1 || k > n) throw UsageError("--shard: K = " + parts[0] + " is outside 1.." + std::to_string(n));
   shard.index = int(k);
   shard.count = int(n);

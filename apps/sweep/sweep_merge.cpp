@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <ios>
 #include <map>
 #include <set>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,99 @@ namespace cli {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+namespace {
+
+// What a field of a shard's sweep.json holds, as `raster sweep` writes it.
+enum class Kind { Text, Number, Count, Flag, List, Object };
+
+bool holds(const json& value, Kind kind) {
+  switch (kind) {
+    case Kind::Text: return value.is_string();
+    case Kind::Number: return value.is_number();
+    case Kind::Count: return value.is_number_unsigned();
+    case Kind::Flag: return value.is_boolean();
+    case Kind::List: return value.is_array();
+    case Kind::Object: return value.is_object();
+  }
+  return false;
+}
+
+std::string kindName(Kind kind) {
+  switch (kind) {
+    case Kind::Text: return "a string";
+    case Kind::Number: return "a number";
+    case Kind::Count: return "a whole number, 0 or more";
+    case Kind::Flag: return "true or false";
+    case Kind::List: return "a list";
+    case Kind::Object: return "an object";
+  }
+  return "";
+}
+
+// A field's JSON as the error quotes it: at most a line's worth (a field may hold a list).
+std::string quoted(const json& value) {
+  const std::string text = value.dump();
+  return text.size() <= 40 ? text : text.substr(0, 37) + "...";
+}
+
+// The field `key` of `object`, which `where` names (the file, and the point); UsageError
+// unless it is there and holds `kind` (or null, where `nullable`).
+const json& field(const json& object, const std::string& key, Kind kind, const std::string& where, bool nullable = false) {
+  const auto found = object.find(key);
+  if (found == object.end()) throw UsageError(where + ": \"" + key + "\" is missing");
+  if (!holds(*found, kind) && !(nullable && found->is_null()))
+    throw UsageError(where + ": \"" + key + "\" is " + quoted(*found) + ", not " + kindName(kind) + (nullable ? " or null" : ""));
+  return *found;
+}
+
+// field() for a list, each of whose items holds `kind`.
+const json& listOf(const json& object, const std::string& key, Kind kind, const std::string& where) {
+  const json& list = field(object, key, Kind::List, where);
+  for (size_t i = 0; i < list.size(); ++i)
+    if (!holds(list[i], kind))
+      throw UsageError(where + ": \"" + key + "\"[" + std::to_string(i) + "] is " + quoted(list[i]) + ", not " + kindName(kind));
+  return list;
+}
+
+// The header fields the merge, sweep.md and the chart read (its "points" too, as a list of
+// objects), checked as `raster sweep` writes them: an edited shard is refused naming the
+// field, not merged or thrown from the JSON library.
+void checkShardHeader(const std::string& path, const json& shard) {
+  for (const char* key : {"scene", "param", "shard"}) field(shard, key, Kind::Text, path);
+  const json& range = field(shard, "range", Kind::Object, path);
+  for (const char* key : {"from", "to"}) field(range, key, Kind::Number, path + ": \"range\"");
+  field(range, "steps", Kind::Count, path + ": \"range\"");
+  field(range, "log", Kind::Flag, path + ": \"range\"");
+  if (listOf(shard, "size", Kind::Count, path).size() != 2) throw UsageError(path + ": \"size\" is not [width, height]");
+  field(shard, "time", Kind::Number, path);
+  field(shard, "instances", Kind::Count, path);
+  listOf(shard, "sets", Kind::Text, path);
+  field(shard, "threshold_db", Kind::Number, path);
+  listOf(shard, "methods", Kind::Text, path);
+  field(shard, "softpipe", Kind::Flag, path);
+  listOf(shard, "shard_values", Kind::Count, path);
+  listOf(shard, "points", Kind::Object, path);
+}
+
+// A point's fields, as scorePoint (sweep.cpp) writes them.
+void checkPointFields(const std::string& where, const json& point) {
+  field(point, "value", Kind::Number, where);
+  field(point, "value_index", Kind::Count, where);
+  field(point, "method", Kind::Text, where);
+  field(point, "identical_to_llvmpipe", Kind::Flag, where);
+  field(point, "psnr_vs_llvmpipe_db", Kind::Number, where, true);
+  if (point.contains("flip_vs_llvmpipe")) field(point, "flip_vs_llvmpipe", Kind::Number, where, true);   // absent from sweeps before it
+  field(point, "share_over1_vs_llvmpipe", Kind::Number, where);
+  field(point, "max_diff_vs_llvmpipe", Kind::Number, where);
+  field(point, "nonfinite_pixels", Kind::Count, where);
+  field(point, "worst_target", Kind::Text, where, true);
+  field(point, "worst_target_psnr_db", Kind::Number, where, true);
+  field(point, "fails", Kind::Flag, where);
+  field(point, "failure", Kind::Text, where);
+}
+
+}  // namespace
 
 void addSweepMergeOptions(CLI::App& command, SweepMergeArgs& args) {
   command.add_option("shards", args.shards, "The shards' --out folders")->required()->type_name("DIR...");
@@ -39,6 +134,9 @@ int runSweepMerge(const SweepMergeArgs& args) {
   size_t valueCount = 0;
   for (const std::string& folder : args.shards) {
     const std::string path = (fs::path(folder) / "sweep.json").string();
+    std::error_code error;
+    if (fs::exists(path, error) && !fs::is_regular_file(path, error))
+      throw UsageError(path + ": not a file (is " + folder + " a sweep --shard folder?)");
     std::ifstream in(path);
     if (!in) throw UsageError(path + ": cannot be read (is " + folder + " a sweep --shard folder?)");
     json shard;
@@ -46,9 +144,12 @@ int runSweepMerge(const SweepMergeArgs& args) {
       shard = json::parse(in);
     } catch (const json::exception& e) {
       throw UsageError(path + ": not valid JSON (" + e.what() + ")");
+    } catch (const std::ios_base::failure& e) {   // a read error: the parser reads the file's buffer itself
+      throw UsageError(path + ": cannot be read (" + std::string(e.what()) + ")");
     }
     if (!shard.is_object() || !shard.contains("shard") || !shard.contains("points"))
       throw UsageError(path + ": not the sweep.json of a shard (no \"shard\" field)");
+    checkShardHeader(path, shard);
     ShardSpec spec;
     try {
       spec = parseShard(shard.at("shard").get<std::string>());
@@ -80,9 +181,11 @@ int runSweepMerge(const SweepMergeArgs& args) {
     // Its points are exactly its values times the sides: none lost, none extra.
     const std::vector<std::string> order = sweepSides(merged);
     std::set<std::pair<size_t, std::string>> expected, found;
-    for (const json& v : shard.value("shard_values", json::array()))
+    for (const json& v : shard.at("shard_values"))
       for (const std::string& side : order) expected.insert({v.get<size_t>(), side});
-    for (const json& p : shard.at("points")) {
+    for (size_t n = 0; n < shard.at("points").size(); ++n) {
+      const json& p = shard.at("points")[n];
+      checkPointFields(path + ": point " + std::to_string(n), p);
       if (!found.insert({p.at("value_index").get<size_t>(), p.at("method").get<std::string>()}).second)
         throw UsageError(path + ": holds value " + p.at("value").dump() + " of " + p.at("method").get<std::string>() + " twice");
       merged["points"].push_back(p);
@@ -90,7 +193,7 @@ int runSweepMerge(const SweepMergeArgs& args) {
     if (found != expected)
       throw UsageError(path + ": its points are not its shard_values times the sides " +
                        "(an interrupted or edited shard; run that shard again)");
-    valueCount += shard.value("shard_values", json::array()).size();
+    valueCount += shard.at("shard_values").size();
   }
   std::string missing;
   for (int k = 1; k <= count; ++k)

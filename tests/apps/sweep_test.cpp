@@ -231,4 +231,55 @@ TEST_SUITE("sweep") {
     CHECK(valid.status == 0);
     CHECK(!fs::exists(temp.path / "s"));
   }
+
+  // A shard's sweep.json is read back from disk, where anyone may have edited it: each field
+  // the merge and sweep.md read is checked against what `raster sweep` writes, and a wrong
+  // one is refused naming the file and the field, never merged or thrown from the JSON
+  // library.
+  TEST_CASE("sweep-merge: a shard's fields of the wrong type are refused, naming the file and the field") {
+    TempFolder temp;
+    REQUIRE(runCli(temp.path, "sweep shadow --param light_elevation=10:70:3 --size 16x12 --methods gl --no-softpipe "
+                              "--set near=0.2 --quiet --shard 1/1 --out shard").status == 0);
+    const json shard = json::parse(readText(temp.path / "shard" / "sweep.json"));
+    REQUIRE(shard["points"].size() == 3 * 2);
+    CHECK(shard["points"][3]["value"] == 40.0);   // the second value's llvmpipe row
+
+    const RunResult merged = runCli(temp.path, "sweep-merge shard --out merged");
+    CAPTURE(merged.err);
+    REQUIRE(merged.status == 0);
+
+    const auto expectEditRefused = [&](const std::function<void(json&)>& edit, const std::string& mentions) {
+      json edited = shard;
+      edit(edited);
+      fs::create_directories(temp.path / "edited");
+      {
+        std::ofstream out(temp.path / "edited" / "sweep.json");
+        out << edited.dump(2);
+      }
+      const RunResult refused = runCli(temp.path, "sweep-merge edited --out m");
+      INFO("mentions " << mentions << "\nstderr: " << refused.err);
+      CHECK(refused.status == 2);
+      CHECK(refused.err.rfind("raster: edited/sweep.json: ", 0) == 0);
+      CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+      CHECK(refused.err.find(mentions) != std::string::npos);
+      CHECK(!fs::exists(temp.path / "m"));
+    };
+    // Types.
+    expectEditRefused([](json& s) { s["points"] = "x"; }, "\"points\"");
+    expectEditRefused([](json& s) { s["points"][0]["value_index"] = "a"; }, "\"value_index\"");
+    expectEditRefused([](json& s) { s["points"][1]["psnr_vs_llvmpipe_db"] = "abc"; }, "\"psnr_vs_llvmpipe_db\"");
+    expectEditRefused([](json& s) { s["points"][0]["fails"] = "yes"; }, "\"fails\"");
+    expectEditRefused([](json& s) { s["points"][0] = json::object(); }, "point 0");
+    expectEditRefused([](json& s) { s["range"]["steps"] = -3; }, "\"steps\"");
+    expectEditRefused([](json& s) { s["softpipe"] = "no"; }, "\"softpipe\"");
+    expectEditRefused([](json& s) { s["points"][1]["nonfinite_pixels"] = -1; }, "\"nonfinite_pixels\"");   // a count
+    // A folder where the shard's sweep.json should be.
+    fs::remove(temp.path / "edited" / "sweep.json");
+    fs::create_directory(temp.path / "edited" / "sweep.json");
+    const RunResult folder = runCli(temp.path, "sweep-merge edited --out m");
+    CAPTURE(folder.err);
+    CHECK(folder.status == 2);
+    CHECK(folder.err.find("edited/sweep.json") != std::string::npos);
+    CHECK(!fs::exists(temp.path / "m"));
+  }
 }

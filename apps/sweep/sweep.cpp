@@ -291,9 +291,7 @@ int runSweep(const SweepArgs& args) {
                 {"softpipe", !args.noSoftpipe},
                 {"points", json::array()}};
   for (const MethodSide& m : methods) sweep["methods"].push_back(m.name);
-  std::vector<size_t> mine;
-  for (size_t i = 0; i < values.size(); ++i)
-    if (int(i % size_t(shard.count)) == shard.index - 1) mine.push_back(i);
+  const std::vector<size_t> mine = shardValueIndexes(shard, values.size());
   if (shard.sharded) {
     sweep["shard"] = std::to_string(shard.index) + "/" + std::to_string(shard.count);
     sweep["shard_values"] = mine;

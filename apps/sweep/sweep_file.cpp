@@ -132,6 +132,12 @@ ShardSpec parseShard(const std::string& text) {
   return shard;
 }
 
+std::vector<size_t> shardValueIndexes(const ShardSpec& shard, size_t valueCount) {
+  std::vector<size_t> indexes;
+  for (size_t i = size_t(shard.index - 1); i < valueCount; i += size_t(shard.count)) indexes.push_back(i);
+  return indexes;
+}
+
 // The sides of every value, in the order their points are written.
 std::vector<std::string> sweepSides(const json& sweep) {
   std::vector<std::string> order = {"llvmpipe"};

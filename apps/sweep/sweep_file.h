@@ -39,6 +39,8 @@ struct ShardSpec {
   bool sharded = false;
 };
 ShardSpec parseShard(const std::string& text);
+// The indexes of the values that shard renders, of `valueCount`: i with i % N == K - 1.
+std::vector<size_t> shardValueIndexes(const ShardSpec& shard, size_t valueCount);
 
 // The sides of every value, in the order their points are written: llvmpipe, the method
 // sets, softpipe.

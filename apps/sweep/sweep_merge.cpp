@@ -1,7 +1,10 @@
 // `raster sweep-merge`: the shards of a sweep joined into the sweep.json an unsharded run
 // writes, byte for byte, after checking that they belong together, are all there, and hold
-// each point exactly once (sweep.h).
+// each point exactly once, each field as `raster sweep` writes it: a value the range gives,
+// flags its numbers give (sweep.h).
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <ios>
@@ -14,6 +17,8 @@
 #include "apps/common/charts.h"
 #include "apps/sweep/sweep.h"
 #include "apps/sweep/sweep_file.h"
+#include "scenes/scene.h"
+#include "scenes/scene_params.h"
 
 namespace cli {
 
@@ -94,6 +99,32 @@ void checkShardHeader(const std::string& path, const json& shard) {
   listOf(shard, "points", Kind::Object, path);
 }
 
+// The values of a shard's range (its header checked), as `raster sweep` computes them: the
+// values its points and shard_values must hold.
+std::vector<double> shardRangeValues(const std::string& path, const json& shard) {
+  const json& r = shard.at("range");
+  SweepRange range;
+  range.name = shard.at("param").get<std::string>();
+  range.from = r.at("from").get<double>();
+  range.to = r.at("to").get<double>();
+  range.log = r.at("log").get<bool>();
+  const uint64_t steps = r.at("steps").get<uint64_t>();
+  if (steps < 1 || steps > uint64_t(kMaxSweepSteps))
+    throw UsageError(path + ": \"range\": \"steps\" is " + std::to_string(steps) + ", not 1.." + std::to_string(kMaxSweepSteps));
+  range.steps = int(steps);
+  if (range.log && (range.from <= 0 || range.to <= 0))
+    throw UsageError(path + ": \"range\" is log, but its \"from\" or \"to\" is not above 0");
+  bool integer = false;
+  try {
+    integer = scenes::findParam(shard.at("scene").get<std::string>(), range.name).integer;
+  } catch (const scenes::ParamError& e) {
+    throw UsageError(path + ": " + e.what());
+  } catch (const scenes::SceneError& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+  return sweepValues(range, integer);
+}
+
 // A point's fields, as scorePoint (sweep.cpp) writes them.
 void checkPointFields(const std::string& where, const json& point) {
   field(point, "value", Kind::Number, where);
@@ -109,6 +140,31 @@ void checkPointFields(const std::string& where, const json& point) {
   field(point, "worst_target_psnr_db", Kind::Number, where, true);
   field(point, "fails", Kind::Flag, where);
   field(point, "failure", Kind::Text, where);
+}
+
+// A point against its shard's header: its value is the one its index has in the range, its
+// numbers are not negative, and "fails" and "failure" are what its numbers give
+// (sweepFailure), so a point edited, or copied from another sweep, is refused, not merged.
+void checkPointValues(const std::string& where, const json& point, const std::vector<double>& values, double thresholdDb) {
+  const uint64_t index = point.at("value_index").get<uint64_t>();
+  if (index >= values.size())
+    throw UsageError(where + ": \"value_index\" is " + std::to_string(index) + ", outside 0.." +
+                     std::to_string(values.size() - 1) + " (its range's " + std::to_string(values.size()) + " values)");
+  if (point.at("value").get<double>() != values[index])
+    throw UsageError(where + ": \"value\" is " + quoted(point.at("value")) + ", not " + json(values[index]).dump() +
+                     ", the value at index " + std::to_string(index) + " of its range");
+  for (const char* key : {"share_over1_vs_llvmpipe", "max_diff_vs_llvmpipe"})
+    if (point.at(key).get<double>() < 0) throw UsageError(where + ": \"" + key + "\" is " + quoted(point.at(key)) + ", below 0");
+  // null is +inf: identical final images (they are RGBA8, whose PSNR is never NaN or -inf).
+  const json& psnr = point.at("psnr_vs_llvmpipe_db");
+  const std::string failure =
+      sweepFailure(point.at("nonfinite_pixels").get<uint64_t>(), psnr.is_null() ? HUGE_VAL : psnr.get<double>(), thresholdDb);
+  const bool fails = point.at("fails").get<bool>();
+  if (fails == failure.empty())
+    throw UsageError(where + ": \"fails\" is " + (fails ? "true" : "false") + ", but its numbers say " +
+                     (failure.empty() ? std::string("it passes") : "it fails (" + failure + ")"));
+  if (point.at("failure") != failure)
+    throw UsageError(where + ": \"failure\" is " + quoted(point.at("failure")) + ", but its numbers say " + json(failure).dump());
 }
 
 }  // namespace
@@ -131,7 +187,6 @@ int runSweepMerge(const SweepMergeArgs& args) {
   json merged;
   std::map<int, std::string> seen;   // shard index -> folder
   int count = 0;
-  size_t valueCount = 0;
   for (const std::string& folder : args.shards) {
     const std::string path = (fs::path(folder) / "sweep.json").string();
     std::error_code error;
@@ -178,14 +233,23 @@ int runSweepMerge(const SweepMergeArgs& args) {
       throw UsageError(path + ": shard " + std::to_string(spec.index) + "/" + std::to_string(count) + " is also in " +
                        seen.at(spec.index));
     seen[spec.index] = folder;
-    // Its points are exactly its values times the sides: none lost, none extra.
+    // Its shard_values are its shard's values of the range, and its points exactly those
+    // values times the sides: none lost, none extra.
+    const std::vector<double> values = shardRangeValues(path, shard);
+    const std::vector<size_t> own = shardValueIndexes(spec, values.size());
+    if (shard.at("shard_values") != json(own))
+      throw UsageError(path + ": \"shard_values\" is " + quoted(shard.at("shard_values")) + ", not " + quoted(json(own)) +
+                       ", the values of shard " + shard.at("shard").get<std::string>() + " of its range's " +
+                       std::to_string(values.size()));
     const std::vector<std::string> order = sweepSides(merged);
     std::set<std::pair<size_t, std::string>> expected, found;
-    for (const json& v : shard.at("shard_values"))
-      for (const std::string& side : order) expected.insert({v.get<size_t>(), side});
+    for (size_t v : own)
+      for (const std::string& side : order) expected.insert({v, side});
     for (size_t n = 0; n < shard.at("points").size(); ++n) {
       const json& p = shard.at("points")[n];
-      checkPointFields(path + ": point " + std::to_string(n), p);
+      const std::string where = path + ": point " + std::to_string(n);
+      checkPointFields(where, p);
+      checkPointValues(where + " (" + p.at("method").get<std::string>() + ")", p, values, shard.at("threshold_db").get<double>());
       if (!found.insert({p.at("value_index").get<size_t>(), p.at("method").get<std::string>()}).second)
         throw UsageError(path + ": holds value " + p.at("value").dump() + " of " + p.at("method").get<std::string>() + " twice");
       merged["points"].push_back(p);
@@ -193,14 +257,15 @@ int runSweepMerge(const SweepMergeArgs& args) {
     if (found != expected)
       throw UsageError(path + ": its points are not its shard_values times the sides " +
                        "(an interrupted or edited shard; run that shard again)");
-    valueCount += shard.at("shard_values").size();
   }
   std::string missing;
   for (int k = 1; k <= count; ++k)
     if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(count);
   if (!missing.empty()) throw UsageError("shards missing: " + missing);
 
-  // The unsharded order: value by value, each value's sides in the run's order.
+  // The unsharded order: value by value, each value's sides in the run's order. Each point
+  // is there once: each shard holds exactly its own values' points, and each shard is there
+  // once, with the same range.
   const std::vector<std::string> order = sweepSides(merged);
   auto rank = [&](const json& p) {
     const auto at = std::find(order.begin(), order.end(), p.at("method").get<std::string>());
@@ -208,14 +273,6 @@ int runSweepMerge(const SweepMergeArgs& args) {
   };
   std::vector<json> points = merged.at("points").get<std::vector<json>>();
   std::stable_sort(points.begin(), points.end(), [&](const json& a, const json& b) { return rank(a) < rank(b); });
-  for (size_t i = 1; i < points.size(); ++i)
-    if (rank(points[i]) == rank(points[i - 1]))
-      throw UsageError("the shards hold value " + points[i].at("value").dump() + " of " +
-                       points[i].at("method").get<std::string>() + " twice");
-  for (size_t i = 0; i < points.size(); ++i)
-    if (rank(points[i]).first >= valueCount)
-      throw UsageError("the shards' values are not 0.." + std::to_string(valueCount) + " (value index " +
-                       std::to_string(rank(points[i]).first) + ")");
   merged["points"] = points;
   checkOutputFolder("--out", args.out);
   checkChartTools(kSweepChartScript);

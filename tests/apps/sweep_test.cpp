@@ -236,7 +236,7 @@ TEST_SUITE("sweep") {
   // the merge and sweep.md read is checked against what `raster sweep` writes, and a wrong
   // one is refused naming the file and the field, never merged or thrown from the JSON
   // library.
-  TEST_CASE("sweep-merge: a shard's fields of the wrong type are refused, naming the file and the field") {
+  TEST_CASE("sweep-merge: a shard's wrong types, values outside its range and flags its numbers contradict are refused") {
     TempFolder temp;
     REQUIRE(runCli(temp.path, "sweep shadow --param light_elevation=10:70:3 --size 16x12 --methods gl --no-softpipe "
                               "--set near=0.2 --quiet --shard 1/1 --out shard").status == 0);
@@ -273,6 +273,33 @@ TEST_SUITE("sweep") {
     expectEditRefused([](json& s) { s["range"]["steps"] = -3; }, "\"steps\"");
     expectEditRefused([](json& s) { s["softpipe"] = "no"; }, "\"softpipe\"");
     expectEditRefused([](json& s) { s["points"][1]["nonfinite_pixels"] = -1; }, "\"nonfinite_pixels\"");   // a count
+    // Values against the shard's own header.
+    expectEditRefused([](json& s) { s["points"][3]["value"] = 1000; }, "\"value\"");
+    expectEditRefused([](json& s) {
+      s["points"][2]["value_index"] = 7;
+      s["points"][3]["value_index"] = 7;
+    }, "\"value_index\"");
+    expectEditRefused([](json& s) {
+      s["points"][1]["identical_to_llvmpipe"] = false;
+      s["points"][1]["psnr_vs_llvmpipe_db"] = -5;
+    }, "\"fails\"");
+    expectEditRefused([](json& s) { s["shard_values"] = json::array({0, 1, 2, 3}); }, "\"shard_values\"");
+
+    // Points that fail, by PSNR and by non-finite pixels, agree with their flags: a sharded
+    // failing sweep merges into the unsharded one, byte for byte.
+    const std::string failing = "sweep hdr --param intensity=1:1e6:3:log --size 32x24 --methods gl,half=rne --no-softpipe "
+                                "--threshold 65 --quiet";
+    REQUIRE(runCli(temp.path, failing + " --out whole").status == 0);
+    REQUIRE(runCli(temp.path, failing + " --shard 1/2 --out half1").status == 0);
+    REQUIRE(runCli(temp.path, failing + " --shard 2/2 --out half2").status == 0);
+    const RunResult failingMerged = runCli(temp.path, "sweep-merge half2 half1 --out failing");
+    CAPTURE(failingMerged.err);
+    REQUIRE(failingMerged.status == 0);
+    const std::string whole = readText(temp.path / "whole" / "sweep.json");
+    CHECK(readText(temp.path / "failing" / "sweep.json") == whole);
+    CHECK(whole.find(" dB < 65 dB") != std::string::npos);
+    CHECK(whole.find("non-finite pixels") != std::string::npos);
+
     // A folder where the shard's sweep.json should be.
     fs::remove(temp.path / "edited" / "sweep.json");
     fs::create_directory(temp.path / "edited" / "sweep.json");

@@ -32,7 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   std::stringstream in(text);
@@ -203,10 +202,11 @@ void checkAssetsPresent(const Frame& frame) {
 // back). What a scene's textures and targets take is counted only as they are made, so a cap
 // above this may still stop a frame as it renders; below it, no frame can.
 void checkMemoryFloor(const std::vector<Frame>& frames) {
+  auto pixels = [](const Frame& frame) { return uint64_t(frame.width) * uint64_t(frame.height); };
   const Frame* largest = &frames.front();
   for (const Frame& frame : frames)
-    if (uint64_t(frame.width) * uint64_t(frame.height) > uint64_t(largest->width) * uint64_t(largest->height)) largest = &frame;
-  const uint64_t floor = uint64_t(largest->width) * uint64_t(largest->height) * 4 * 2;
+    if (pixels(frame) > pixels(*largest)) largest = &frame;
+  const uint64_t floor = pixels(*largest) * 4 * 2;
   if (floor > scenes::memory::cap())
     throw UsageError("--max-memory: the cap of " + scenes::memory::formatBytes(scenes::memory::cap()) + " is below the " +
                      scenes::memory::formatBytes(floor) + " that llvmpipe's and one side's final images of a " +

@@ -45,12 +45,12 @@ std::string markdown(const json& sweep) {
   const std::string time = param == "time" ? std::string("each value's time") : "t=" + sixDigits(sweep.at("time"));
   // The scene parameters it was run with, as typed, so that the table can be made again.
   std::string sets;
-  for (const json& set : sweep.at("sets")) sets += (sets.empty() ? "" : " ") + std::string("--set ") + set.get<std::string>();
+  for (const json& set : sweep.at("sets")) sets += std::string(sets.empty() ? "" : " ") + "--set " + set.get<std::string>();
   md << "# Sweep of `" << param << "` in " << sweep.at("scene").get<std::string>() << "\n\nFrom "
      << sixDigits(r.at("from")) << " to " << sixDigits(r.at("to")) << " in " << r.at("steps")
      << (r.at("log").get<bool>() ? " log" : "") << " steps, " << size << ", " << time
-     << (sets.empty() ? "" : ", with `" + sets + "`") << ". Each side against llvmpipe; a side fails at a final image below " << sixDigits(sweep.at("threshold_db"))
-     << " dB or any non-finite pixel.\n\n";
+     << (sets.empty() ? "" : ", with `" + sets + "`") << ". Each side against llvmpipe; a side fails at a final image below "
+     << sixDigits(sweep.at("threshold_db")) << " dB or any non-finite pixel.\n\n";
   if (sweep.contains("first_failure")) {
     md << "| side | first failing value |\n|---|---|\n";
     for (const auto& [side, value] : sweep.at("first_failure").items())
@@ -124,7 +124,8 @@ ShardSpec parseShard(const std::string& text) {
   const long n = parts.size() == 2 ? std::strtol(parts[1].c_str(), &end2, 10) : 0;
   if (parts.size() != 2 || parts[0].empty() || parts[1].empty() || *end1 != '\0' || *end2 != '\0')
     throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
-  if (n < 1 || n > kMaxSweepSteps) throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxSweepSteps) + ")");
+  if (n < 1 || n > kMaxSweepSteps)
+    throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxSweepSteps) + ")");
   if (k < 1 || k > n) throw UsageError("--shard: K = " + parts[0] + " is outside 1.." + std::to_string(n));
   shard.index = int(k);
   shard.count = int(n);

@@ -66,7 +66,8 @@ const json& field(const json& object, const std::string& key, Kind kind, const s
   const auto found = object.find(key);
   if (found == object.end()) throw UsageError(where + ": \"" + key + "\" is missing");
   if (!holds(*found, kind) && !(nullable && found->is_null()))
-    throw UsageError(where + ": \"" + key + "\" is " + quoted(*found) + ", not " + kindName(kind) + (nullable ? " or null" : ""));
+    throw UsageError(where + ": \"" + key + "\" is " + quoted(*found) + ", not " + kindName(kind) +
+                     (nullable ? " or null" : ""));
   return *found;
 }
 
@@ -75,7 +76,8 @@ const json& listOf(const json& object, const std::string& key, Kind kind, const 
   const json& list = field(object, key, Kind::List, where);
   for (size_t i = 0; i < list.size(); ++i)
     if (!holds(list[i], kind))
-      throw UsageError(where + ": \"" + key + "\"[" + std::to_string(i) + "] is " + quoted(list[i]) + ", not " + kindName(kind));
+      throw UsageError(where + ": \"" + key + "\"[" + std::to_string(i) + "] is " + quoted(list[i]) + ", not " +
+                       kindName(kind));
   return list;
 }
 
@@ -110,7 +112,8 @@ std::vector<double> shardRangeValues(const std::string& path, const json& shard)
   range.log = r.at("log").get<bool>();
   const uint64_t steps = r.at("steps").get<uint64_t>();
   if (steps < 1 || steps > uint64_t(kMaxSweepSteps))
-    throw UsageError(path + ": \"range\": \"steps\" is " + std::to_string(steps) + ", not 1.." + std::to_string(kMaxSweepSteps));
+    throw UsageError(path + ": \"range\": \"steps\" is " + std::to_string(steps) + ", not 1.." +
+                     std::to_string(kMaxSweepSteps));
   range.steps = int(steps);
   if (range.log && (range.from <= 0 || range.to <= 0))
     throw UsageError(path + ": \"range\" is log, but its \"from\" or \"to\" is not above 0");
@@ -132,7 +135,8 @@ void checkPointFields(const std::string& where, const json& point) {
   field(point, "method", Kind::Text, where);
   field(point, "identical_to_llvmpipe", Kind::Flag, where);
   field(point, "psnr_vs_llvmpipe_db", Kind::Number, where, true);
-  if (point.contains("flip_vs_llvmpipe")) field(point, "flip_vs_llvmpipe", Kind::Number, where, true);   // absent from sweeps before it
+  if (point.contains("flip_vs_llvmpipe"))   // absent from sweeps before it
+    field(point, "flip_vs_llvmpipe", Kind::Number, where, true);
   field(point, "share_over1_vs_llvmpipe", Kind::Number, where);
   field(point, "max_diff_vs_llvmpipe", Kind::Number, where);
   field(point, "nonfinite_pixels", Kind::Count, where);
@@ -154,17 +158,19 @@ void checkPointValues(const std::string& where, const json& point, const std::ve
     throw UsageError(where + ": \"value\" is " + quoted(point.at("value")) + ", not " + json(values[index]).dump() +
                      ", the value at index " + std::to_string(index) + " of its range");
   for (const char* key : {"share_over1_vs_llvmpipe", "max_diff_vs_llvmpipe"})
-    if (point.at(key).get<double>() < 0) throw UsageError(where + ": \"" + key + "\" is " + quoted(point.at(key)) + ", below 0");
-  // null is +inf: identical final images (they are RGBA8, whose PSNR is never NaN or -inf).
+    if (point.at(key).get<double>() < 0)
+      throw UsageError(where + ": \"" + key + "\" is " + quoted(point.at(key)) + ", below 0");
+  // null is +inf, identical final images: a sweep's final images are RGBA8, whose PSNR is never NaN or -inf.
   const json& psnr = point.at("psnr_vs_llvmpipe_db");
-  const std::string failure =
-      sweepFailure(point.at("nonfinite_pixels").get<uint64_t>(), psnr.is_null() ? HUGE_VAL : psnr.get<double>(), thresholdDb);
+  const double psnrDb = psnr.is_null() ? HUGE_VAL : psnr.get<double>();
+  const std::string failure = sweepFailure(point.at("nonfinite_pixels").get<uint64_t>(), psnrDb, thresholdDb);
   const bool fails = point.at("fails").get<bool>();
   if (fails == failure.empty())
     throw UsageError(where + ": \"fails\" is " + (fails ? "true" : "false") + ", but its numbers say " +
                      (failure.empty() ? std::string("it passes") : "it fails (" + failure + ")"));
   if (point.at("failure") != failure)
-    throw UsageError(where + ": \"failure\" is " + quoted(point.at("failure")) + ", but its numbers say " + json(failure).dump());
+    throw UsageError(where + ": \"failure\" is " + quoted(point.at("failure")) + ", but its numbers say " +
+                     json(failure).dump());
 }
 
 }  // namespace
@@ -249,7 +255,8 @@ int runSweepMerge(const SweepMergeArgs& args) {
       const json& p = shard.at("points")[n];
       const std::string where = path + ": point " + std::to_string(n);
       checkPointFields(where, p);
-      checkPointValues(where + " (" + p.at("method").get<std::string>() + ")", p, values, shard.at("threshold_db").get<double>());
+      checkPointValues(where + " (" + p.at("method").get<std::string>() + ")", p, values,
+                       shard.at("threshold_db").get<double>());
       if (!found.insert({p.at("value_index").get<size_t>(), p.at("method").get<std::string>()}).second)
         throw UsageError(path + ": holds value " + p.at("value").dump() + " of " + p.at("method").get<std::string>() + " twice");
       merged["points"].push_back(p);

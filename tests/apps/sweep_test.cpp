@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <functional>
 #include <set>
 #include <string>
 
@@ -147,8 +149,8 @@ TEST_SUITE("sweep") {
     // (--size or --time beside a sweep of it is refused: hostile_cli_test.cpp.)
     REQUIRE(runCli(temp.path, "sweep shadow --param size=4:8:2 --time 2" + common + " --out size").status == 0);
     REQUIRE(runCli(temp.path, "sweep shadow --param time=0:1:2 --size 8x6" + common + " --out time").status == 0);
-    REQUIRE(runCli(temp.path, "sweep shadow --param near=0.1:0.2:2 --size 8x6 --time 2 --set light_elevation=20 --set offset_scale=2" +
-                              common + " --out near").status == 0);
+    REQUIRE(runCli(temp.path, "sweep shadow --param near=0.1:0.2:2 --size 8x6 --time 2 --set light_elevation=20 "
+                              "--set offset_scale=2" + common + " --out near").status == 0);
     const std::string size = readText(temp.path / "size" / "sweep.md");
     const std::string time = readText(temp.path / "time" / "sweep.md");
     const std::string near = readText(temp.path / "near" / "sweep.md");

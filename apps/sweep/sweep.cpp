@@ -255,10 +255,7 @@ int runSweep(const SweepArgs& args) {
   const std::vector<double> values = sweepValues(range, integer);
   const std::vector<MethodSide> methods = parseMethodList(args.methods);
   const ShardSpec shard = parseShard(args.shard);
-  char* end = nullptr;
-  const double threshold = std::strtod(args.threshold.c_str(), &end);
-  if (args.threshold.empty() || *end != '\0' || !std::isfinite(threshold))
-    throw UsageError("--threshold: '" + args.threshold + "' is not a finite number of dB");
+  const double threshold = parseFiniteNumber("--threshold", args.threshold);   // dB
   std::vector<Frame> frames;   // one per value, through the same checks as --set
   for (double v : values) {
     FrameArgs frameArgs = args;
@@ -274,8 +271,8 @@ int runSweep(const SweepArgs& args) {
   if (args.check) {
     std::cout << "sweep " << base.scene << " " << range.name << ": " << values.size() << " values x "
               << (1 + methods.size() + (args.noSoftpipe ? 0 : 1))
-              << " sides; the options, the scene at every value and its assets are valid; the memory cap is checked here "
-                 "against the final images only, against textures and targets as they are made\n";
+              << " sides; the options, the scene at every value and its asset files are valid (--max-memory: checked "
+                 "here against the final images, in full as each frame is made)\n";
     return 0;
   }
 

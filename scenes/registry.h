@@ -46,7 +46,9 @@ const std::deque<SceneEntry>& sceneRegistry();
 // The row of `name`; SceneError naming the known scenes for an unknown one.
 const SceneEntry& sceneEntry(const std::string& name);
 std::vector<std::string> sceneNames();
-// The scene `name` made by its row's factory (SceneError for an unknown name).
+// The scene `name` made by its row's factory (SceneError for an unknown name). Making one
+// checks its options (SceneError for values it refuses) and does no other work: it reads no
+// asset and touches no backend until setup(), so `raster sweep --check` makes one per value.
 std::unique_ptr<Scene> makeScene(const std::string& name, const SceneOptions& options);
 
 // Adds a row at run time, for a program that embeds the library or a test (a scene under a

@@ -22,7 +22,8 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
-from input_checks import NUMBER, BadInput, check_record, fail, read_json
+from input_checks import (NUMBER, RASTER_MAX_FRAMES, BadInput, check_range, check_raster, check_record, fail, read_json,
+                          split_list)
 from raster_scenes import scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -71,18 +72,23 @@ def main():
     args = parser.parse_args()
     if args.frames < 1:
         parser.error(f"--frames {args.frames}: at least 1")
+    # raster bench's own limit, before the first run (--quick halves the count; --dry-run
+    # printed command lines raster would refuse).
+    if args.frames > RASTER_MAX_FRAMES:
+        parser.error(f"--frames {args.frames}: at most {RASTER_MAX_FRAMES} (raster bench's limit)")
     if args.replot:
         results = load_results(os.path.join(OUT, "results.json"))
         write_table(results)
         # The scenes in the order the runs first name them.
         write_chart(results, list(dict.fromkeys(r["scene"] for r in results["runs"])))
         return
-    if not os.access(args.raster, os.X_OK):
-        sys.exit(f"run_benchmarks: {args.raster} is missing; run ./setup.sh first")
+    # --scenes "" is refused, not read as every scene.
+    given = None if args.scenes is None else split_list("run_benchmarks.py", "--scenes", args.scenes)
+    check_raster("run_benchmarks.py", "--raster", args.raster)
     sizes = ["640x480", "1920x1080"] if args.quick else SIZES
     frames = max(3, args.frames // 2) if args.quick else args.frames
     known = scene_names(args.raster)
-    scenes = args.scenes.split(",") if args.scenes else known
+    scenes = known if given is None else given
     for scene in scenes:
         if scene not in known:
             parser.error(f"--scenes: unknown '{scene}' (valid: {', '.join(known)})")
@@ -127,6 +133,10 @@ def load_results(path):
                 raise BadInput(f"run {i}: 'size' is not WxH")
             other = "softpipe" if run.get("driver") == "softpipe" else "llvmpipe"
             check_record(run["medians_ms"], {"raster": NUMBER, other: NUMBER}, f"run {i}: 'medians_ms'")
+            # Above 0: the table divides by raster's median, and the chart's log axes take
+            # nothing at or below 0 (1e9 ms, eleven days a frame, is no measurement either).
+            for backend in ("raster", other):
+                check_range(run["medians_ms"], backend, 0, 1e9, f"run {i}: 'medians_ms'", above=True)
         for scene, memory in results["memory_mb"].items():
             check_record(memory, {"raster": NUMBER, "gl": NUMBER}, f"memory_mb: {scene}")
     except BadInput as e:

@@ -55,7 +55,8 @@ import statistics
 import sys
 
 from chart_files import write_text_atomically
-from input_checks import NUMBER, BadInput, check_each, check_output_path, check_record, fail, read_json
+from input_checks import (NUMBER, RASTER_MAX_SIDE, RASTER_MAX_THREADS, BadInput, check_each, check_output_path,
+                          check_range, check_record, fail, is_number, parse_counts, read_json, split_list)
 
 PROG = "scaling_model.py"
 
@@ -132,15 +133,45 @@ TILES_FIELDS = {"passes": list, "tsc_ghz": NUMBER}
 TILES_PASS_FIELDS = {"label": str, "tile_cycles": list, "tiles_x": int, "tiles_y": int, "height": int}
 
 
-def read_checked(path, what, fields, pass_fields):
-    """One JSON file, its fields and each pass's checked; anything else exits 2 naming it."""
+def read_checked(path, what, fields, pass_fields, check=None):
+    """One JSON file, its fields and each pass's checked, and then check(doc) (raising
+    BadInput); anything else exits 2 naming it."""
     doc = read_json(PROG, path, what)
     try:
         check_record(doc, fields, "")
         check_each(doc["passes"], pass_fields, "pass")
+        if check:
+            check(doc)
     except BadInput as e:
         fail(PROG, f"{path}: not {what} ({e})")
     return doc
+
+
+# What a run's and a tile file's numbers can be. A pass's time and a frame's median are above
+# 0 (the model divides by them: a median of 0 printed "0.00 ms" and speed-ups of 0.0x, all of
+# them 0 a ZeroDivisionError); a tile's cycles 0 or more (a tile may do nothing), the counter's
+# rate and a pass's shape above 0 (they divide), its tiles and rows no more than raster's
+# largest side has pixels. 1e9 ms is eleven days a frame: past it a file is not a measurement.
+MAX_MS = 1e9
+
+
+def check_run(run):
+    for i, p in enumerate(run["passes"]):
+        for field in RUN_PASS_FIELDS:
+            check_range(p, field, 0, MAX_MS, f"pass {i}", above=True, why="a pass takes time")
+    for i, backend in enumerate(run["backends"]):
+        if isinstance(backend, dict) and backend.get("name") in ("raster", "llvmpipe"):
+            check_record(backend, {"median_ms": NUMBER}, f"backend {i}")
+            check_range(backend, "median_ms", 0, MAX_MS, f"backend {i}", above=True, why="a frame takes time")
+
+
+def check_tiles(tiles):
+    check_range(tiles, "tsc_ghz", 0, 1e3, "", above=True)
+    for i, p in enumerate(tiles["passes"]):
+        for field in ("tiles_x", "tiles_y", "height"):
+            check_range(p, field, 1, RASTER_MAX_SIDE, f"pass {i}")
+        if not p["tile_cycles"] or not all(is_number(c) and c >= 0 for c in p["tile_cycles"]):
+            raise BadInput(f"pass {i}: 'tile_cycles' is not a list of cycle counts (numbers, 0 or more)")
 
 
 def load_runs(folder, scene, threads):
@@ -148,7 +179,8 @@ def load_runs(folder, scene, threads):
     paths = sorted(glob.glob(pattern))
     if not paths:
         fail(PROG, f"no run matches {pattern} (see --help's Usage for the names)")
-    runs = [read_checked(path, "a `raster bench --passes --json` run", RUN_FIELDS, RUN_PASS_FIELDS) for path in paths]
+    runs = [read_checked(path, "a `raster bench --passes --json` run", RUN_FIELDS, RUN_PASS_FIELDS, check_run)
+            for path in paths]
     for path, run in zip(paths, runs):
         names = {b.get("name") for b in run["backends"] if isinstance(b, dict) and "median_ms" in b}
         if not {"raster", "llvmpipe"} <= names:
@@ -173,7 +205,8 @@ def load_tiles(folder, scene):
     paths = sorted(glob.glob(pattern))
     if not paths:
         fail(PROG, f"no tile costs match {pattern} (see --help's Usage for the names)")
-    runs = [read_checked(path, "`bench/tile_costs` output", TILES_FIELDS, TILES_PASS_FIELDS) for path in paths]
+    runs = [read_checked(path, "`bench/tile_costs` output", TILES_FIELDS, TILES_PASS_FIELDS, check_tiles)
+            for path in paths]
     shape = [(p["label"], len(p["tile_cycles"])) for p in runs[0]["passes"]]
     for path, r in zip(paths[1:], runs[1:]):
         if [(p["label"], len(p["tile_cycles"])) for p in r["passes"]] != shape:
@@ -271,7 +304,9 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
                        "llvmpipe_t1_ms": l1[i], "llvmpipe_t2_ms": l2[i], "tile_work_ms": sum(costs),
                        "tiles": len(costs), "largest_tile_share": max(costs) / (sum(costs) or 1.0),
                        "makespan_share": share, "llvmpipe_makespan_share": lp_share})
-    work = sum(p["tile_work_ms"] for p in passes) or 1.0
+    if not any(p["tile_work_ms"] for p in passes):   # the model's parallel part would be 0 / 0
+        fail(PROG, f"--tiles {tiles}: {scene}'s tile costs are all 0 cycles")
+    work = sum(p["tile_work_ms"] for p in passes)
     lwork = sum(p["llvmpipe_t1_ms"] for p in passes) or 1.0
     e, le = karp_flatt(T1, T2), karp_flatt(LT1, LT2)
 
@@ -343,7 +378,8 @@ def main():
     parser.add_argument("--tiles", required=True, help="folder of bench/tile_costs output at the full size: SCENE_rR.json")
     parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
     parser.add_argument("--scenes", default=",".join(SCENES))
-    parser.add_argument("--threads", default="1,2,4,8,16,32", help="thread counts to model (must hold 1 and 2)")
+    parser.add_argument("--threads", default="1,2,4,8,16,32",
+                        help=f"thread counts to model (must hold 1 and 2; at most {RASTER_MAX_THREADS}, as raster)")
     parser.add_argument("--frames", action="append", default=[], metavar="SCENE=T1,T2,LT1,LT2",
                         help="the frame medians (ms: ours at 1 and 2 threads, llvmpipe's at 1 and 2) to take the serial "
                              "shares from, in place of --runs' (e.g. a quieter hour's run_benchmarks.py); repeatable")
@@ -353,16 +389,20 @@ def main():
                            ("--tiles-tiny", args.tiles_tiny)):
         if folder is not None and not os.path.isdir(folder):
             fail(PROG, f"{option} {folder}: not a folder")
-    scenes = args.scenes.split(",")
+    # The serial work alone needs both: the tiny frame, less its tile work (one alone was
+    # read as neither, silently).
+    if (args.tiny is None) != (args.tiles_tiny is None):
+        fail(PROG, "--tiny and --tiles-tiny go together (the 16x16 runs and their tile costs)")
+    scenes = split_list(PROG, "--scenes", args.scenes)
     for scene in scenes:
         if scene not in BOUNDS:
             fail(PROG, f"--scenes: {scene!r} has no paper bound here (scenes: {', '.join(BOUNDS)})")
-    try:
-        thread_list = sorted({int(t) for t in args.threads.split(",")} | {1, 2})
-    except ValueError:
-        fail(PROG, f"--threads {args.threads}: not a comma-separated list of whole numbers")
-    if thread_list[0] < 1:
-        fail(PROG, f"--threads {args.threads}: thread counts start at 1")
+    # The model is measured at 1 and 2 threads (--help: the list must hold them). A count past
+    # raster's limit is no machine it runs on, and each takes the makespan of a list that long:
+    # 100000000 ran for ever.
+    thread_list = sorted(parse_counts(PROG, "--threads", args.threads, 1, RASTER_MAX_THREADS, "raster's limit"))
+    if not {1, 2} <= set(thread_list):
+        fail(PROG, f"--threads {args.threads}: must hold 1 and 2 (the model is measured at them)")
     frames = {}
     for item in args.frames:
         name, _, values = item.partition("=")
@@ -370,15 +410,16 @@ def main():
             frames[name] = [float(v) for v in values.split(",")]
         except ValueError:
             frames[name] = []
-        if name not in BOUNDS or len(frames[name]) != 4 or not all(math.isfinite(v) and v > 0 for v in frames[name]):
-            fail(PROG, f"--frames {item}: not SCENE=T1,T2,LT1,LT2 (a scene and four times in ms above 0)")
-    if args.json:
+        if name not in BOUNDS or len(frames[name]) != 4 or not all(0 < v <= MAX_MS for v in frames[name]):
+            fail(PROG, f"--frames {item}: not SCENE=T1,T2,LT1,LT2 (a scene and four times in ms, above 0 and at "
+                       f"most {MAX_MS:g})")
+    if args.json is not None:   # "" too: refused by check_output_path, not skipped
         check_output_path(PROG, "--json", args.json)
     models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
               for s in scenes]
     for m in models:
         print_scene(m, thread_list)
-    if args.json:
+    if args.json is not None:
         write_text_atomically(json.dumps(models, indent=1), args.json)
     return 0
 

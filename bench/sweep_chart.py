@@ -26,8 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
-from input_checks import (NUMBER, OPTIONAL, BadInput, check_each, check_output_path, check_record, fail,  # noqa: E402
-                          read_json)
+from input_checks import (NUMBER, OPTIONAL, BadInput, check_each, check_output_path, check_range,  # noqa: E402
+                          check_record, fail, read_json)
 
 PROG = "sweep_chart.py"
 # The fields the chart reads, of the sweep and of each point (raster sweep writes more).
@@ -35,6 +35,16 @@ SWEEP_FIELDS = {"points": list, "param": str, "scene": str, "threshold_db": NUMB
                 "time": NUMBER}
 POINT_FIELDS = {"method": str, "value": NUMBER, "value_index": int, "fails": bool, "nonfinite_pixels": int,
                 "psnr_vs_llvmpipe_db": OPTIONAL(NUMBER), "identical_to_llvmpipe": bool}
+
+# The ranges a sweep.json's numbers can take (raster writes null for a PSNR that is not
+# finite: identical images, drawn on the ceiling). A PSNR of raster's images, 8-bit, depth or
+# float, stays within about +-1,000 dB; the limit leaves room, and keeps the y axis far from
+# where matplotlib overflows (near 1e308). The threshold is raster sweep's --threshold, any
+# finite number: one past the limit is named at the axis's edge (draw). A swept value is a
+# scene parameter (`raster params`: +-1e30 at most); a log axis overflows from about 1e300.
+# FLIP is an error in 0..1.
+DB_LIMIT = 1e4
+VALUE_LIMIT = 1e100
 
 # softpipe (GL against GL) in grey, outside the colours the method sets take in turn (the
 # fourth of which, C3, is the red it had, which draft took) and apart from the red crosses.
@@ -50,6 +60,12 @@ def load(path, flip):
         if len(sweep["size"]) != 2 or not all(isinstance(n, int) and n > 0 for n in sweep["size"]):
             raise BadInput("'size' is not [width, height]")
         check_each(sweep["points"], POINT_FIELDS, "point")
+        for i, point in enumerate(sweep["points"]):
+            check_range(point, "psnr_vs_llvmpipe_db", -DB_LIMIT, DB_LIMIT, f"point {i}")
+            if sweep["range"]["log"]:
+                check_range(point, "value", 0, VALUE_LIMIT, f"point {i}", above=True, why="the sweep is on a log scale")
+            else:
+                check_range(point, "value", -VALUE_LIMIT, VALUE_LIMIT, f"point {i}")
     except BadInput as e:
         fail(PROG, f"{path}: not a sweep.json ({e})")
     if flip:
@@ -59,6 +75,7 @@ def load(path, flip):
         try:
             for i, point in enumerate(sweep["points"]):
                 check_record(point, {"flip_vs_llvmpipe": OPTIONAL(NUMBER)}, f"point {i}")
+                check_range(point, "flip_vs_llvmpipe", 0, 1, f"point {i}", why="FLIP's range")
         except BadInput as e:
             fail(PROG, f"{path}: not a sweep.json ({e})")
     return sweep
@@ -140,7 +157,13 @@ def draw(sweep):
     points = sweep["points"]
     sides = [p["method"] for p in points if p["value_index"] == points[0]["value_index"]] if points else []
     finite = [p["psnr_vs_llvmpipe_db"] for p in points if p["psnr_vs_llvmpipe_db"] is not None]
-    ceiling = max(finite + [sweep["threshold_db"]]) + 10 if finite else sweep["threshold_db"] + 20
+    threshold = sweep["threshold_db"]
+    # A threshold past DB_LIMIT, beyond any PSNR, is named at the axis's edge rather than
+    # stretching the axis to it (a --threshold of 1e5 squashed every line flat; near 1e308 the
+    # axis overflows).
+    on_axis = abs(threshold) <= DB_LIMIT
+    marks = finite + ([threshold] if on_axis else [])
+    ceiling = max(marks) + 10 if finite else max(marks, default=0) + 20
     fig, ax = plt.subplots(figsize=(8.5, 5))
     failures, drawn = [], {}
     for side in sides:
@@ -159,15 +182,22 @@ def draw(sweep):
     for p in points:
         if p["method"] == "llvmpipe" and p["nonfinite_pixels"] > 0:
             ax.axvline(p["value"], color="#bbbbbb", linewidth=6, alpha=0.5, zorder=0)
-    ax.axhline(sweep["threshold_db"], color="black", linestyle=":", linewidth=1)
-    ax.text(0.01, sweep["threshold_db"], f" fails below {sweep['threshold_db']:g} dB", transform=ax.get_yaxis_transform(),
-            va="bottom", fontsize=8)
+    if on_axis:
+        ax.axhline(threshold, color="black", linestyle=":", linewidth=1)
+        ax.text(0.01, threshold, f" fails below {threshold:g} dB", transform=ax.get_yaxis_transform(), va="bottom",
+                fontsize=8)
+    else:
+        above = threshold > 0
+        ax.text(0.01, 0.97 if above else 0.03, f" fails below {threshold:g} dB ({'above' if above else 'below'} the axis)",
+                transform=ax.transAxes, va="top" if above else "bottom", fontsize=8)
     ax.axhline(ceiling, color="#999999", linewidth=0.8)
     ax.text(0.01, ceiling, " identical to llvmpipe", transform=ax.get_yaxis_transform(), va="bottom", fontsize=8,
             color="#555555")
     if sweep["range"]["log"]:
         ax.set_xscale("log")
-    ax.set_ylim(bottom=0, top=ceiling + 8)
+    # From 0, or below the lowest PSNR or threshold where one is negative (a float image's can be).
+    lowest = min(marks, default=0)
+    ax.set_ylim(bottom=0 if lowest >= 0 else lowest - 8, top=ceiling + 8)
     ax.set_xlabel(sweep["param"])
     ax.set_ylabel("final image PSNR against llvmpipe (dB)")
     ax.set_title(f"{sweep['scene']}: {sweep['param']} swept, {setting(sweep)}"
@@ -187,7 +217,7 @@ def main():
                         help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
     sweep = load(args.sweep, args.metric == "flip")
-    check_output_path(PROG, "--out", args.out)
+    check_output_path(PROG, "--out", args.out, suffixes=(".png", ".svg"))
     fig = draw_flip(sweep) if args.metric == "flip" else draw(sweep)
     for ext in ("png", "svg"):
         write_atomically(fig, f"{args.out}.{ext}")

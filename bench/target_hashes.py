@@ -20,7 +20,8 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from chart_files import write_text_atomically  # noqa: E402
-from input_checks import check_output_path, fail, read_json  # noqa: E402
+from input_checks import (RASTER_MAX_THREADS, check_output_path, check_raster, fail, parse_counts,  # noqa: E402
+                          parse_sizes, read_json, split_list)
 from raster_scenes import scene_names  # noqa: E402
 
 PROG = "target_hashes.py"
@@ -33,7 +34,8 @@ def parse_args():
                         help="the raster binary (default: the repository's build/raster)")
     parser.add_argument("--scenes", help="comma-separated scenes (default: every registry scene)")
     parser.add_argument("--sizes", default="640x480,333x197,64x48", help="comma-separated WxH")
-    parser.add_argument("--threads", default="1,2,3,4,5", help="comma-separated thread counts")
+    parser.add_argument("--threads", default="1,2,3,4,5",
+                        help=f"comma-separated thread counts (0..{RASTER_MAX_THREADS}; 0: every core)")
     parser.add_argument("--out", help="write the hashes here (JSON)")
     parser.add_argument("--against", help="compare with this earlier --out; exit 1 on any difference")
     return parser.parse_args()
@@ -53,19 +55,44 @@ def target_hashes(dump_dir):
     return hashes
 
 
+def check_render_options(raster):
+    """The binary renders with the options every run passes: `render --help` names them (a
+    binary that is not raster, such as /bin/true, would "render" nothing, found only once the
+    runs began)."""
+    try:
+        done = subprocess.run([raster, "render", "--help"], capture_output=True, text=True)
+    except OSError as error:
+        fail(PROG, f"--raster {raster}: cannot be run ({error.strerror})")
+    if done.returncode != 0:
+        fail(PROG, f"--raster {raster}: `render --help` exited {done.returncode} (is it the raster binary?)")
+    missing = [option for option in ("--dump", "--scalar", "--threads", "--size") if option not in done.stdout]
+    if missing:
+        fail(PROG, f"--raster {raster}: `render --help` names no {', '.join(missing)} (is it the raster binary?)")
+
+
 def main():
     args = parse_args()
-    # What the end of the run reads or writes is checked before its minutes of renders.
+    # Every argument, and what the end of the run reads or writes, is checked before its
+    # minutes of renders.
+    check_raster(PROG, "--raster", args.raster)
+    sizes = parse_sizes(PROG, "--sizes", args.sizes)
+    threads = [str(n) for n in parse_counts(PROG, "--threads", args.threads, 0, RASTER_MAX_THREADS, "raster's limit")]
+    given = None if args.scenes is None else split_list(PROG, "--scenes", args.scenes)
     before = None
-    if args.against:
+    if args.against is not None:   # "" too: a file name, refused by read_json
         before = read_json(PROG, args.against, "an earlier --out of this script")
         if not isinstance(before, dict) or not all(isinstance(v, str) for v in before.values()):
             fail(PROG, f"{args.against}: not an earlier --out of this script (an object of target hashes)")
-    if args.out:
+    if args.out is not None:   # "" too: refused by check_output_path, not skipped
         check_output_path(PROG, "--out", args.out)
-    scenes = args.scenes.split(",") if args.scenes else scene_names(args.raster)
-    sizes = args.sizes.split(",")
-    threads = args.threads.split(",")
+    check_render_options(args.raster)
+    # The registry's scenes; --scenes is checked against it where the binary has one (an older
+    # binary without it is hashed with the names given: raster refuses an unknown one).
+    known = scene_names(args.raster, required=given is None)
+    scenes = known if given is None else given
+    for scene in scenes if known is not None else ():
+        if scene not in known:
+            fail(PROG, f"--scenes: unknown '{scene}' (valid: {', '.join(known)})")
     runs = [(s, z, t, scalar) for s in scenes for z in sizes for t in threads for scalar in (False, True)]
     hashes = {}
     with tempfile.TemporaryDirectory() as work:
@@ -80,11 +107,13 @@ def main():
                 fail(PROG, f"{' '.join(command)}: {done.stderr.strip()}")
             if done.returncode != 0:
                 sys.exit(f"{' '.join(command)} exited {done.returncode}: {done.stderr.strip()}")
+            if not os.path.isdir(dump):
+                sys.exit(f"{' '.join(command)} exited 0 but wrote no --dump folder")
             for target, digest in target_hashes(dump).items():
                 hashes[f"{scene} {size} {thread_count} {'scalar' if scalar else 'simd'} {target}"] = digest
             print(f"\r{index}/{len(runs)} runs, {len(hashes)} target hashes", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
-    if args.out:
+    if args.out is not None:
         write_text_atomically(json.dumps(hashes, indent=1, sort_keys=True), args.out)
     per_config = {}
     for key, digest in hashes.items():

@@ -35,9 +35,22 @@ from matplotlib.ticker import NullFormatter  # noqa: E402
 from matplotlib.transforms import Bbox  # noqa: E402
 
 from chart_files import write_atomically  # noqa: E402
-from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, read_json  # noqa: E402
+from input_checks import (NUMBER, OPTIONAL, BadInput, check_output_path, check_range, check_record, fail,  # noqa: E402
+                          read_json)
 
 PROG = "tradeoff_chart"
+
+# The ranges a result's numbers can take (raster writes null for a PSNR that is not finite:
+# identical images, drawn on the ceiling). A speed-up is a ratio of two frames' medians: past
+# 1e9 either way, one frame took under a nanosecond against the other's second (and the axis's
+# ticks overflow near 1e308). A PSNR of raster's images stays within about +-1,000 dB, the limit
+# leaving room; FLIP is an error in 0..1.
+SPEEDUP_LIMIT = 1e9
+DB_LIMIT = 1e4
+# The most results one chart draws: `raster tradeoff all` writes one per scene, five today. 32
+# is already eight rows of panels and some 25 s of drawing; much further the figure grows past
+# what matplotlib draws (2^16 pixels a side, at about 240).
+MAX_RESULTS = 32
 
 FAST_THRESHOLD_DB = 40.0
 KIND_STYLE = {
@@ -63,14 +76,23 @@ def load_results(paths, metric):
                     if metric == "flip" and "flip_vs_llvmpipe" not in point:
                         fail(PROG, f"{path}: {result['scene']}: the result has no FLIP (written before it was "
                                    "measured); run raster tradeoff again or chart --metric psnr")
-                    check_record(point, point_fields, f"{result['scene']} point {i}")
+                    where = f"{result['scene']} point {i}"
+                    check_record(point, point_fields, where)
                     if not point["speedup_vs_llvmpipe"] > 0:
-                        raise BadInput(f"{result['scene']} point {i}: 'speedup_vs_llvmpipe' is not above 0")
+                        raise BadInput(f"{where}: 'speedup_vs_llvmpipe' is not above 0")
+                    check_range(point, "speedup_vs_llvmpipe", 1 / SPEEDUP_LIMIT, SPEEDUP_LIMIT, where)
+                    for field, _ in METRICS[metric]["fields"]:
+                        if metric == "flip":
+                            check_range(point, field, 0, 1, where, why="FLIP's range")
+                        else:
+                            check_range(point, field, -DB_LIMIT, DB_LIMIT, where)
             except BadInput as e:
                 fail(PROG, f"{path}: not a tradeoff result ({e})")
             results.append(result)
     if not results:
         fail(PROG, "no results to draw")
+    if len(results) > MAX_RESULTS:
+        fail(PROG, f"{len(results)} results: more than the {MAX_RESULTS} one chart draws (chart fewer files)")
     return results
 
 
@@ -303,7 +325,7 @@ def main():
                         help="accuracy on the y axis: PSNR (dB, default) or the mean LDR-FLIP error")
     args = parser.parse_args()
     results = load_results(args.results, args.metric)
-    check_output_path(PROG, "--out", args.out)
+    check_output_path(PROG, "--out", args.out, suffixes=(".png", ".svg"))
     fig = figure(results, args.metric)
     for ext in ("png", "svg"):
         write_atomically(fig, f"{args.out}.{ext}")

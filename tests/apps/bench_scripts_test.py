@@ -9,7 +9,9 @@ the tables BENCHMARKS.md quotes.
 
 Usage: bench_scripts_test.py RASTER_BINARY SOURCE_DIR
 """
+import contextlib
 import glob
+import io
 import json
 import os
 import re
@@ -17,6 +19,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import warnings
 
 raster, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 bench = os.path.join(source, "bench")
@@ -29,9 +32,14 @@ def check(condition, message):
         print("FAILED: " + message, file=sys.stderr)
 
 
-def run(script, *args, cwd=None):
-    return subprocess.run([sys.executable, os.path.join(bench, script), *map(str, args)], capture_output=True,
-                          text=True, cwd=cwd)
+def run(script, *args, cwd=None, timeout=60):
+    """The script's exit; a run past `timeout` seconds (a read that never ends) is killed and
+    reads as exit status "timeout"."""
+    command = [sys.executable, os.path.join(bench, script), *map(str, args)]
+    try:
+        return subprocess.run(command, capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return subprocess.CompletedProcess(command, "timeout", "", f"killed after {timeout} s")
 
 
 def expect_refused(script, args, naming, outputs=(), cwd=None, usage=False):
@@ -46,6 +54,39 @@ def expect_refused(script, args, naming, outputs=(), cwd=None, usage=False):
           f"{what}: stderr is not one line naming {naming!r}: {done.stderr[-1500:]}")
     for path in outputs:
         check(not os.path.exists(path), f"{what} left {path} behind")
+
+
+def expect_refused_in_process(what, call, naming, usage=False):
+    """call(), a bench script's own function run in this process (no interpreter and matplotlib
+    start a case: the test's time is budgeted), exits 2 with one line on stderr naming `naming`
+    (after argparse's usage lines where `usage`); no other exception, no warning."""
+    stderr, status = io.StringIO(), None
+    with contextlib.redirect_stderr(stderr), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            call()
+        except SystemExit as e:
+            status = e.code
+        except Exception as e:   # what a script without the check raised: a traceback
+            status = f"{type(e).__name__}: {e}"
+    text = stderr.getvalue()
+    check(status == 2, f"{what} exited {status}, not 2: {text[-1500:]}")
+    lines = text.strip().splitlines()
+    check(bool(lines) and naming in lines[-1] and (usage or len(lines) == 1),
+          f"{what}: stderr is not one line naming {naming!r}: {text[-1500:]}")
+    check(not caught, f"{what} warned: {[str(w.message) for w in caught]}")
+
+
+def main_with(module, *args):
+    """A call of module.main() as `module.py args` would make it."""
+    def call():
+        saved = sys.argv
+        sys.argv = [module.__name__ + ".py", *map(str, args)]
+        try:
+            module.main()
+        finally:
+            sys.argv = saved
+    return call
 
 
 with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
@@ -160,6 +201,68 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         expect_refused("tradeoff_chart.py", [path, "--out", out], naming, outputs)
     expect_refused("tradeoff_chart.py", [tradeoff, "--out", "/proc/chart"], "cannot write in /proc")
 
+    # What the charts read, refused with a line naming the file and field, and an --out that
+    # names no file or whose .png is a folder, before any drawing (the scripts' own functions,
+    # in this process: one start of matplotlib for them all; one real process below).
+    import sweep_chart  # noqa: E402
+    deep = write("deep.json", "[" * 100000)   # past Python's parser: a RecursionError
+    side = next(p["method"] for p in sweep_doc["points"] if p["method"] != "llvmpipe")
+
+    def sweep_with(name, **fields):
+        """sweep_doc with the fields of its first point of `side` replaced ("threshold_db": the sweep's)."""
+        doc = json.loads(json.dumps(sweep_doc))
+        doc.update({k: v for k, v in fields.items() if k in doc})
+        point = next(p for p in doc["points"] if p["method"] == side)
+        point.update({k: v for k, v in fields.items() if k not in doc})
+        return write(name, json.dumps(doc))   # NaN and Infinity written as Python's json does
+
+    log_sweep = sweep_doc["range"]["log"]
+    check(log_sweep, f"{sweep} is not a log sweep, which the cases below need")
+    for path, naming in ((deep, "deep.json: not a sweep.json (nested too deeply)"),
+                         (sweep_with("nan.json", psnr_vs_llvmpipe_db=float("nan")), "'psnr_vs_llvmpipe_db' is NaN"),
+                         (sweep_with("inf.json", threshold_db=float("inf")), "'threshold_db' is Infinity"),
+                         (sweep_with("infvalue.json", value=float("inf")), "'value' is Infinity"),
+                         (sweep_with("huge.json", psnr_vs_llvmpipe_db=1e308), "'psnr_vs_llvmpipe_db' is 1e+308"),
+                         (sweep_with("negative.json", value=-1.0), "'value' is -1, not above 0")):
+        expect_refused_in_process(f"sweep_chart {path}", lambda: sweep_chart.load(path, False), naming)
+    expect_refused_in_process("sweep_chart --metric flip, a FLIP of 2",
+                              lambda: sweep_chart.load(sweep_with("flip2.json", flip_vs_llvmpipe=2.0), True),
+                              "'flip_vs_llvmpipe' is 2, not within 0..1")
+    for doc, metric, naming in ((dict(first, points=[dict(first["points"][0], speedup_vs_llvmpipe=float("inf"))]),
+                                 "psnr", "'speedup_vs_llvmpipe' is Infinity"),
+                                (dict(first, points=[dict(first["points"][0], speedup_vs_llvmpipe=1e308)]),
+                                 "psnr", "'speedup_vs_llvmpipe' is 1e+308"),
+                                (dict(first, points=[dict(first["points"][0], flip_vs_llvmpipe=float("nan"))]),
+                                 "flip", "'flip_vs_llvmpipe' is NaN")):
+        path = write("point.json", json.dumps(doc))
+        expect_refused_in_process(f"tradeoff_chart {naming}", lambda: tradeoff_chart.load_results([path], metric),
+                                  naming)
+    expect_refused_in_process("tradeoff_chart deep.json", lambda: tradeoff_chart.load_results([deep], "psnr"),
+                              "nested too deeply")
+    os.makedirs(os.path.join(tmp, "folder.png"))
+    for module, result in ((sweep_chart, sweep), (tradeoff_chart, tradeoff)):
+        expect_refused_in_process(f"{module.__name__} --out DIR/", main_with(module, result, "--out", tmp + "/"),
+                                  "names no file")
+        expect_refused_in_process(f"{module.__name__} --out PREFIX (PREFIX.png a folder)",
+                                  main_with(module, result, "--out", os.path.join(tmp, "folder")), "is a folder")
+    expect_refused("sweep_chart.py", [sweep, "--out", ""], "--out '': names no file",
+                   [os.path.join(tmp, ".png"), os.path.join(tmp, ".svg")], cwd=tmp)
+    # A PSNR below 0 (a float image's can be) is drawn, the axis reaching down to it; a
+    # threshold past any PSNR (raster sweep takes any finite --threshold) is named, not drawn at
+    # 1e308 (where matplotlib's axis overflowed with a warning).
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        fig = sweep_chart.draw(sweep_chart.load(sweep_with("below0.json", psnr_vs_llvmpipe_db=-20.0), False))
+        check(fig.axes[0].get_ylim()[0] < -20, f"a PSNR of -20 dB lies below the y axis {fig.axes[0].get_ylim()}")
+        sweep_chart.plt.close(fig)
+        fig = sweep_chart.draw(sweep_chart.load(sweep_with("far.json", threshold_db=1e308), False))
+        check(fig.axes[0].get_ylim()[1] < 1e4 and any("1e+308 dB (above the axis)" in t.get_text()
+                                                       for t in fig.axes[0].texts),
+              f"a threshold of 1e308 dB: y axis {fig.axes[0].get_ylim()}, not named above it")
+        fig.canvas.draw()   # where the overflow was
+        sweep_chart.plt.close(fig)
+    check(not caught, f"sweep_chart warned: {[str(w.message) for w in caught]}")
+
     # The paper bounds and the scaling model from the committed runs: model.md's tables.
     runs, tiles = os.path.join(bench, "results", "scaling", "runs"), os.path.join(bench, "results", "scaling", "tiles")
     done = run("scaling_model.py", "--runs", runs, "--tiles", tiles)
@@ -181,6 +284,23 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--frames", "hdr=1,2,3"], "--frames hdr=1,2,3")
     expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--json", "/proc/model.json"],
                    "cannot write in /proc")
+    # --threads: past raster's 1024 (10^8 ran for ever), or without 1 and 2 (--help: the
+    # model is measured at them); --tiny without --tiles-tiny; a frame's median of 0.
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--threads", "1,2,100000000"],
+                   "100000000 is out of range")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--threads", "4,8"], "must hold 1 and 2")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--tiny", runs], "--tiles-tiny")
+    expect_refused("scaling_model.py", ["--runs", runs, "--tiles", tiles, "--json", ""], "--json '': names no file")
+    zero_runs = os.path.join(tmp, "zero-runs")
+    shutil.copytree(runs, zero_runs)
+    with open(os.path.join(runs, "hdr_t1_r1.json")) as f:
+        zero = json.load(f)
+    for backend in zero["backends"]:
+        backend["median_ms"] = 0
+    with open(os.path.join(zero_runs, "hdr_t1_r1.json"), "w") as f:
+        json.dump(zero, f)
+    expect_refused("scaling_model.py", ["--runs", zero_runs, "--tiles", tiles, "--scenes", "hdr"],
+                   "hdr_t1_r1.json: not a `raster bench --passes --json` run (backend 0: 'median_ms' is 0, not above 0")
 
     # goal_runs.py --replot redraws the committed goal run's table from its goals.json, and
     # refuses a goals.json whose configurations are not what it wrote.
@@ -201,11 +321,47 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         expect_refused("goal_runs.py", ["--replot", "--out", replot], naming)
 
     expect_refused("run_benchmarks.py", ["--frames", "0", "--dry-run"], "--frames 0: at least 1", usage=True)
+    # raster bench takes at most 10000 frames: --quick's half of 10^8 was printed as a command.
+    expect_refused("run_benchmarks.py", ["--dry-run", "--quick", "--frames", "100000000"], "at most 10000", usage=True)
+    expect_refused("run_benchmarks.py", ["--raster", raster, "--dry-run", "--scenes", ""], "--scenes '': empty")
+    # --replot's results.json (run in this process: the script reads it from bench/results): a
+    # median of 0 divided the table by 0, and NaN is not JSON.
+    import run_benchmarks  # noqa: E402
+    results_doc = {"runs": [{"scene": "shadow", "size": "640x480", "threads": 1,
+                             "medians_ms": {"raster": 0, "llvmpipe": 1.0}}], "memory_mb": {}}
+    path = write("results.json", json.dumps(results_doc))
+    expect_refused_in_process("run_benchmarks --replot, a median of 0", lambda: run_benchmarks.load_results(path),
+                              "run 0: 'medians_ms': 'raster' is 0, not above 0")
+    results_doc["runs"][0]["medians_ms"]["raster"] = float("nan")
+    path = write("results.json", json.dumps(results_doc))
+    expect_refused_in_process("run_benchmarks --replot, a NaN median", lambda: run_benchmarks.load_results(path),
+                              "'raster' is NaN")
 
     # target_hashes.py reads --against and tries --out before its renders, from any folder.
     expect_refused("target_hashes.py", ["--raster", raster, "--against", malformed], "not an earlier --out", cwd=tmp)
     expect_refused("target_hashes.py", ["--raster", raster, "--out", "/proc/hashes.json"], "cannot write in /proc",
                    cwd=tmp)
+    # Files that are not regular are refused, not read for ever (/dev/zero: /dev/null here, which
+    # a script without the check reads as empty, not until memory runs out) or waited on (a FIFO
+    # with no writer); every argument is checked before the first render, each list's items and
+    # the binary too (a traceback, a silent default, or an error after all the renders).
+    fifo = os.path.join(tmp, "fifo")
+    os.mkfifo(fifo)
+    for against in ("/dev/null", fifo):
+        expect_refused("target_hashes.py", ["--raster", raster, "--against", against], "not a regular file", cwd=tmp)
+    expect_refused("target_hashes.py", ["--raster", raster, "--against", deep], "nested too deeply", cwd=tmp)
+    for option, value, naming in (("--threads", "1, 2", "' 2' has spaces around it"),
+                                  ("--threads", "", "--threads '': empty"), ("--threads", "1,", "an empty item"),
+                                  ("--threads", "1025", "1025 is out of range"), ("--scenes", "", "--scenes '': empty"),
+                                  ("--scenes", "shadow,forest", "unknown 'forest'"),
+                                  ("--sizes", "24x16,99999x2", "99999x2 is not a WxH"),
+                                  ("--out", os.path.join(tmp, "folder.png"), "is a folder")):
+        expect_refused("target_hashes.py", ["--raster", raster, "--scenes", "shadow", "--sizes", "24x16",
+                                            "--threads", "1", option, value], naming, cwd=tmp)
+    for binary in ("/nonexistent/raster", "/bin/true"):
+        for scenes in ([], ["--scenes", "shadow"]):   # with --scenes, no `raster scenes` is needed
+            expect_refused("target_hashes.py", ["--raster", binary, *scenes, "--sizes", "24x16", "--threads", "1"],
+                           f"--raster {binary}", cwd=tmp)
     hashes = os.path.join(tmp, "hashes.json")
     done = run("target_hashes.py", "--raster", raster, "--scenes", "shadow", "--sizes", "24x16", "--threads", "1,3",
                "--out", hashes, cwd=tmp)

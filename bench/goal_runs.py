@@ -26,8 +26,8 @@ Usage: bench/goal_runs.py [--runs 3] [--frames 9] [--threads 2] [--sizes 640x480
 """
 import argparse
 import json
+import math
 import os
-import re
 import statistics
 import subprocess
 import sys
@@ -35,10 +35,12 @@ import tempfile
 import time
 
 from chart_files import write_atomically, write_text_atomically
-from input_checks import NUMBER, OPTIONAL, BadInput, check_output_path, check_record, fail, is_number, read_json
+from input_checks import (NUMBER, OPTIONAL, RASTER_MAX_FRAMES, RASTER_MAX_THREADS, BadInput, check_output_folder,
+                          check_raster, check_record, fail, is_number, parse_sizes, read_json, split_list)
 from raster_scenes import preset_names, scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PROG = "goal_runs.py"
 
 
 def cpu_model():
@@ -73,31 +75,44 @@ def parse_args(argv):
         import matplotlib  # noqa: F401
     except ImportError:
         parser.error(f"matplotlib is missing from {sys.executable}: run ./setup.sh, or use /usr/bin/python3")
-    if args.replot:
+    if args.replot:   # reads OUT/goals.json, rewrites the three files there
+        args.out = check_output_folder(PROG, "--out", args.out, files=("goals.json", "goals.md", "goals.png"))
         return args
-    if not os.access(args.raster, os.X_OK):
-        parser.error(f"--raster: {args.raster} is not an executable (run ./setup.sh first)")
+    if args.runs < 1 or args.frames < 1 or args.threads < 1:
+        parser.error("--runs, --frames and --threads must be at least 1")
+    # raster bench's own limits, checked before the first run rather than at it.
+    for option, value, limit in (("--frames", args.frames, RASTER_MAX_FRAMES),
+                                 ("--threads", args.threads, RASTER_MAX_THREADS)):
+        if value > limit:
+            parser.error(f"{option} {value}: at most {limit} (raster bench's limit)")
+    # A goal is a finite ratio, 0 or more (0: any ratio): a NaN goal compares false with every
+    # ratio, so nothing was met, and the table read "nan".
+    for option, value in (("--goal", args.goal), ("--floor", args.floor), ("--pass-goal", args.pass_goal)):
+        if not (math.isfinite(value) and value >= 0):
+            parser.error(f"{option} {value}: not a ratio (a finite number, 0 or more)")
+    # The floor is the least any run may read, at most the median's goal: above it, the goal
+    # would say nothing (every run at least the floor puts the median there too).
+    if args.floor > args.goal:
+        parser.error(f"--floor {args.floor:g} is above --goal {args.goal:g} (the floor is the lowest a run may read, "
+                     "at most the goal)")
+    check_raster(PROG, "--raster", args.raster)
+    # Each list's items once, in order; "" or an empty item is refused (--scenes "" once meant
+    # every scene).
+    args.sizes = parse_sizes(PROG, "--sizes", args.sizes)
+    args.presets = split_list(PROG, "--presets", args.presets)
+    args.scenes = None if args.scenes is None else split_list(PROG, "--scenes", args.scenes)
     known_scenes = scene_names(args.raster)
-    # A name given twice is measured once.
-    args.sizes, args.presets = (list(dict.fromkeys(v.split(","))) for v in (args.sizes, args.presets))
-    args.scenes = list(dict.fromkeys(args.scenes.split(","))) if args.scenes else known_scenes
-    for size in args.sizes:
-        if not re.fullmatch(r"[1-9]\d*x[1-9]\d*", size):
-            parser.error(f"--sizes: '{size}' is not WxH (e.g. 640x480)")
+    args.scenes = args.scenes or known_scenes
     for name, given, valid in (("--presets", args.presets, preset_names(args.raster)),
                                ("--scenes", args.scenes, known_scenes)):
         for value in given:
             if value not in valid:
                 parser.error(f"{name}: unknown '{value}' (valid: {', '.join(valid)})")
-    if args.runs < 1 or args.frames < 1 or args.threads < 1:
-        parser.error("--runs, --frames and --threads must be at least 1")
     # Before any rendering: a run of many minutes must not end on an unwritable folder. The
-    # folder must take files, or, not made yet, the folder above it (a mistyped path is
-    # refused, not made parents and all); --dry-run makes nothing.
-    if os.path.exists(args.out) and not os.path.isdir(args.out):
-        parser.error(f"--out: {args.out} is not a folder")
-    made = os.path.isdir(args.out)
-    check_output_path("goal_runs.py", "--out", os.path.join(args.out, "goals.json") if made else args.out)
+    # folder must take files (and goals.json, .md and .png in it not be folders), or, not made
+    # yet, the folder above it (a mistyped path is refused, not made parents and all);
+    # --dry-run makes nothing.
+    args.out = check_output_folder(PROG, "--out", args.out, files=("goals.json", "goals.md", "goals.png"))
     if not args.dry_run:
         os.makedirs(args.out, exist_ok=True)
     return args

@@ -7,6 +7,7 @@ input before any run, leaving no file behind.
 
 Usage: goal_runs_test.py RASTER_BINARY SOURCE_DIR
 """
+import argparse
 import json
 import os
 import statistics
@@ -86,14 +87,22 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
     with open(os.path.join(out, "goals.json")) as f:
         check(not any(row["met"] for row in json.load(f)["configurations"]), "a configuration met a goal of 10^9")
 
-    # A median above the goal with one run below the floor is not met.
-    out = os.path.join(tmp, "floor")
-    done = goal_runs("--goal", "0", "--floor", "1e9", "--out", out)
-    check(done.returncode == 1, f"a floor of 10^9 exited {done.returncode}, not 1")
+    # A median at the goal with one run below the floor is not met (the rule itself, on set
+    # ratios: a floor above the goal, the way a run could once test it, is refused below).
+    sys.dont_write_bytecode = True   # no __pycache__ left in bench/
+    sys.path.insert(0, os.path.join(source, "bench"))
+    import goal_runs as goal_runs_module  # noqa: E402
+    rule = argparse.Namespace(sizes=["8x8"], presets=["gl"], scenes=["shadow"], goal=4.0, floor=3.6, passes=False)
+    for ratios, met in (([5.0, 3.0], False), ([5.0, 3.6], True), ([3.9, 4.0, 4.1], True), ([3.9, 3.9, 4.5], False)):
+        rows = goal_runs_module.summarize(rule, [{"size": "8x8", "preset": "gl", "scene": "shadow", "ratio": r}
+                                                 for r in ratios])
+        check(rows[0]["met"] == met, f"ratios {ratios} against goal 4 and floor 3.6: met is {rows[0]['met']}")
 
     # Bad input: exit 2, one line that names the problem, nothing written.
     blocker = os.path.join(tmp, "a-file")
     open(blocker, "w").close()
+    goals_png_folder = os.path.join(tmp, "png-folder")   # an --out whose goals.png is a folder
+    os.makedirs(os.path.join(goals_png_folder, "goals.png"))
     # The presets are the binary's (`raster methods --json`), draft included.
     for extra, says in ((["--presets", "gl,slow"], "gl, precise, fast, draft"),
                         (["--scenes", "forest"], "shadow, deferred, hdr"),
@@ -101,7 +110,18 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
                         (["--out", os.path.join(blocker, "under")], f"the folder {blocker} does not exist"),
                         (["--out", blocker], "not a folder"),
                         (["--out", os.path.join(tmp, "no", "such")],
-                         f"the folder {os.path.join(tmp, 'no')} does not exist")):
+                         f"the folder {os.path.join(tmp, 'no')} does not exist"),
+                        # "" once meant every scene; NaN compares false with every ratio; a floor
+                        # above the goal makes the goal say nothing; raster bench takes at most
+                        # 10000 frames; --out "" names no folder; /bin/true prints no scene list.
+                        (["--scenes", ""], "--scenes '': empty"), (["--scenes", "shadow,"], "an empty item"),
+                        (["--goal", "nan"], "--goal nan: not a ratio"), (["--pass-goal", "inf"], "--pass-goal inf"),
+                        (["--floor", "10", "--goal", "1"], "--floor 10 is above --goal 1"),
+                        (["--frames", "10001"], "--frames 10001: at most 10000"),
+                        (["--out", ""], "--out '': names no folder"),
+                        (["--raster", "/bin/true"], "--raster /bin/true"),
+                        (["--raster", "/nonexistent/raster"], "--raster /nonexistent/raster: does not exist"),
+                        (["--out", goals_png_folder], "goals.png is a folder")):
         bad = os.path.join(tmp, "bad")
         args = extra if "--out" in extra else extra + ["--out", bad]
         done = goal_runs(*args)

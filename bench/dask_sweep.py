@@ -27,9 +27,50 @@ import sys
 import tempfile
 
 from chart_files import write_text_atomically
+from input_checks import check_raster
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_RASTER = os.path.join(HERE, "..", "build", "raster")
+
+
+# The most --local-workers a core: each worker is a process that runs one `raster sweep`
+# shard at a time, which keeps a core busy (more with raster's --threads). Workers past the
+# cores only queue on them, each a Python process of ~100 MB that takes a while to start: 64
+# on 2 cores crawled, 100000 hung without a word. A few a core leaves room for shards that
+# wait on I/O.
+WORKERS_PER_CORE = 4
+
+
+def usable_cores():
+    """The cores this process may run on (its affinity: a container's or taskset's share)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:   # not Linux
+        return os.cpu_count() or 1
+
+
+def scheduler_problem(address):
+    """What is wrong with a --scheduler address, or None, found before anything is made or
+    started: distributed's own parser (Client() raised its ValueError as a traceback for
+    "garbage" or "tcp://[::1"), a protocol it has, a host, and a port in 1..65535 (Client
+    waited out its 30 s connect timeout on tcp://127.0.0.1:99999)."""
+    try:
+        from distributed.comm.addressing import parse_address, parse_host_port
+        from distributed.comm.registry import backends
+    except ImportError:
+        return None   # main() says that python3-distributed is missing
+    try:
+        scheme, location = parse_address(address)   # HOST:PORT alone is tcp://HOST:PORT
+        host, port = parse_host_port(location)
+    except ValueError as e:
+        return f"not PROTOCOL://HOST:PORT ({e})"
+    if scheme not in backends or scheme == "inproc":   # inproc: within one process only
+        return f"unknown protocol {scheme}:// (tcp, tls, ws, wss or ucx)"
+    if not host:
+        return "no host"
+    if not 1 <= port <= 65535:
+        return f"port {port} is not 1..65535"
+    return None
 
 
 class BadInput(Exception):
@@ -79,11 +120,18 @@ def parse_args(argv):
         parser.error(f"--shards: {args.shards} is not 1 or more")
     if args.local_workers is not None and args.local_workers < 1:
         parser.error(f"--local-workers: {args.local_workers} is not 1 or more")
+    cores = usable_cores()
+    if args.local_workers is not None and args.local_workers > WORKERS_PER_CORE * cores:
+        parser.error(f"--local-workers: {args.local_workers} is more than {WORKERS_PER_CORE * cores} "
+                     f"({WORKERS_PER_CORE} for each of this machine's {cores} cores: more would only queue on them)")
+    if args.scheduler is not None:
+        problem = scheduler_problem(args.scheduler)
+        if problem:
+            parser.error(f"--scheduler {args.scheduler}: {problem}")
     if args.retries < 0:
         parser.error("--retries: must be 0 or more")
     args.raster = os.path.abspath(args.raster)
-    if not os.access(args.raster, os.X_OK):
-        parser.error(f"--raster: {args.raster} is not an executable (build it with ./setup.sh)")
+    check_raster("dask_sweep.py", "--raster", args.raster)   # a file, not a folder (access() says yes of one)
     return args
 
 
@@ -105,15 +153,7 @@ def main(argv):
     except ImportError:
         sys.exit("dask_sweep.py: python3-distributed is missing (Debian: apt install python3-distributed)")
 
-    os.makedirs(args.out, exist_ok=True)
-    shard_root = os.path.join(args.out, "shards")
-    shutil.rmtree(shard_root, ignore_errors=True)
-    kill_marker = None
-    if args.test_kill_worker_on_shard:
-        kill_marker = os.path.join(args.out, ".killed-a-worker")
-        if os.path.exists(kill_marker):
-            os.remove(kill_marker)
-
+    # The cluster first: a scheduler that cannot be reached leaves no --out folder behind.
     cluster = None
     if args.local_workers:
         cluster = LocalCluster(n_workers=args.local_workers, threads_per_worker=1, processes=True,
@@ -125,7 +165,15 @@ def main(argv):
         except OSError as e:   # no scheduler there, or not reachable: one line, not a traceback
             print(f"dask_sweep.py: --scheduler: cannot reach {args.scheduler}: {e}", file=sys.stderr)
             return 1
+    shard_root = os.path.join(args.out, "shards")
     try:
+        os.makedirs(args.out, exist_ok=True)
+        shutil.rmtree(shard_root, ignore_errors=True)
+        kill_marker = None
+        if args.test_kill_worker_on_shard:
+            kill_marker = os.path.join(args.out, ".killed-a-worker")
+            if os.path.exists(kill_marker):
+                os.remove(kill_marker)
         futures = {}
         for k in range(1, args.shards + 1):
             marker = kill_marker if k == args.test_kill_worker_on_shard else None

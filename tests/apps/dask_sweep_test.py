@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A sweep sharded on a 2-worker Dask LocalCluster equals the single-machine sweep, byte for
 byte, even when a worker dies under a shard (the task is rescheduled); bad input (an unknown
-parameter, too many shards, an --out in a folder that does not exist) exits 2 before any
+parameter, too many shards, an --out in a folder that does not exist, a --scheduler that is
+no address or has no valid port, more local workers than a few a core) exits 2 before any
 cluster starts.
 
 Usage: dask_sweep_test.py RASTER_BINARY SOURCE_DIR
@@ -58,6 +59,24 @@ with tempfile.TemporaryDirectory(prefix="dask-sweep-test-") as tmp:
         check(done.returncode == 2, f"--shards {shards} --out {out} exited {done.returncode}, not 2: {done.stderr[-2000:]}")
         check(naming in done.stderr and "Traceback" not in done.stderr, f"the refusal does not name {naming}: {done.stderr[-2000:]}")
         check(not os.path.exists(out), f"the refused run made {out}")
+
+    # A --scheduler that is no address (distributed's ValueError was a traceback) or has a port
+    # past 65535 (a 30 s connect timeout), and more local workers than a few a core (100000
+    # hung without a word): exit 2 naming the option, nothing made, no cluster started.
+    for where, naming in ((["--scheduler", "garbage"], "--scheduler garbage"),
+                          (["--scheduler", "tcp://[::1"], "--scheduler tcp://[::1"),
+                          (["--scheduler", "tcp://127.0.0.1:99999"], "port 99999 is not 1..65535"),
+                          (["--local-workers", "100000"], "--local-workers: 100000 is more than")):
+        out = os.path.join(tmp, "refused")
+        try:
+            done = subprocess.run([sys.executable, runner] + sweep + ["--shards", "2", "--out", out, "--raster", raster]
+                                  + where, capture_output=True, text=True, timeout=25)
+        except subprocess.TimeoutExpired:   # killed: a refusal takes a second or two
+            done = subprocess.CompletedProcess(where, "timeout", "", "killed after 25 s")
+        check(done.returncode == 2, f"{where} exited {done.returncode}, not 2: {done.stderr[-2000:]}")
+        check(naming in done.stderr and "Traceback" not in done.stderr,
+              f"{where}: the refusal does not name {naming!r}: {done.stderr[-2000:]}")
+        check(not os.path.exists(out), f"{where}: the refused run made {out}")
 
 print("dask_sweep_test: " + ("passed" if not failures else f"{len(failures)} failed"))
 sys.exit(1 if failures else 0)

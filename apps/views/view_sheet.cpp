@@ -42,8 +42,11 @@ SheetLayout layoutSheet(const Frame& frame, const std::vector<const ViewPass*>& 
   layout.native = shown.size() == 1;
   layout.columns = shown.size() <= 2 ? int(shown.size()) : shown.size() <= 4 ? 2 : 3;
   layout.cellWidth = layout.native ? shown[0]->width : std::clamp(frame.width, 220, 480);   // room for the labels
+  // The frame's aspect, but at most twice as tall as wide: a 1x16384 frame's cells were 220 px
+  // wide and 3.6 million tall (gigabytes of sheet); its picture now narrows to fit instead.
   layout.cellHeight = layout.native ? shown[0]->height
-                                    : std::max(1, int(std::lround(double(layout.cellWidth) * frame.height / frame.width)));
+                                    : std::clamp(int(std::lround(double(layout.cellWidth) * frame.height / frame.width)), 1,
+                                                 2 * layout.cellWidth);
   layout.textScale = layout.columns * layout.cellWidth >= 1200 ? 2 : 1;   // readable on a wide sheet
   layout.margin = 8 * layout.textScale;
   layout.line = Canvas::kLineHeight * layout.textScale;

@@ -77,6 +77,21 @@ TEST_SUITE("views") {
     }
   }
 
+  // A 1x1024 frame's sheet was 464x225504 (its cells kept the frame's aspect at 220 px wide;
+  // at 1x16384 a render took 22 GB): a cell is now at most twice as tall as wide.
+  TEST_CASE("registry: a tall, thin frame's sheet stays a sheet") {
+    TempFolder temp;
+    for (const cli::StageView& view : cli::stageViews()) {
+      INFO(view.name);
+      const RunResult r = runCli(temp.path, std::string("render shadow --size 1x1024 --threads 1 --quiet --view ") + view.name +
+                                                " --out v.png");
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      const scenes::ImageData sheet = compare::readPng((temp.path / "v.png").string());
+      CHECK(sheet.height < 4 * sheet.width);
+    }
+  }
+
   TEST_CASE("invocations: one per fragment at the GL rate, a quarter per pixel of a 2x2 post pass") {
     TempFolder temp;
     for (const char* rate : {"1x1", "2x2", "4x4"}) {

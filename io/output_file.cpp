@@ -2,6 +2,7 @@
 // output_file.h).
 #include "io/output_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <sys/stat.h>
@@ -28,9 +29,36 @@ std::mutex slotMutex;
 
 constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
 
+// Temporary folders (a report being made, a child's dump), for the same handler.
+char folderPaths[kSlots][PATH_MAX];
+volatile sig_atomic_t folderUsed[kSlots];
+
+// Removes `name` under the open folder `dirfd`, and everything below it, with only calls a
+// signal handler may make (openat, getdents64, unlinkat, close: nothing allocated). The
+// folders it is for are a few levels deep; past kMaxDepth it leaves the rest.
+void removeTreeAt(int dirfd, const char* name, int depth) {
+  constexpr int kMaxDepth = 8;
+  if (unlinkat(dirfd, name, 0) == 0 || errno != EISDIR || depth > kMaxDepth) return;
+  const int fd = openat(dirfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char entries[2048];
+  for (long got; (got = getdents64(fd, entries, sizeof entries)) > 0;) {
+    for (long at = 0; at < got;) {
+      const auto* entry = reinterpret_cast<const struct dirent64*>(entries + at);
+      at += entry->d_reclen;
+      const char* child = entry->d_name;
+      if (!(child[0] == '.' && (child[1] == '\0' || (child[1] == '.' && child[2] == '\0')))) removeTreeAt(fd, child, depth + 1);
+    }
+  }
+  close(fd);
+  unlinkat(dirfd, name, AT_REMOVEDIR);
+}
+
 extern "C" void removeTempFilesAndReraise(int signal) {
   for (int i = 0; i < kSlots; ++i)
     if (tempUsed[i]) unlink(tempPaths[i]);
+  for (int i = 0; i < kSlots; ++i)
+    if (folderUsed[i]) removeTreeAt(AT_FDCWD, folderPaths[i], 0);
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -69,6 +97,29 @@ void releaseSlot(int slot) {
   tempUsed[slot] = 0;
 }
 
+}  // namespace
+
+int trackTemporaryFolder(const std::string& path) {
+  installHandlersOnce();
+  const std::string absolute = fs::absolute(path).string();   // the handler has no cwd to trust
+  std::lock_guard<std::mutex> lock(slotMutex);
+  for (int i = 0; i < kSlots; ++i) {
+    if (folderUsed[i] || absolute.size() >= PATH_MAX) continue;
+    std::memcpy(folderPaths[i], absolute.c_str(), absolute.size() + 1);
+    folderUsed[i] = 1;
+    return i;
+  }
+  return -1;   // more folders at once than slots: still removed at the end, just not on a signal
+}
+
+void untrackTemporaryFolder(int slot) {
+  if (slot < 0) return;
+  std::lock_guard<std::mutex> lock(slotMutex);
+  folderUsed[slot] = 0;
+}
+
+namespace {
+
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
   const std::string shown = path.size() > 120 ? path.substr(0, 100) + "..." : path;
   throw OutputPathError("cannot write " + shown + ": " + why);
@@ -85,12 +136,16 @@ const char* kindOf(mode_t mode) {
 
 }  // namespace
 
-void checkOutputPath(const std::string& path) {
-  if (path.empty()) refuse(path, "no file name");
+void checkPathLengths(const std::string& path) {
   if (path.size() >= PATH_MAX) refuse(path, "the path is longer than " + std::to_string(PATH_MAX - 1) + " bytes");
   for (const fs::path& part : fs::path(path))
     if (part.native().size() > NAME_MAX)
       refuse(path, "the name '" + part.native().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
+}
+
+void checkOutputPath(const std::string& path) {
+  if (path.empty()) refuse(path, "no file name");
+  checkPathLengths(path);
   struct stat info {};
   if (lstat(path.c_str(), &info) == 0) {
     if (!S_ISREG(info.st_mode)) refuse(path, std::string("it is ") + kindOf(info.st_mode) + ", not a regular file");

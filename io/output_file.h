@@ -21,6 +21,9 @@ struct OutputPathError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Throws OutputPathError when the path, or a name in it, is longer than the file system
+// allows (a folder to be made is checked with it too). Touches nothing.
+void checkPathLengths(const std::string& path);
 // Throws OutputPathError when path names something other than a regular file or nothing,
 // has a name too long, or lies in no existing folder. Touches nothing.
 void checkOutputPath(const std::string& path);
@@ -29,5 +32,12 @@ void checkOutputPath(const std::string& path);
 // and std::runtime_error "cannot write PATH: REASON" when a write, the close or the rename
 // fails (a full disk, a file-size limit: the command exits 1).
 void writeOutputFile(const std::string& path, std::string_view bytes);
+
+// A temporary folder the run removes itself when it ends (a report being made, a child
+// process's dump): tracked here, the folder and all in it are removed too when SIGINT,
+// SIGTERM, SIGHUP or SIGXFSZ ends the process first. Returns the slot to untrack it by
+// before the folder is renamed into place or removed (-1: not tracked, all slots in use).
+int trackTemporaryFolder(const std::string& path);
+void untrackTemporaryFolder(int slot);
 
 }  // namespace compare

@@ -2,6 +2,7 @@
 #include "apps/common/sides.h"
 
 #include "apps/common/child_process.h"
+#include "apps/common/temporary_folder.h"
 
 #include <unistd.h>
 
@@ -64,27 +65,9 @@ void dumpTargets(const std::string& folder, const std::vector<Target>& targets) 
   compare::writeTargetDump(folder, targets, [](const std::string& path) { std::cout << "wrote " << path << std::endl; });
 }
 
-// A temporary folder, removed with everything in it when this goes out of scope.
-namespace {
-struct TempFolder {
-  std::string path;
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "raster-compare-XXXXXX").string();
-    if (!mkdtemp(pattern.data()))
-      throw std::runtime_error("cannot create a temporary folder: " + std::string(std::strerror(errno)));
-    path = pattern;
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
-}  // namespace
-
 // Renders one frame with GL under another Gallium driver, in a child process of this program.
 Side renderInChild(const Frame& frame, const std::string& driver) {
-  TempFolder dump;
+  TemporaryFolder dump;
   std::vector<std::string> args = {"raster", "render", frame.scene, "--backend", "gl", "--threads", std::to_string(frame.threads),
                                    "--dump", dump.path, "--out", dump.path + "/out.png"};
   const std::vector<std::string> frameOptions = childFrameOptions(frame);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/common/cli_options.h"
+#include "io/output_file.h"
 
 namespace report {
 namespace {
@@ -69,16 +70,20 @@ ReportFolder::ReportFolder(const std::string& out) : out_(out), target_(folderOf
   if (!mkdtemp(pattern.data()))
     throw std::runtime_error("cannot create a folder beside " + out + ": " + std::strerror(errno));
   work_ = pattern;
+  slot_ = compare::trackTemporaryFolder(work_.string());   // removed if a signal ends the run
   scratch_ = work_ / ".scratch";
   fs::create_directory(scratch_);
 }
 
 ReportFolder::~ReportFolder() {
+  compare::untrackTemporaryFolder(slot_);
   std::error_code ignored;
   if (!moved_) fs::remove_all(work_, ignored);
 }
 
 void ReportFolder::moveIntoPlace() {
+  compare::untrackTemporaryFolder(slot_);   // from here it becomes DIR: a signal must not remove it
+  slot_ = -1;
   fs::remove_all(scratch_);
   chmod(work_.c_str(), 0755);   // mkdtemp made it private; a report is for reading
   std::error_code error;

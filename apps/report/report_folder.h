@@ -36,6 +36,7 @@ class ReportFolder {
  private:
   std::string out_;
   fs::path target_, parent_, work_, scratch_;
+  int slot_ = -1;   // work_ tracked for the signal handler (io/output_file.h)
   bool moved_ = false;
 };
 

@@ -122,4 +122,33 @@ TEST_SUITE("hostile") {
       expectOnly(cwd, {});
     }
   }
+  // A report is made in a hidden folder beside DIR, and a softpipe side dumps into a folder
+  // under TMPDIR: both were left behind when the run was interrupted. The signal comes once
+  // the folder exists (the child's first file held by the writer's stall); the whole job,
+  // the child with it, gets it, as from Ctrl-C.
+  TEST_CASE("output: SIGTERM or SIGINT mid-run removes the report's and the child's temporary folders") {
+    const std::pair<const char*, const char*> runs[] = {
+        {"report shadow --size 32x24 --pixels 0 --no-default-include --quiet --out r", ".r.report-*/.scratch"},
+        {"compare shadow --size 32x24 --reference softpipe --quiet --out c", "tmp/raster-*/.raster-*.tmp"}};
+    for (const auto& [command, inside] : runs)
+      for (const char* signal : {"TERM", "INT"}) {
+        TempFolder temp;
+        const fs::path cwd = temp.path / "cwd";
+        fs::create_directories(cwd / "tmp");
+        std::string script = "set -m\nTMPDIR=$PWD/tmp RASTER_TEST_STALL_BEFORE_RENAME=20000 \"$RASTER\" ";
+        script += command;
+        script += " & pid=$!\nfor i in $(seq 600); do ls -d ";
+        script += inside;
+        script += " >/dev/null 2>&1 && break; sleep 0.05; done\nls -d ";
+        script += inside;
+        script += " >/dev/null 2>&1 || exit 90\nkill -";
+        script += signal;
+        script += " -$pid; wait $pid";
+        const RunResult r = runShell(cwd, script);
+        INFO(command << ", SIG" << signal << ": status " << r.status << " signal " << r.signal << " " << r.err);
+        CHECK(r.status != 90);   // the folder was there to be removed
+        expectOnly(cwd, {"tmp"});
+        CHECK(fs::is_empty(cwd / "tmp"));
+      }
+  }
 }

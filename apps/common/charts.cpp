@@ -46,8 +46,16 @@ void checkChartTools(const std::string& script) {
 }
 
 void drawChart(const std::string& script, const std::string& jsonPath, const std::string& outBase) {
+  const std::string command = python() + " " + chartScript(script) + " " + jsonPath;
+  // Each chart file is removed first and must be there after: an interpreter that exits 0
+  // without drawing (RASTER_PYTHON=/bin/true) would otherwise leave none, or the last run's.
+  std::error_code ignored;
+  for (const char* extension : {".png", ".svg"}) fs::remove(outBase + extension, ignored);
   if (runPython({chartScript(script), jsonPath, "--out", outBase}) != 0)
-    throw std::runtime_error("the chart script failed: " + python() + " " + chartScript(script) + " " + jsonPath);
+    throw std::runtime_error("the chart script failed: " + command);
+  for (const char* extension : {".png", ".svg"})
+    if (!fs::is_regular_file(outBase + extension))
+      throw std::runtime_error("the chart script wrote no " + outBase + extension + ": " + command);
 }
 
 }  // namespace cli

@@ -25,6 +25,7 @@
 #include "apps/common/number_text.h"
 #include "apps/common/child_process.h"
 #include "apps/common/sides.h"
+#include "apps/common/temporary_folder.h"
 #include "compare/metrics.h"
 #include "io/output_file.h"
 #include "raster/methods.h"
@@ -217,9 +218,9 @@ json runScene(const TradeoffArgs& args, const Frame& frame, int threads, const s
   std::vector<Point> all = std::move(points);
   all.push_back(std::move(gl));
   if (!args.noSoftpipe) {
-    const std::string jsonPath = (fs::path(outFolder) / ".softpipe-bench.json").string();
+    const TemporaryFolder scratch;
+    const std::string jsonPath = (fs::path(scratch.path) / "softpipe-bench.json").string();
     const auto [softpipeMs, childGlMs] = timeSoftpipe(frame, threads, args.softpipeFrames, args.warmup, jsonPath);
-    fs::remove(jsonPath);
     Point softpipe{"softpipe", "driver", std::nullopt, {}, 0, {}};
     // Carried over through the gl set, the same work in both processes.
     softpipe.medianMs = softpipeMs * (glSetMs / childGlMs);
@@ -311,7 +312,6 @@ int runTradeoff(const TradeoffArgs& args) {
   if (args.softpipeFrames < 1 || args.softpipeFrames > 100) throw UsageError("--softpipe-frames: out of range (1..100)");
   checkOutputFolder("--out", args.out);
   checkChartTools("tradeoff_chart.py");
-  fs::create_directories(args.out);
 
   const int threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
@@ -328,6 +328,7 @@ int runTradeoff(const TradeoffArgs& args) {
     markdown += markdownTable(result);
     results.push_back(std::move(result));
   }
+  fs::create_directories(args.out);   // now, with the results: a run that fails leaves no folder
   const std::string jsonPath = (fs::path(args.out) / "tradeoff.json").string();
   compare::writeOutputFile(jsonPath, (results.size() == 1 ? results[0] : results).dump(2) + "\n");
   compare::writeOutputFile((fs::path(args.out) / "tradeoff.md").string(), markdown);

@@ -244,6 +244,8 @@ int runBench(const BenchArgs& args) {
     nlohmann::json json = {{"scene", frame.scene},
                            {"size", {frame.width, frame.height}},
                            {"time", frame.time},
+                           {"instances", frame.instances},
+                           {"sets", frame.sets},
                            {"threads", threads},
                            {"methods", raster::methodLabel(frame.methods)},
                            {"backends", nlohmann::json::array()},

@@ -261,6 +261,11 @@ void checkOutputPng(const std::string& option, const std::string& path) {
 
 void checkOutputFolder(const std::string& option, const std::string& path) {
   if (path.empty()) throw UsageError(option + ": names no folder");
+  try {
+    compare::checkPathLengths(path);   // a name too long was "filesystem error" at the end (exit 1)
+  } catch (const compare::OutputPathError& e) {
+    throw UsageError(option + ": " + e.what());
+  }
   fs::path folder = fs::path(path).lexically_normal();
   if (!folder.has_filename()) folder = folder.parent_path();   // "out/" -> "out"
   std::error_code error;

@@ -76,6 +76,24 @@ TEST_SUITE("hostile") {
     CHECK(child.out.find("scene: shadow at 20x14, t=2.000") != std::string::npos);
   }
 
+  // A folder name past NAME_MAX was "filesystem error: cannot create directory" (exit 1) at
+  // the end of the run, after render had written its PNG.
+  TEST_CASE("output: an output folder's name too long is refused before the run") {
+    const std::string longName(300, 'y');
+    expectBadInput("exec \"$RASTER\" render shadow --size 16x12 --out a.png --dump " + longName, "--dump: cannot write");
+    expectBadInput("exec \"$RASTER\" compare shadow --size 16x12 --out " + longName, "is longer than 255 bytes");
+  }
+
+  // With an interpreter that exits 0 and draws nothing, tradeoff said it wrote its chart.
+  TEST_CASE("output: a chart script that writes no chart is a failure") {
+    TempFolder temp;
+    const RunResult r = runShell(temp.path, "RASTER_PYTHON=/bin/true exec \"$RASTER\" tradeoff shadow --size 16x12 --frames 1 "
+                                            "--warmup 0 --no-softpipe --quiet --threads 1 --out o");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    CHECK(r.err.find("the chart script wrote no o/tradeoff.png") != std::string::npos);
+  }
+
   // `raster methods --json > /dev/full` exited 0: the listing was lost without a word.
   TEST_CASE("output: a listing that cannot be written is a failure, not a success") {
     TempFolder temp;

@@ -287,20 +287,19 @@ TEST_SUITE("sweep") {
     }, "\"fails\"");
     expectEditRefused([](json& s) { s["shard_values"] = json::array({0, 1, 2, 3}); }, "\"shard_values\"");
 
-    // Points that fail, by PSNR and by non-finite pixels, agree with their flags: a sharded
-    // failing sweep merges into the unsharded one, byte for byte.
-    const std::string failing = "sweep hdr --param intensity=1:1e6:3:log --size 32x24 --methods gl,half=rne --no-softpipe "
+    // Points that fail, by PSNR and by non-finite pixels, agree with their flags: the shards
+    // of a failing sweep merge (that shards merge byte for byte into the unsharded sweep.json
+    // is the merge case above).
+    const std::string failing = "sweep hdr --param intensity=1:1e6:3:log --size 16x12 --methods gl,half=rne --no-softpipe "
                                 "--threshold 65 --quiet";
-    REQUIRE(runCli(temp.path, failing + " --out whole").status == 0);
     REQUIRE(runCli(temp.path, failing + " --shard 1/2 --out half1").status == 0);
     REQUIRE(runCli(temp.path, failing + " --shard 2/2 --out half2").status == 0);
     const RunResult failingMerged = runCli(temp.path, "sweep-merge half2 half1 --out failing");
     CAPTURE(failingMerged.err);
     REQUIRE(failingMerged.status == 0);
-    const std::string whole = readText(temp.path / "whole" / "sweep.json");
-    CHECK(readText(temp.path / "failing" / "sweep.json") == whole);
-    CHECK(whole.find(" dB < 65 dB") != std::string::npos);
-    CHECK(whole.find("non-finite pixels") != std::string::npos);
+    const std::string failed = readText(temp.path / "failing" / "sweep.json");
+    CHECK(failed.find(" dB < 65 dB") != std::string::npos);
+    CHECK(failed.find("non-finite pixels") != std::string::npos);
 
     // A folder where the shard's sweep.json should be.
     fs::remove(temp.path / "edited" / "sweep.json");

@@ -76,7 +76,10 @@ double parseParamValue(const std::string& scene, const std::string& name, const 
   if (!parsed) throw ParamError(name + ": '" + value + "' is not a finite number");
   const double v = *parsed;
   if (spec.integer && v != std::floor(v)) throw ParamError(name + ": '" + value + "' is not a whole number");
-  if (v < spec.min || v > spec.max) {
+  // A scene takes its parameters as floats: the range holds for the float it gets, so the
+  // text a child process is handed back ("%.9g" of that float: 1e30 is 1.00000002e+30) passes.
+  const bool outside = spec.integer ? (v < spec.min || v > spec.max) : (float(v) < float(spec.min) || float(v) > float(spec.max));
+  if (outside) {
     char range[96];
     std::snprintf(range, sizeof range, "%g..%g", spec.min, spec.max);
     throw ParamError(name + ": " + value + " is out of range (" + range + ")");

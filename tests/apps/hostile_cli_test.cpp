@@ -52,6 +52,11 @@ TEST_SUITE("hostile") {
       expectBadInput(std::string("exec \"$RASTER\" render shadow --set time=") + time, "is not a finite number");
     }
     expectBadInput("exec \"$RASTER\" compare shadow --max-rmse 0x1 --out cmp", "--max-rmse: '0x1' is not a finite number");
+    // The range's top, as a child process gets it back (the float of 1e30 is 1.00000002e+30).
+    TempFolder temp;
+    const RunResult top = runCli(temp.path, "compare shadow --size 16x12 --time 1e30 --reference softpipe --max-rmse 1000 --quiet --out cmp");
+    INFO(top.err);
+    CHECK(top.status == 0);
   }
 
   // An empty value was taken as the option left out: `--max-rmse ""` turned a CI gate off,

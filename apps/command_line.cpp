@@ -16,6 +16,7 @@
 #include "apps/common/cli_options.h"
 #include "io/output_file.h"
 #include "scenes/scene.h"
+#include "scenes/scene_params.h"
 
 namespace cli {
 namespace {
@@ -45,15 +46,17 @@ void refuseEmptyValues(const CLI::App& command) {
   }
 }
 
-// A scene parameter given twice, as --set NAME=VALUE (or a sweep's --param NAME=RANGE) and as
-// the command's own --NAME (time, size, instances): neither silently wins.
+// A frame option given twice, as --set NAME=VALUE (or a sweep's --param NAME=RANGE) and as
+// the command's own --NAME (scenes::isFrameOption: time, size, instances): neither silently
+// wins. Other names (--set threads=2 beside --threads) are left to --set's own check.
 void refuseParameterGivenTwice(const CLI::App& command) {
   for (const char* byName : {"--set", "--param"}) {
     const CLI::Option* option = command.get_option_no_throw(byName);
     if (option == nullptr) continue;
     for (const std::string& text : option->results()) {
       const std::string name = text.substr(0, text.find('='));
-      const CLI::Option* rival = name.empty() ? nullptr : command.get_option_no_throw("--" + name);
+      if (!scenes::isFrameOption(name)) continue;
+      const CLI::Option* rival = command.get_option_no_throw("--" + name);
       if (rival != nullptr && rival != option && rival->count() > 0)
         throw UsageError(std::string(byName) + " " + text + " and --" + name + " both give the " + name + "; give one");
     }

@@ -115,8 +115,9 @@ std::string hexBytes(const std::string& data, size_t count) {
   return out;
 }
 
-// The whole file, after checking that it is there, is a file, can be read and is not empty.
-std::string readAssetFile(const std::string& path) {
+}  // namespace
+
+void checkAssetFileExists(const std::string& path) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (st.type() == fs::file_type::not_found) {
@@ -133,7 +134,14 @@ std::string readAssetFile(const std::string& path) {
   }
   if (fs::is_directory(st)) fail(path, "is a directory, not a file");
   if (!fs::is_regular_file(st)) fail(path, "is not a regular file");
+}
 
+namespace {
+
+// The whole file, after checking that it is there, is a file, can be read and is not empty.
+std::string readAssetFile(const std::string& path) {
+  checkAssetFileExists(path);
+  std::error_code ec;
   errno = 0;
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) {

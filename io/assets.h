@@ -27,6 +27,11 @@ namespace scenes {
 // assetDirectory(options) + "/" + relative.
 std::string assetPath(const SceneOptions& options, const std::string& relative);
 
+// Throws SceneError ("asset PATH: no such file", "is a directory, not a file", ...) unless
+// `path` names a regular file: the first checks every loader below makes, with their words,
+// for a caller that must know up front (sweep --check) and reads the file only later.
+void checkAssetFileExists(const std::string& path);
+
 // ---- the cat mesh -------------------------------------------------------------------------
 
 // What the OBJ held, for tests and reports.

@@ -92,8 +92,12 @@ glm::vec3 lightAtElevation(float yaw, float elevationDegrees) {
   return {std::cos(yaw) * std::cos(e), std::sin(e), std::sin(yaw) * std::cos(e)};
 }
 
+bool isFrameOption(std::string_view name) {
+  return name == "time" || name == "size" || name == "instances";
+}
+
 void applyParam(SceneParams& params, const std::string& name, double value) {
-  if (name == "time" || name == "size" || name == "instances")
+  if (isFrameOption(name))
     throw ParamError("parameter '" + name + "' is an option of the frame, not a scene setting");
   params.set(name, float(value));
 }

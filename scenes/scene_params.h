@@ -79,7 +79,12 @@ ParamSpec offsetScale();   // "offset_scale"
 // above the ground: the form light_elevation gives the scenes' orbiting suns.
 glm::vec3 lightAtElevation(float yaw, float elevationDegrees);
 
-// Sets a parameter in SceneParams (not time, size or instances, which the frame holds).
+// Whether `name` is one of the frame's own options (time, size, instances): a scene
+// parameter a command line may give as --set NAME= or as --NAME, which the frame holds
+// rather than SceneParams. The one list: --set, childFrameOptions and applyParam read it.
+bool isFrameOption(std::string_view name);
+
+// Sets a parameter in SceneParams (not one of the frame's own options: isFrameOption).
 void applyParam(SceneParams& params, const std::string& name, double value);
 
 }  // namespace scenes

@@ -120,7 +120,7 @@ std::vector<std::string> childFrameOptions(const Frame& frame) {
   if (!frame.assets.empty()) options.insert(options.end(), {"--assets", frame.assets});
   for (const std::string& set : frame.sets) {
     const std::string name = set.substr(0, set.find('='));
-    if (name != "time" && name != "size" && name != "instances") options.insert(options.end(), {"--set", set});
+    if (!scenes::isFrameOption(name)) options.insert(options.end(), {"--set", set});
   }
   return options;
 }

@@ -185,16 +185,12 @@ void checkSceneAtEveryValue(const std::vector<Frame>& frames, const std::string&
 }
 
 // The files the scene reads (its registry row's assets) are looked for, not read: a missing
-// one stops the sweep here rather than at its first render. What a file holds is checked as
-// it loads (io/assets.h), as for every command.
+// one stops the sweep here rather than at its first render, in the loaders' own words
+// (io/assets.h). What a file holds is checked as it loads, as for every command.
 void checkAssetsPresent(const Frame& frame) {
   const scenes::SceneOptions options = sceneOptions(frame);
-  for (const std::string& asset : scenes::sceneEntry(frame.scene).assets) {
-    const std::string path = scenes::assetPath(options, asset);
-    std::error_code error;
-    if (!fs::is_regular_file(path, error))
-      throw scenes::SceneError("asset " + path + ": " + (fs::exists(path, error) ? "not a regular file" : "no such file"));
-  }
+  for (const std::string& asset : scenes::sceneEntry(frame.scene).assets)
+    scenes::checkAssetFileExists(scenes::assetPath(options, asset));
 }
 
 // The least memory a value needs: the final images of llvmpipe and of the side scored

@@ -73,6 +73,8 @@ TEST_SUITE("hostile") {
     expectBadInput("exec \"$RASTER\" render shadow --set size=64x48 --size 32x24 --out x.png", "--set size=64x48 and --size both give the size");
     expectBadInput("exec \"$RASTER\" render hdr --size 16x12 --instances 5 --set instances=7 --out x.png", "both give the instances");
     expectBadInput("exec \"$RASTER\" sweep shadow --param time=0:2:3 --time 3 --out s", "--param time=0:2:3 and --time both give the time");
+    // A name that is no scene parameter is that, not "given twice" (--threads is no frame option).
+    expectBadInput("exec \"$RASTER\" render hdr --size 16x12 --set threads=2 --threads 2 --out x.png", "unknown parameter 'threads'");
     // Given once, by --set, it reaches a child process (softpipe's render) as its option only.
     TempFolder temp;
     const RunResult child = runCli(temp.path, "compare shadow --set size=20x14 --set time=2 --reference softpipe --max-rmse 1000 --quiet --out cmp");

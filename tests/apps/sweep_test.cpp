@@ -226,7 +226,7 @@ TEST_SUITE("sweep") {
     TempFolder temp;
     fs::create_directory(temp.path / "noassets");
     expectRefused("sweep deferred --param time=1:2:2 --assets " + shellQuote((temp.path / "noassets").string()) + small,
-                  "concrete_cat_statue.obj");
+                  "concrete_cat_statue.obj: no such file (the folder");   // the loader's own words
     expectRefused("sweep shadow --param time=1:2:2 --max-memory 1K" + small, "--max-memory");
     const RunResult valid = runCli(temp.path, "sweep pbr --param cascade_split1=0.5:9:3" + small);
     CAPTURE(valid.err);

@@ -54,7 +54,16 @@ void removeTreeAt(int dirfd, const char* name, int depth) {
   unlinkat(dirfd, name, AT_REMOVEDIR);
 }
 
+// Child processes running (a softpipe side, a report's views), for the same handler: a
+// signal sent to this process alone (kill PID, not Ctrl-C to the whole job) would otherwise
+// leave them running on after it, writing into folders it removes.
+volatile sig_atomic_t childPids[kSlots];
+
 extern "C" void removeTempFilesAndReraise(int signal) {
+  // The children first, so that each removes its own temporary files while this one
+  // removes the folders; a file-size limit reached here is not theirs, so they are told TERM.
+  for (int i = 0; i < kSlots; ++i)
+    if (childPids[i] > 0) kill(pid_t(childPids[i]), signal == SIGXFSZ ? SIGTERM : signal);
   for (int i = 0; i < kSlots; ++i)
     if (tempUsed[i]) unlink(tempPaths[i]);
   for (int i = 0; i < kSlots; ++i)
@@ -73,7 +82,10 @@ void installHandlersOnce() {
       if (sigaction(signal, nullptr, &current) != 0 || current.sa_handler == SIG_IGN) continue;
       struct sigaction action {};
       action.sa_handler = removeTempFilesAndReraise;
+      // One clean-up at a time: a second signal (Ctrl-C's INT, then the parent's TERM)
+      // waits until the first has removed everything and ended the process.
       sigemptyset(&action.sa_mask);
+      for (int other : kCleanupSignals) sigaddset(&action.sa_mask, other);
       sigaction(signal, &action, nullptr);
     }
   });
@@ -116,6 +128,23 @@ void untrackTemporaryFolder(int slot) {
   if (slot < 0) return;
   std::lock_guard<std::mutex> lock(slotMutex);
   folderUsed[slot] = 0;
+}
+
+int trackChildProcess(int pid) {
+  installHandlersOnce();
+  std::lock_guard<std::mutex> lock(slotMutex);
+  for (int i = 0; i < kSlots; ++i) {
+    if (childPids[i] > 0) continue;
+    childPids[i] = pid;
+    return i;
+  }
+  return -1;   // more children at once than slots: they still end with the job, not alone
+}
+
+void untrackChildProcess(int slot) {
+  if (slot < 0) return;
+  std::lock_guard<std::mutex> lock(slotMutex);
+  childPids[slot] = 0;
 }
 
 namespace {

@@ -7,7 +7,8 @@
 //   - the bytes go to a temporary file in the same folder (".raster-XXXXXX.tmp"), every
 //     write and the close are checked, and the temporary file is renamed over the path;
 //   - on any failure the temporary file is removed, and so it is when SIGINT, SIGTERM,
-//     SIGHUP or SIGXFSZ ends the process meanwhile (a handler removes it and re-raises).
+//     SIGHUP or SIGXFSZ ends the process meanwhile (a handler removes it and re-raises;
+//     the same handler passes the signal on to tracked child processes, below).
 #pragma once
 
 #include <stdexcept>
@@ -39,5 +40,12 @@ void writeOutputFile(const std::string& path, std::string_view bytes);
 // before the folder is renamed into place or removed (-1: not tracked, all slots in use).
 int trackTemporaryFolder(const std::string& path);
 void untrackTemporaryFolder(int slot);
+
+// A child process this one waits for: when SIGINT, SIGTERM or SIGHUP ends this process, the
+// handler sends the child the same signal (SIGXFSZ: SIGTERM) before removing the files, so
+// that a signal to this process alone does not leave the child running. Untrack the slot
+// once the child has been waited for (its pid may then be reused).
+int trackChildProcess(int pid);
+void untrackChildProcess(int slot);
 
 }  // namespace compare

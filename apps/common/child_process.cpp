@@ -10,6 +10,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/output_file.h"
+
 extern char** environ;
 
 namespace cli {
@@ -47,6 +49,14 @@ int runChildProcess(const std::vector<std::string>& argv, const std::string& wha
                         : posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argvPointers.data(), envPointers.data());
   posix_spawn_file_actions_destroy(&actions);
   if (error != 0) throw std::runtime_error("cannot start " + what + ": " + std::strerror(error));
+  // Tracked while it runs, so that a signal ending this process ends it too. It is untracked
+  // while still a zombie (waited for with WNOWAIT) and reaped after: its pid cannot have been
+  // given to another process while the signal handler may still send to it.
+  const int slot = compare::trackChildProcess(pid);
+  siginfo_t ended{};
+  while (waitid(P_PID, id_t(pid), &ended, WEXITED | WNOWAIT) < 0 && errno == EINTR) {
+  }
+  compare::untrackChildProcess(slot);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) throw std::runtime_error("waiting for " + what + ": " + std::strerror(errno));

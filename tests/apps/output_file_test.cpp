@@ -151,4 +151,27 @@ TEST_SUITE("hostile") {
         CHECK(fs::is_empty(cwd / "tmp"));
       }
   }
+
+  // `kill PID` reaches the parent alone, not its job: the softpipe child it waits for, held
+  // 20 s by the writer's stall, went on running after the parent had gone. The parent's
+  // handler passes the signal on; the child is looked for by its parent's pid in /proc.
+  TEST_CASE("output: a signal to the parent alone ends the child process it waits for") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directories(cwd / "tmp");
+    const RunResult r = runShell(
+        cwd,
+        "TMPDIR=$PWD/tmp RASTER_TEST_STALL_BEFORE_RENAME=20000 \"$RASTER\" compare shadow --size 32x24 "
+        "--reference softpipe --quiet --out c & pid=$!\n"
+        "for i in $(seq 600); do ls -d tmp/raster-*/.raster-*.tmp >/dev/null 2>&1 && break; sleep 0.05; done\n"
+        "child=$(grep -l \"^PPid:[[:space:]]*$pid\\$\" /proc/[0-9]*/status 2>/dev/null | head -1 | cut -d/ -f3)\n"
+        "[ -n \"$child\" ] || exit 90\n"
+        "kill -TERM $pid; wait $pid\n"
+        "for i in $(seq 100); do kill -0 $child 2>/dev/null || exit 0; sleep 0.05; done\n"
+        "kill -KILL $child; exit 91");
+    INFO("status " << r.status << " " << r.err);
+    CHECK(r.status == 0);   // 90: no child found; 91: the child outlived its parent by 5 s
+    expectOnly(cwd, {"tmp"});
+    CHECK(fs::is_empty(cwd / "tmp"));
+  }
 }

@@ -21,11 +21,32 @@
 namespace cli {
 namespace {
 
-// One line, as the single error line demands.
+// One line, as the single error line demands, that a person can read: a word (a run without
+// spaces: a value, a path) longer than kLongWord bytes, echoed from the command line, keeps
+// its head and tail around how much was left out. Cuts fall between UTF-8 characters.
 std::string oneLine(std::string text) {
   for (char& c : text)
     if (c == '\n') c = ' ';
-  return text;
+  constexpr size_t kLongWord = 300, kHead = 120, kTail = 60;
+  const auto characterStart = [&](size_t at) {   // back to the first byte of at's character
+    while (at > 0 && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+    return at;
+  };
+  std::string shown;
+  for (size_t start = 0; start < text.size();) {
+    const size_t space = text.find(' ', start), end = space == std::string::npos ? text.size() : space;
+    if (end - start <= kLongWord) {
+      shown.append(text, start, end - start);
+    } else {
+      const size_t headEnd = characterStart(start + kHead), tailStart = characterStart(end - kTail);
+      shown.append(text, start, headEnd - start);
+      shown += "...[" + std::to_string(tailStart - headEnd) + " bytes not shown]...";
+      shown.append(text, tailStart, end - tailStart);
+    }
+    if (end < text.size()) shown += ' ';
+    start = end + 1;
+  }
+  return shown;
 }
 
 // Bad input: one line on stderr, exit status 2.

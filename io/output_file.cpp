@@ -149,8 +149,15 @@ void untrackChildProcess(int slot) {
 
 namespace {
 
+// The first `bytes` bytes of text at most, cut between UTF-8 characters (a message quotes it).
+std::string headOf(std::string_view text, size_t bytes) {
+  if (text.size() <= bytes) return std::string(text);
+  while (bytes > 0 && (static_cast<unsigned char>(text[bytes]) & 0xC0) == 0x80) --bytes;
+  return std::string(text.substr(0, bytes));
+}
+
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
-  const std::string shown = path.size() > 120 ? path.substr(0, 100) + "..." : path;
+  const std::string shown = path.size() > 120 ? headOf(path, 100) + "..." : path;
   throw OutputPathError("cannot write " + shown + ": " + why);
 }
 
@@ -169,7 +176,7 @@ void checkPathLengths(const std::string& path) {
   if (path.size() >= PATH_MAX) refuse(path, "the path is longer than " + std::to_string(PATH_MAX - 1) + " bytes");
   for (const fs::path& part : fs::path(path))
     if (part.native().size() > NAME_MAX)
-      refuse(path, "the name '" + part.native().substr(0, 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
+      refuse(path, "the name '" + headOf(part.native(), 40) + "...' is longer than " + std::to_string(NAME_MAX) + " bytes");
 }
 
 void checkOutputPath(const std::string& path) {

@@ -54,9 +54,10 @@ std::string kindName(Kind kind) {
   return "";
 }
 
-// A field's JSON as the error quotes it: at most a line's worth (a field may hold a list).
+// A field's JSON as the error quotes it: at most a line's worth (a field may hold a list),
+// non-ASCII escaped so that the cut falls between characters.
 std::string quoted(const json& value) {
-  const std::string text = value.dump();
+  const std::string text = value.dump(-1, ' ', true);
   return text.size() <= 40 ? text : text.substr(0, 37) + "...";
 }
 

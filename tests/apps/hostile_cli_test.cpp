@@ -68,6 +68,28 @@ TEST_SUITE("hostile") {
     expectBadInput("exec \"$RASTER\" sweep shadow --param near=0.01:0.1:2 --shard '' --out s", "--shard: an empty value");
   }
 
+  // A 5000-character value was echoed whole: a 5000-character error line. A long word keeps
+  // its head and tail, and a cut never splits a UTF-8 character (the path's cut neither).
+  TEST_CASE("values: a very long value is shown by its head and tail in the error line") {
+    expectBadInput("exec \"$RASTER\" render shadow --set near=$(printf '1%.0s' $(seq 5000))x --out x.png",
+                   "...[4823 bytes not shown]...111");
+    TempFolder temp;
+    std::string command = "render shadow --set near=";   // appended piece by piece: GCC 12 reads a
+    command.append(1000, '7');                           // chain of operator+ here as a copy past
+    command += "x --out x.png";                          // a string's end (-Warray-bounds)
+    const RunResult r = runCli(temp.path, command);
+    CHECK(r.status == 2);
+    CHECK(r.err.size() < 400);
+    CHECK(r.err.find("7x'") != std::string::npos);   // the tail, where the wrong character is
+    std::string accents;
+    for (int i = 0; i < 200; ++i) accents += "\xc3\xa9";   // é, two bytes each
+    const RunResult path = runCli(temp.path, "render shadow --size 8x6 --out " + accents.append("/x.png"));
+    CHECK(path.status == 2);
+    for (size_t at = path.err.find("\xc3"); at != std::string::npos; at = path.err.find('\xc3', at + 2))
+      CHECK(static_cast<unsigned char>(path.err[at + 1]) == 0xa9);   // every é whole
+    CHECK(path.err.find("\xc3...") == std::string::npos);
+  }
+
   // `--set size=64x48 --size 32x24` rendered 64x48: a parameter given two ways is ambiguous.
   TEST_CASE("values: a parameter given by --set (or a sweep's --param) and by its own option is refused") {
     expectBadInput("exec \"$RASTER\" render shadow --set size=64x48 --size 32x24 --out x.png", "--set size=64x48 and --size both give the size");

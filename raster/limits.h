@@ -48,12 +48,12 @@ constexpr float kMaxWindowCoordinate = float(1 << 21);
 // unused location costs a (0, 0, 0, 1) plane per vertex group.
 constexpr int kMaxVertexAttributes = 8;
 
-// Interpolated floats per vertex: GL 3.3 guarantees 64 components; the scenes use at most 16.
+// Interpolated floats per vertex: GL 3.3 guarantees 64 components; the scenes use at most 10.
 // A fragment group carries this many lane values on the stack.
 constexpr int kMaxVaryingFloats = 32;
 
-// Colour attachments written at once: GL 3.3 guarantees 8 draw buffers; the deferred
-// G-buffer writes 3.
+// Colour attachments written at once: GL 3.3 guarantees 8 draw buffers; pbr's
+// G-buffer writes 4, deferred's 3.
 constexpr int kMaxColorOutputs = 4;
 
 // ---- clipping ------------------------------------------------------------------------------

@@ -400,7 +400,9 @@ void Renderer::flush() {
     const int tiles = bins_.tileCount();
     const bool fewTiles = pool_.threads() > 1 && tiles < 8 * pool_.threads() && !viewRecorder_ && !history_;
     workItems_.clear();
+    binSizes_.resize(size_t(tiles));
     for (int tile = 0; tile < tiles; ++tile) {
+      binSizes_[size_t(tile)] = bins_.bin(tile).size();
       const TileBounds whole = bins_.bounds(tile);
       const bool banded = fewTiles && bins_.bin(tile).size() <= kBandedTileMaxTriangles;
       const int bandRows = banded ? limits::kRegionSize : limits::kTileSize;
@@ -410,7 +412,7 @@ void Renderer::flush() {
     // A depth-only pass's heavy tiles walk their triangles in ranges on several threads, the
     // later ranges into copies of the depth target folded in after the loop (tile/depth_ranges.h).
     if (pool_.threads() > 1 && !coarse && !viewRecorder_ && !history_ && mayWalkDepthRanges(draws_, framebuffer_))
-      if (const int ranges = cutHeavyTiles(workItems_, bins_, pool_.threads()); ranges > 1)
+      if (const int ranges = cutHeavyTiles(workItems_, binSizes_, pool_.threads()); ranges > 1)
         depthCopies_.prepare(framebuffer_, ranges - 1);
     if (std::any_of(draws_.begin(), draws_.end(), [](const DrawRecord& d) { return d.samplesAroundPixel; }))
       orderAlongHilbertCurve();

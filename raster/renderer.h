@@ -98,6 +98,7 @@ class Renderer {
   // flush()'s items: the pass's tiles, bands of them where the tiles are few, or ranges of
   // a heavy depth-only tile's triangles (tile/depth_ranges.h), and those ranges' copies.
   std::vector<TileWorkItem> workItems_;
+  std::vector<size_t> binSizes_;   // each tile's bin size, the pass's, for cutHeavyTiles
   DepthRangeCopies depthCopies_;
   std::vector<TileBins> binParts_;   // a large draw's parts, binned in parallel, then appended to bins_
   ShadedVertices shaded_;   // the current draw's vertex records: kept, so no draw allocates them anew

@@ -72,7 +72,7 @@ inline void packRgba8<simd::Float8>(const glsl::vec4<simd::Float8>& color, uint3
 }
 
 // A whole 8-lane group, not blended, written row by row. The group is two quads side by
-// side (tile/lane_layout.h), so lanes 0 1 4 5 are four neighbouring texels of one
+// side (simd/lane_layout.h), so lanes 0 1 4 5 are four neighbouring texels of one
 // row, starting at texel[0], and lanes 2 3 6 7 of the other, starting at texel[2]: one
 // store per row, or per pair of texels for RGBA16F, instead of one per lane.
 inline void writeRgba8Rows(const glsl::vec4<simd::Float8>& color, uint8_t* texels, const size_t* texel) {

@@ -13,7 +13,7 @@
 namespace raster {
 
 template <class F>
-struct LaneLayout;   // tile/lane_layout.h
+struct LaneLayout;   // simd/lane_layout.h
 
 class ShaderInstance {
  public:

@@ -22,7 +22,7 @@
 #include "raster/texture/lookup_filter.h"
 #include "raster/texture/texture.h"
 #include "raster/texture/wrap_avx512.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster::sampling {
 

@@ -16,7 +16,7 @@
 #include "raster/simd/intrinsics.h"
 #include "raster/texture/sample_half_grid_avx512.h"
 #include "raster/texture/texture.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster::sampling {
 

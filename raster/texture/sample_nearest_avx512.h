@@ -25,7 +25,7 @@
 #include "raster/texture/sampler.h"
 #include "raster/texture/texture.h"
 #include "raster/texture/wrap_avx512.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster::sampling {
 
@@ -38,7 +38,7 @@ inline bool isNearest32(const Texture& t) {
 }
 
 // Each lane's texel offset from lane 0's where the sixteen lanes read a 4x4 block of texels
-// as raster/tile/lane_layout.h lays a block's pixels out (two 8-lane groups, quads of 2x2,
+// as raster/simd/lane_layout.h lays a block's pixels out (two 8-lane groups, quads of 2x2,
 // memory rows upward): what a post pass reads at its own pixel, or at one a whole number of
 // texels away, in an offscreen target.
 [[gnu::always_inline]] inline __m512i blockOffsets16(int width) {

@@ -13,7 +13,7 @@
 #include "raster/merge/color_write.h"
 #include "raster/shader/shader_instance.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 #include "raster/util/cycles.h"
 
 namespace raster {

@@ -8,7 +8,7 @@
 #include "raster/tile/coarse_shader.h"
 #include "raster/tile/coarse_walk.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 #include "raster/tile/walk.h"
 #include "raster/util/cycles.h"
 

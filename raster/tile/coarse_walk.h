@@ -11,7 +11,7 @@
 #include "raster/contract.h"
 #include "raster/tile/coarse_shader.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 #include "raster/tile/walk.h"
 
 namespace raster {

@@ -13,7 +13,7 @@
 
 #include "raster/contract.h"
 #include "raster/limits.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster {
 

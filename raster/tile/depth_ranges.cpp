@@ -2,6 +2,7 @@
 #include "raster/tile/depth_ranges.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace raster {
 
@@ -28,9 +29,8 @@ int depthRangeCount(size_t binSize, size_t passEntries, int threads) {
   return int(std::min({size_t(threads), size_t(kMaxDepthRanges), std::max<size_t>(binSize / kMinDepthRangeTriangles, 1)}));
 }
 
-int cutHeavyTiles(std::vector<TileWorkItem>& items, const TileBins& bins, int threads) {
-  size_t entries = 0;
-  for (int tile = 0; tile < bins.tileCount(); ++tile) entries += bins.bin(tile).size();
+int cutHeavyTiles(std::vector<TileWorkItem>& items, std::span<const size_t> binSizes, int threads) {
+  const size_t entries = std::accumulate(binSizes.begin(), binSizes.end(), size_t(0));
   // Each item with its place in the list: the items as they were at the even places, a
   // later range just after the item k / ranges of the way down.
   std::vector<std::pair<size_t, TileWorkItem>> placed;
@@ -38,7 +38,7 @@ int cutHeavyTiles(std::vector<TileWorkItem>& items, const TileBins& bins, int th
   const size_t count = items.size();
   for (size_t i = 0; i < count; ++i) {
     TileWorkItem item = items[i];
-    const size_t size = bins.bin(item.tile).size();
+    const size_t size = binSizes[size_t(item.tile)];
     const int ranges = item.count == 0 ? depthRangeCount(size, entries, threads) : 1;
     most = std::max(most, ranges);
     for (int k = 0; k < ranges; ++k) {

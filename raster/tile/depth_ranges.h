@@ -27,7 +27,6 @@
 #include <vector>
 
 #include "raster/contract.h"
-#include "raster/geometry/bin.h"
 
 namespace raster {
 
@@ -63,10 +62,12 @@ bool mayWalkDepthRanges(std::span<const DrawRecord> draws, const Framebuffer& fr
 // kMinDepthRangeTriangles.
 int depthRangeCount(size_t binSize, size_t passEntries, int threads);
 
-// Cuts each heavy tile's item into its ranges (depthRangeCount). Range k of a tile is placed
-// k / ranges of the way down the list, so that a parallel loop's first split hands a tile's
-// ranges to different threads. Returns the most ranges any tile took (1: none was cut).
-int cutHeavyTiles(std::vector<TileWorkItem>& items, const TileBins& bins, int threads);
+// Cuts each heavy tile's item into its ranges (depthRangeCount); binSizes[t] is tile t's
+// count of triangles (the pass's bins, geometry/bin.h, as the renderer holds them). Range k
+// of a tile is placed k / ranges of the way down the list, so that a parallel loop's first
+// split hands a tile's ranges to different threads. Returns the most ranges any tile took
+// (1: none was cut).
+int cutHeavyTiles(std::vector<TileWorkItem>& items, std::span<const size_t> binSizes, int threads);
 
 // The depth copies a pass's later ranges walk into: copy k serves range k + 1 of every split
 // tile. Grown, never shrunk, so the next frame's passes allocate nothing.

@@ -19,7 +19,7 @@
 #include "raster/simd/prefetch.h"
 #include "raster/texture/format.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster {
 

@@ -10,7 +10,7 @@
 #include "raster/tile/depth_test.h"
 #include "raster/tile/group_shader.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster {
 

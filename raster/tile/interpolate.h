@@ -12,7 +12,7 @@
 #include "raster/contract.h"
 #include "raster/methods.h"
 #include "raster/simd/gl_math.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster {
 

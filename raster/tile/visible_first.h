@@ -22,7 +22,7 @@
 #include "raster/tile/covered_tile.h"
 #include "raster/tile/group_shader.h"
 #include "raster/tile/interpolate.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 #include "raster/tile/walk.h"
 
 namespace raster {

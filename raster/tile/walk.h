@@ -14,7 +14,7 @@
 #include "raster/contract.h"
 #include "raster/tile/coverage.h"
 #include "raster/tile/depth_test.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 namespace raster {
 

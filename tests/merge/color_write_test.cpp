@@ -113,7 +113,7 @@ TEST_SUITE("format") {
     std::mt19937 rng(7);
     for (int round = 0; round < 400; ++round) {
       // A 4x4 block of a 4-texel-wide target: group a on rows 0-1, group b on rows 2-3, lanes
-      // in quad order (tile/lane_layout.h), rows swapped on flipped targets.
+      // in quad order (simd/lane_layout.h), rows swapped on flipped targets.
       const bool flipped = round & 1;
       size_t first[8], second[8];
       for (int i = 0; i < 8; ++i) {

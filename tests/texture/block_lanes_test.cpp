@@ -1,4 +1,4 @@
-// BlockLanes (raster/tile/lane_layout.h), the sixteen lanes of a shaded 4x4 block as the
+// BlockLanes (raster/simd/lane_layout.h), the sixteen lanes of a shaded 4x4 block as the
 // samplers' 16-lane block paths read them, against where the pipeline puts each lane's pixel:
 // LaneLayout's offsets for the block's two 8-lane groups, in an offscreen target and in a
 // window-system buffer. The samplers' lane tables are built from BlockLanes, so a change to
@@ -8,7 +8,7 @@
 #include <initializer_list>
 
 #include "raster/simd/lanes.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 
 TEST_SUITE("texture") {
   TEST_CASE("BlockLanes: each lane's column and row are its pixel's in the block, in GL's row order") {

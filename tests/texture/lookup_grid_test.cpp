@@ -8,7 +8,7 @@
 #include <random>
 
 #include "raster/texture/sampler.h"
-#include "raster/tile/lane_layout.h"
+#include "raster/simd/lane_layout.h"
 #include "tests/gl_compare_helpers.h"
 #include "tests/texture/lookup_test_helpers.h"
 

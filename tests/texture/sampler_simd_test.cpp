@@ -156,7 +156,7 @@ TEST_SUITE("texture") {
               // Every other round of anywhere keeps s left of the right edge, so that the
               // one-register path also sees the special values (a NaN s must take the last texel).
               const float sMax = round % 8 == 3 ? (float(w) - 0.75f) / float(w) : 1.5f;
-              // Even rounds lay the lanes out as a shaded block's (raster/tile/lane_layout.h:
+              // Even rounds lay the lanes out as a shaded block's (raster/simd/lane_layout.h:
               // rows 2-3 in lanes 8-15), which the NEAREST lookups of 32-bit texels read as
               // four rows where the block's texels are the texture's, every other one as a
               // window-system buffer's block (its memory rows swapped, so lanes 8-15 read

@@ -10,7 +10,8 @@ once and each holds exactly its points; its OUT/sweep.json is byte for byte the 
 
 A task that fails, or whose worker dies under it, is run again (--retries, and Dask's own
 rescheduling of a lost worker's tasks); a shard that still fails stops the run with its
-error. Bad input (raster's exit status 2) is not retried: it would fail the same way.
+error. Bad input (raster's exit status 2) is not retried: it would fail the same way, so the
+task returns raster's refusal rather than raising (Dask retries a task on any exception).
 
 Usage:
   dask_sweep.py SCENE --param NAME=FROM:TO:STEPS[:log] --shards N --out DIR
@@ -73,12 +74,10 @@ def scheduler_problem(address):
     return None
 
 
-class BadInput(Exception):
-    """raster refused the arguments (exit 2): retrying cannot help."""
-
-
 def run_shard(raster, scene, param, index, count, extra, kill_marker=None):
-    """Runs one shard in a scratch folder; returns its sweep.json text. Runs on a worker."""
+    """Runs one shard in a scratch folder. Runs on a worker. Returns (its sweep.json text,
+    None), or (None, raster's refusal) when raster exits 2: returned, not raised, so that
+    Dask does not retry what would fail the same way."""
     if kill_marker and not os.path.exists(kill_marker):
         # Test hook (--test-kill-worker-on-shard): the first attempt takes its worker down
         # for real, as a machine lost mid-run would; the retry finds the marker and runs.
@@ -89,11 +88,11 @@ def run_shard(raster, scene, param, index, count, extra, kill_marker=None):
         command = [raster, "sweep", scene, "--param", param, "--shard", f"{index}/{count}", "--out", out, "--quiet"]
         done = subprocess.run(command + list(extra), capture_output=True, text=True)
         if done.returncode == 2:
-            raise BadInput(done.stderr.strip() or f"raster sweep exited 2 for shard {index}/{count}")
+            return None, done.stderr.strip() or f"raster sweep exited 2 for shard {index}/{count}"
         if done.returncode != 0:
             raise RuntimeError(f"shard {index}/{count} failed (exit {done.returncode}): {done.stderr.strip()[-2000:]}")
         with open(os.path.join(out, "sweep.json")) as f:
-            return f.read()
+            return f.read(), None
 
 
 def parse_args(argv):
@@ -136,13 +135,16 @@ def parse_args(argv):
 
 
 def check_arguments(args):
-    """Lets raster check everything (range, methods, size, the shard count, the output folder:
-    the one the merge writes) before any task runs; --check makes nothing."""
-    done = subprocess.run([args.raster, "sweep", args.scene, "--param", args.param, "--shard", f"1/{args.shards}",
-                           "--out", args.out, "--check"] + args.extra, capture_output=True, text=True)
-    if done.returncode != 0:
-        print(done.stderr.strip() or f"raster sweep refused the arguments (exit {done.returncode})", file=sys.stderr)
-        sys.exit(2 if done.returncode == 2 else 1)
+    """Lets raster check everything before any task runs; --check makes nothing. Twice: as a
+    shard (the range, methods, size, the shard count, the output folder the merge writes),
+    and whole, which also checks the Python and matplotlib that the merge's chart needs here
+    (a shard, drawing nothing, skips that)."""
+    common = [args.raster, "sweep", args.scene, "--param", args.param, "--out", args.out, "--check"]
+    for shard in (["--shard", f"1/{args.shards}"], []):
+        done = subprocess.run(common + shard + args.extra, capture_output=True, text=True)
+        if done.returncode != 0:
+            print(done.stderr.strip() or f"raster sweep refused the arguments (exit {done.returncode})", file=sys.stderr)
+            sys.exit(2 if done.returncode == 2 else 1)
 
 
 def main(argv):
@@ -184,9 +186,12 @@ def main(argv):
         done = 0
         for k, future in futures.items():
             try:
-                text = future.result()
-            except BadInput as e:
-                print(f"dask_sweep.py: shard {k}/{args.shards}: {e}", file=sys.stderr)
+                text, refusal = future.result()
+            except Exception as e:   # failed on every attempt (or its worker lost each time)
+                print(f"dask_sweep.py: shard {k}/{args.shards} failed after {args.retries} retries: {e}", file=sys.stderr)
+                return 1
+            if refusal is not None:
+                print(f"dask_sweep.py: shard {k}/{args.shards}: {refusal}", file=sys.stderr)
                 return 2
             folder = os.path.join(shard_root, f"shard-{k}")
             os.makedirs(folder, exist_ok=True)

@@ -1,4 +1,4 @@
-// `raster sweep` and `raster sweep-merge` (sweep.h).
+// `raster sweep` (sweep.h); `raster sweep-merge` is sweep_merge.cpp.
 #include "apps/sweep/sweep.h"
 
 #include <algorithm>
@@ -66,11 +66,10 @@ SweepRange parseRange(const std::string& scene, const std::string& text) {
   } catch (const scenes::ParamError& e) {
     throw UsageError(std::string("--param: ") + e.what());
   }
-  char* end = nullptr;
-  const long steps = std::strtol(parts[2].c_str(), &end, 10);
-  if (parts[2].empty() || *end != '\0' || steps < 1 || steps > kMaxSweepSteps)
+  const std::optional<uint64_t> steps = parseWholeNumber(parts[2]);   // plain digits: not ' 3' or '+3'
+  if (!steps || *steps < 1 || *steps > uint64_t(kMaxSweepSteps))
     throw UsageError("--param: STEPS '" + parts[2] + "' is not a whole number in 1.." + std::to_string(kMaxSweepSteps));
-  range.steps = int(steps);
+  range.steps = int(*steps);
   if (range.log && (range.from <= 0 || range.to <= 0))
     throw UsageError("--param: a log range needs FROM and TO above 0 (got " + parts[0] + " and " + parts[1] + ")");
   return range;

@@ -118,13 +118,12 @@ ShardSpec parseShard(const std::string& text) {
     parts.push_back(text.substr(0, slash));
     parts.push_back(text.substr(slash + 1));
   }
-  char* end1 = nullptr;
-  char* end2 = nullptr;
-  const long k = parts.size() == 2 ? std::strtol(parts[0].c_str(), &end1, 10) : 0;
-  const long n = parts.size() == 2 ? std::strtol(parts[1].c_str(), &end2, 10) : 0;
-  if (parts.size() != 2 || parts[0].empty() || parts[1].empty() || *end1 != '\0' || *end2 != '\0')
-    throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
-  if (n < 1 || n > kMaxSweepSteps)
+  // Plain decimal digits only (parseWholeNumber): strtol took ' 1/+2' as 1/2.
+  const std::optional<uint64_t> parsedK = parts.size() == 2 ? parseWholeNumber(parts[0]) : std::nullopt;
+  const std::optional<uint64_t> parsedN = parts.size() == 2 ? parseWholeNumber(parts[1]) : std::nullopt;
+  if (!parsedK || !parsedN) throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/8)");
+  const uint64_t k = *parsedK, n = *parsedN;
+  if (n < 1 || n > uint64_t(kMaxSweepSteps))
     throw UsageError("--shard: N = " + parts[1] + " is out of range (1.." + std::to_string(kMaxSweepSteps) + ")");
   if (k < 1 || k > n) throw UsageError("--shard: K = " + parts[0] + " is outside 1.." + std::to_string(n));
   shard.index = int(k);

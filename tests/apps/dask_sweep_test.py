@@ -50,6 +50,23 @@ with tempfile.TemporaryDirectory(prefix="dask-sweep-test-") as tmp:
     check("no_such" in done.stderr and "light_elevation" in done.stderr, f"the error does not list the parameters: {done.stderr}")
     check(not os.path.exists(os.path.join(tmp, "bad", "sweep.json")), "bad input left a sweep.json")
 
+    # A shard that raster refuses on its worker (exit 2; here a wrapper that passes --check and
+    # refuses the run itself) is not retried: Dask retries a task on any exception it raises,
+    # so the task returns the refusal. One attempt for the one shard, despite --retries 2.
+    attempts = os.path.join(tmp, "attempts")
+    wrapper = os.path.join(tmp, "refusing-raster")
+    with open(wrapper, "w") as f:
+        f.write(f'#!/bin/sh\ncase " $* " in *" --check "*) exec "{raster}" "$@";; esac\n'
+                f'echo attempt >> "{attempts}"\necho "raster: refused on the worker" >&2\nexit 2\n')
+    os.chmod(wrapper, 0o755)
+    done = subprocess.run([sys.executable, runner] + sweep + ["--shards", "1", "--local-workers", "1", "--retries", "2",
+                          "--out", os.path.join(tmp, "refusing"), "--raster", wrapper, "--"] + options,
+                          capture_output=True, text=True)
+    check(done.returncode == 2 and "refused on the worker" in done.stderr,
+          f"a refused shard exited {done.returncode}: {done.stderr[-2000:]}")
+    tries = open(attempts).read().count("attempt") if os.path.exists(attempts) else 0
+    check(tries == 1, f"a refused shard ran {tries} times, not once")
+
     # More shards than raster takes, and an --out whose parent folder does not exist: refused
     # by raster's check before any cluster starts, and nothing made (the folder once was).
     for shards, out, naming in (("20000", os.path.join(tmp, "many"), "--shard"),

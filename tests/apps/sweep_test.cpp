@@ -84,6 +84,10 @@ TEST_SUITE("sweep") {
     expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 0/2 --out s", "K = 0");
     expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 3/2 --out s", "outside 1..2");
     expectRefused("sweep shadow --param near=0.1:0.01:3 --shard 1 --out s", "K/N");
+    // Plain digits, as every other number: strtol had taken ' 1/+2' as 1/2 and '+3' steps.
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --shard '1/+2' --out s", "K/N");
+    expectRefused("sweep shadow --param near=0.1:0.01:3 --shard ' 1/2' --out s", "K/N");
+    expectRefused("sweep shadow --param near=0.1:0.01:+3 --out s", "STEPS '+3'");
     expectRefused("sweep shadow --param near=0.1:0.01:3 --methods gl,nope --out s", "nope");
     expectRefused("sweep shadow --param near=0.1:0.01:3 --methods gl,llvmpipe --out s", "driver");
     expectRefused("sweep shadow --param near=0.1:0.01:3 --set near=1 --out s", "swept");
@@ -211,7 +215,7 @@ TEST_SUITE("sweep") {
 
   // Its --out folder is made with its first file: a run that fails before writing leaves none.
   TEST_CASE("sweep: a run that fails as it renders leaves no --out folder") {
-    // 1 MiB passes the checks (16x12 frames) but not GL's first window.
+    // 1 MiB passes the checks (16x12 frames) but not the scene's 1024x1024 shadow map (4 MiB).
     expectRefused("sweep shadow --param time=1:2:2 --size 16x12 --methods gl --no-softpipe --max-memory 1M --quiet --out s",
                   "memory:");
   }

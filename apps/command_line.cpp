@@ -3,7 +3,8 @@
 // throws into the exit status. Options and their checks live with each command
 // (apps/NAME/) and in apps/common/cli_options.h; everything is validated before rendering.
 //
-// Exit status: 0 success; 1 internal failure or a compare threshold exceeded; 2 bad input.
+// Exit status: 0 success; 1 internal failure, a compare threshold exceeded or a soup seed
+// that differs; 2 bad input.
 #include "apps/command_line.h"
 
 #include <iostream>

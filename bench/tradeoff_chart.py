@@ -47,8 +47,8 @@ PROG = "tradeoff_chart"
 # leaving room; FLIP is an error in 0..1.
 SPEEDUP_LIMIT = 1e9
 DB_LIMIT = 1e4
-# The most results one chart draws: `raster tradeoff all` writes one per scene, five today. 32
-# is already eight rows of panels and some 25 s of drawing; much further the figure grows past
+# The most results one chart draws: `raster tradeoff all` writes one per scene, four today. 32
+# is already sixteen rows of panels (two a row of scenes) and some 25 s of drawing; much further the figure grows past
 # what matplotlib draws (2^16 pixels a side, at about 240).
 MAX_RESULTS = 32
 

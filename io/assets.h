@@ -1,4 +1,4 @@
-// Loading the deferred scene's files: the cat OBJ, the JPEG texture sets, the HDR environment.
+// Loading the scenes' asset files (deferred's and pbr's): the cat OBJ, the JPEG texture sets, the HDR environment.
 //
 // Each loader reproduces what the tutorial's host code does with the file (seed
 // 000_a9faaef907542225.txt: upload_cat, load_image_from_file, load_hdr_texture; deviations in

@@ -81,7 +81,8 @@ glm::vec3 lightAtElevation(float yaw, float elevationDegrees);
 
 // Whether `name` is one of the frame's own options (time, size, instances): a scene
 // parameter a command line may give as --set NAME= or as --NAME, which the frame holds
-// rather than SceneParams. The one list: --set, childFrameOptions and applyParam read it.
+// rather than SceneParams. The one list: applyParam, cli::childFrameOptions and the check
+// that refuses one given both ways read it (cli::validateFrame's --set gives each its field).
 bool isFrameOption(std::string_view name);
 
 // Sets a parameter in SceneParams (not one of the frame's own options: isFrameOption).

@@ -172,8 +172,9 @@ Frame validateFrame(const FrameArgs& args) {
     throw UsageError("--assets: no such folder: " + args.assets);
   frame.assets = args.assets;
 
-  // --set NAME=VALUE, after the options it may override (time, size, instances); a name
-  // set twice is ambiguous, not "the last wins".
+  // --set NAME=VALUE, after the options whose defaults it may replace (time, size,
+  // instances: given both ways, the command line refuses them, refuseParameterGivenTwice);
+  // a name set twice is ambiguous, not "the last wins".
   std::vector<std::string> namesSet;
   for (const std::string& set : args.sets) {
     const size_t equals = set.find('=');

@@ -1,6 +1,6 @@
 // A folder under $TMPDIR for one run's scratch files (a child process's dump, a timing's
 // JSON): removed with all in it when the object goes, and by io/output_file.h's signal
-// handler when SIGINT or SIGTERM ends the run first.
+// handler when SIGINT, SIGTERM, SIGHUP or SIGXFSZ ends the run first.
 #pragma once
 
 #include <stdlib.h>

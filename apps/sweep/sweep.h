@@ -19,13 +19,15 @@
 //    "instances", "sets", "threshold_db", "methods": [...], "softpipe",
 //    "points": [{"value", "value_index", "method", "identical_to_llvmpipe",
 //                "psnr_vs_llvmpipe_db" (null when identical), "flip_vs_llvmpipe" (the final
-//                image's mean LDR-FLIP error, compare/flip.h; null when it is not RGBA8),
+//                image's mean LDR-FLIP error, compare/flip.h; the final image is the
+//                RGBA8 window's, a sweep having no --float-final),
 //                "share_over1_vs_llvmpipe",
 //                "max_diff_vs_llvmpipe", "nonfinite_pixels", "worst_target",
 //                "worst_target_psnr_db", "fails", "failure"}],
 //    "first_failure": {side: value or null}}
 // A shard (--shard K/N) renders the values whose index i has i % N == K - 1, and its
-// sweep.json says so ("shard": "K/N", no "first_failure"); it writes no chart.
+// sweep.json says so ("shard": "K/N", "shard_values": the indexes it rendered, no
+// "first_failure"); it writes no chart.
 #pragma once
 
 #include <string>

@@ -328,7 +328,9 @@ int runTradeoff(const TradeoffArgs& args) {
     markdown += markdownTable(result);
     results.push_back(std::move(result));
   }
-  fs::create_directories(args.out);   // now, with the results: a run that fails leaves no folder
+  // Made now, with the results: a run that fails as it renders leaves no folder (one whose
+  // chart script fails after this leaves the folder with the table and the JSON).
+  fs::create_directories(args.out);
   const std::string jsonPath = (fs::path(args.out) / "tradeoff.json").string();
   compare::writeOutputFile(jsonPath, (results.size() == 1 ? results[0] : results).dump(2) + "\n");
   compare::writeOutputFile((fs::path(args.out) / "tradeoff.md").string(), markdown);

@@ -1,11 +1,11 @@
 // `raster tradeoff`: every method set raced against llvmpipe and scored against it, so
 // speed can be charted against accuracy.
 //
-// The points: the presets (gl, precise, fast), every single-step change from gl
+// The points: every preset (`raster methods` lists them), every single-step change from gl
 // (math=fast, div=approx, ...), llvmpipe itself and softpipe. This pipeline's sets share one
 // backend and one scene, and their frames interleave with llvmpipe's in this process
-// (round after round: every set once, then llvmpipe), so slow drifts of a shared machine
-// hit every point alike; each point's time is the median of its frames. Softpipe needs a
+// (round after round: each set's frame after one of llvmpipe's), so slow drifts of a shared
+// machine hit every point alike; each point's time is the median of its frames. Softpipe needs a
 // process of its own (Mesa picks one Gallium driver per process): a child `raster bench
 // --gl-driver softpipe` times it against this pipeline's gl set, and the ratio is carried
 // over to llvmpipe through gl's time here.

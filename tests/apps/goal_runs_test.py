@@ -98,7 +98,8 @@ with tempfile.TemporaryDirectory(prefix="goal-runs-test-") as tmp:
                                                  for r in ratios])
         check(rows[0]["met"] == met, f"ratios {ratios} against goal 4 and floor 3.6: met is {rows[0]['met']}")
 
-    # Bad input: exit 2, one line that names the problem, nothing written.
+    # Bad input: exit 2, an error that names the problem (after argparse's usage lines, where
+    # argparse refuses it), no run started.
     blocker = os.path.join(tmp, "a-file")
     open(blocker, "w").close()
     goals_png_folder = os.path.join(tmp, "png-folder")   # an --out whose goals.png is a folder

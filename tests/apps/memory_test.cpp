@@ -104,8 +104,8 @@ TEST_SUITE("memory") {
                              "--dump targets", "memory: reading back a 2048x2048 target");
   }
 
-  // A stage view keeps five counters per pixel of every pass it records (20 bytes a pixel):
-  // at 2048x1536 the shadow frame's window pass alone needs 60 MiB of records beside its
+  // A stage view keeps six counters per pixel of every pass it records (24 bytes a pixel):
+  // at 2048x1536 the shadow frame's window pass alone needs 72 MiB of records beside its
   // ~48 MiB of targets and read-backs. Under an 80 MiB cap the plain render succeeds; the
   // overdraw view is refused when its record would pass the cap, and writes nothing.
   TEST_CASE("memory: a stage view's per-pixel records count against the cap") {

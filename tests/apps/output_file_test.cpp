@@ -124,7 +124,8 @@ TEST_SUITE("hostile") {
   }
   // A report is made in a hidden folder beside DIR, and a softpipe side dumps into a folder
   // under TMPDIR: both were left behind when the run was interrupted. The signal comes once
-  // the folder exists (the child's first file held by the writer's stall); the whole job,
+  // the folder holds a file (the report's scratch folder; the child's first file, held by
+  // the writer's stall); the whole job,
   // the child with it, gets it, as from Ctrl-C.
   TEST_CASE("output: SIGTERM or SIGINT mid-run removes the report's and the child's temporary folders") {
     const std::pair<const char*, const char*> runs[] = {

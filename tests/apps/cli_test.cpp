@@ -121,6 +121,13 @@ TEST_SUITE("cli") {
   TEST_CASE("bad sizes, times, threads and backends are refused") {
     for (const char* size : {"0x0", "100000x100000", "640", "16385x10", "ax480", "640x-1"})
       expectRefused("render " + aScene() + " --size=" + size);
+    expectRefused("render " + aScene() + " --size=10x16385", "10x16385 is out of range (each side 1..16384)");   // the height too
+    {   // and the ends of the ranges are in them: --threads 1024, as the help says
+      TempFolder edge;
+      const RunResult r = runCli(edge.path, "render shadow --size 16x12 --threads 1024 --quiet --out t.png");
+      INFO(r.err);
+      CHECK(r.status == 0);
+    }
     for (const char* time : {"nan", "inf", "-1", "abc"})
       expectRefused("render " + aScene() + " --time=" + time);
     for (const char* threads : {"-1", "1025", "two"})

@@ -88,6 +88,10 @@ TEST_SUITE("hostile") {
     for (size_t at = path.err.find("\xc3"); at != std::string::npos; at = path.err.find('\xc3', at + 2))
       CHECK(static_cast<unsigned char>(path.err[at + 1]) == 0xa9);   // every é whole
     CHECK(path.err.find("\xc3...") == std::string::npos);
+    // Where the cut starts: a word of 301 bytes ('111...1x' in quotes) is cut, one of 300 is shown whole.
+    expectBadInput("exec \"$RASTER\" render shadow --set near=$(printf '1%.0s' $(seq 298))x --out x.png", "'" + std::string(120 - 1, '1') + "...[121 bytes not shown]...");
+    const RunResult whole = runShell(temp.path, "exec \"$RASTER\" render shadow --set near=$(printf '1%.0s' $(seq 297))x --out x.png");
+    CHECK(whole.err.find("'" + std::string(297, '1') + "x'") != std::string::npos);
   }
 
   // `--set size=64x48 --size 32x24` rendered 64x48: a parameter given two ways is ambiguous.

@@ -43,6 +43,7 @@ TEST_SUITE("hostile") {
       INFO(r.err);
       CHECK(r.status == 2);
       CHECK(r.err.find("symbolic link") != std::string::npos);
+      CHECK(r.err.rfind("raster: --out: cannot write link.png: it is a symbolic link", 0) == 0);   // refused up front, before rendering
       CHECK(fs::is_symlink(cwd / "link.png"));
       CHECK(readText(temp.path / "precious.txt") == "keep me");
       fs::remove(cwd / "link.png");

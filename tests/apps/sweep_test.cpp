@@ -200,6 +200,15 @@ TEST_SUITE("sweep") {
     refused = runCli(temp.path, "sweep-merge part1 part2 other --out m2");
     CHECK(refused.status == 2);
     CHECK(refused.err.find("\"methods\"") != std::string::npos);
+    {   // a later shard with a header field the first lacks (the check is not one-sided)
+      json extra = json::parse(readText(temp.path / "part2" / "sweep.json"));
+      extra["note"] = "from another build";
+      fs::create_directories(temp.path / "extra");
+      std::ofstream(temp.path / "extra" / "sweep.json") << extra.dump(2);
+      refused = runCli(temp.path, "sweep-merge part1 extra part3 --out m2");
+      CHECK(refused.status == 2);
+      CHECK(refused.err.find("extra/sweep.json: a shard of a different sweep (other fields)") != std::string::npos);
+    }
     // A shard that lost a point (an interrupted or edited file) is named, not merged.
     json cut = json::parse(readText(temp.path / "part1" / "sweep.json"));
     cut["points"].erase(cut["points"].size() - 1);
@@ -290,6 +299,8 @@ TEST_SUITE("sweep") {
       s["points"][1]["psnr_vs_llvmpipe_db"] = -5;
     }, "\"fails\"");
     expectEditRefused([](json& s) { s["shard_values"] = json::array({0, 1, 2, 3}); }, "\"shard_values\"");
+    expectEditRefused([](json& s) { s["points"][1]["max_diff_vs_llvmpipe"] = -0.5; }, "\"max_diff_vs_llvmpipe\" is -0.5, below 0");
+    expectEditRefused([](json& s) { s["points"][1]["share_over1_vs_llvmpipe"] = -0.25; }, "\"share_over1_vs_llvmpipe\" is -0.25, below 0");
 
     // Points that fail, by PSNR and by non-finite pixels, agree with their flags: the shards
     // of a failing sweep merge (that shards merge byte for byte into the unsharded sweep.json

@@ -106,6 +106,11 @@ TEST_CASE("PNG: loads, and a truncated or oversized one is refused") {
   checkOneLine(m, cut);
   CHECK(contains(m, "truncated"));
   CHECK(contains(m, "IEND"));
+  const std::string noCrc = tmp.file("no-crc.png");   // only IEND's 4-byte CRC missing
+  writeBytes(noCrc, bytes.substr(0, bytes.size() - 4));
+  m = errorOf([&] { scenes::loadImageRgba8(noCrc); });
+  checkOneLine(m, noCrc);
+  CHECK(contains(m, "inside its IEND chunk"));
 
   // A well-formed PNG whose header claims 20000 x 10.
   std::string big = bytes;
@@ -181,6 +186,16 @@ TEST_CASE("HDR: corrupt header lines and truncation") {
   m = errorOf([&] { scenes::loadHdrRgb(headerOnly); });
   CHECK(contains(m, "truncated"));
 
+  // An 8-wide scanline whose R run is 9 long: refused by our check, in its words (stb_image's
+  // own would say only "corrupt").
+  std::string rle = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n";
+  rle += std::string("\x02\x02\x00\x08", 4) + "\x89\x10";
+  for (int k = 0; k < 3; ++k) rle += "\x88\x10";
+  const std::string overrun = tmp.file("overrun.hdr");
+  writeBytes(overrun, rle);
+  m = errorOf([&] { scenes::loadHdrRgb(overrun); });
+  checkOneLine(m, overrun);
+  CHECK(contains(m, "bad run-length data in scanline 1"));
   // A JPEG is not an HDR even though stbi_loadf would convert it.
   const std::string jpegAsHdr = tmp.file("photo.hdr");
   writeBytes(jpegAsHdr, readBytes(realAsset(kJpegs[6])));

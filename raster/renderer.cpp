@@ -404,7 +404,7 @@ void Renderer::flush() {
     for (int tile = 0; tile < tiles; ++tile) {
       binSizes_[size_t(tile)] = bins_.bin(tile).size();
       const TileBounds whole = bins_.bounds(tile);
-      const bool banded = fewTiles && bins_.bin(tile).size() <= kBandedTileMaxTriangles;
+      const bool banded = fewTiles && binSizes_[size_t(tile)] <= kBandedTileMaxTriangles;
       const int bandRows = banded ? limits::kRegionSize : limits::kTileSize;
       for (int y = whole.y0; y <= whole.y1; y += bandRows)
         workItems_.push_back({tile, TileBounds{whole.x0, y, whole.x1, std::min(y + bandRows - 1, whole.y1)}});

@@ -113,11 +113,14 @@ struct SsaoPass : PostProgram {
     return viewZFromClip<kSparse>(u.uInvProjection, xy, z, check);
   }
 
-  // GLSL smoothstep(0.0, 1.0, x): (x - 0) / (1 - 0) folds to x, then t * t * (3 - 2 * t).
+  // GLSL smoothstep(0.0, 1.0, x): (x - 0) / (1 - 0) folds to x, then Mesa's built-in
+  // (glsl/builtin_functions.cpp, _smoothstep) multiplies nested to the right,
+  // t * (t * (3 - 2 * t)), not left to right as the specification writes it: a rounding
+  // apart, which turned one SSAO byte at t = 1.922, 201x438 (docs/porting.md, row smoothstep).
   template <class F>
   static F smoothstep01(F x) {
     const F t = clamp(x, F(0.0f), F(1.0f));
-    return t * t * (F(3.0f) - F(2.0f) * t);
+    return t * (t * (F(3.0f) - F(2.0f) * t));
   }
 
   // rangeCheck = smoothstep(0.0, 1.0, uRadius / range). Where range <= uRadius, for a

@@ -84,6 +84,7 @@ struct PassHistory {
   int width = 0, height = 0;
   bool flipY = false;                      // a window-system buffer: memory row 0 is the top
   ClearValues clear;
+  bool keepsDenormals = false;             // its fragment stage kept denormals (simd/gl_math.h)
   std::vector<std::string> programs;       // each draw's program, in order
   bool probed = false;                     // the pass has a probe pixel inside its framebuffer
   int x = -1, y = -1;                      // the probe: column and memory row

@@ -12,6 +12,7 @@
 #include "raster/geometry/assemble.h"
 #include "raster/merge/clear.h"
 #include "raster/methods.h"
+#include "raster/simd/gl_math.h"
 #include "raster/texture/finite_texels.h"
 #include "raster/tile/coarse_tile.h"
 #include "raster/tile/inspect_tile.h"
@@ -371,6 +372,13 @@ void Renderer::orderAlongHilbertCurve() {
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
+    // llvmpipe's blend into a half-float target leaves its thread keeping denormals, the
+    // fragment shader of the same call included (simd/gl_math.h, the top).
+    const auto halfFloat = [](const Texture* t) { return t->format == TexelFormat::RGBA16F || t->format == TexelFormat::RGB16F; };
+    if (!triangles_.empty() && std::any_of(framebuffer_.colors.begin(), framebuffer_.colors.end(), halfFloat))
+      fragmentsKeepDenormals_ = true;
+    const glsl::ScopedDenormalMode denormals(!fragmentsKeepDenormals_);
+    if (history_ && !history_->passes.empty()) history_->passes.back().keepsDenormals = fragmentsKeepDenormals_;
     TileJob job;
     job.framebuffer = &framebuffer_;
     job.triangles = triangles_;

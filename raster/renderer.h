@@ -106,6 +106,9 @@ class Renderer {
   PipelineCounters counters_;
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
+  // Whether a pass of this renderer has drawn into a half-float colour target: from then on
+  // its fragment stage keeps denormals, as llvmpipe's threads do (simd/gl_math.h, the top).
+  bool fragmentsKeepDenormals_ = false;
   ViewRecorder* viewRecorder_ = nullptr;
   PixelHistory* history_ = nullptr;
 };

@@ -398,7 +398,8 @@ int runTrace(const TraceArgs& args) {
     if (pass.depth) formats.push_back(formatName(pass.depth->format));
     OrderedJson p{{"pass", pass.pass}, {"label", pass.label}, {"programs", pass.programs}, {"targets", names}, {"formats", formats},
            {"size", OrderedJson::array({pass.width, pass.height})}, {"pixel", OrderedJson::array({pass.x, imageRow})},
-           {"texel", OrderedJson::array({pass.x, pass.y})}, {"why", probes[pass.pass].why}, {"clear", clearJson(pass.clear)}};
+           {"texel", OrderedJson::array({pass.x, pass.y})}, {"why", probes[pass.pass].why}, {"clear", clearJson(pass.clear)},
+           {"denormals", pass.keepsDenormals ? "kept" : "flushed"}};
     OrderedJson fragments = OrderedJson::array();
     for (const FragmentRecord& f : pass.fragments) fragments.push_back(fragmentJson(f, pass, names, shaderNameCache));
     p["fragments"] = fragments;

@@ -21,7 +21,8 @@
 //    "stored_matches_dumps": bool,
 //    "passes": [{"pass", "label", "programs", "targets", "formats", "size",
 //                "pixel" (image: row 0 = top),
-//                "texel" (memory row), "why", "clear",
+//                "texel" (memory row), "why", "clear", "denormals" ("kept" | "flushed":
+//                  the fragment stage's, raster/simd/gl_math.h),
 //                "fragments": [{"draw", "program", "instance", "primitive", "clipped",
 //                               "front_facing", "barycentrics", "covered", "depth",
 //                               "depth_code", "depth_test" ("passed" | "failed" | "off"),

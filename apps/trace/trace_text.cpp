@@ -1,6 +1,7 @@
 // `raster trace` printed for people (trace_text.h).
 #include "apps/trace/trace_text.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -132,6 +133,11 @@ void printTrace(std::ostream& out, const OrderedJson& trace) {
         << pass["size"][1].get<int>() << "), pixel (" << pass["pixel"][0].get<int>() << ", " << pass["pixel"][1].get<int>()
         << ") = texel [" << pass["texel"][0].get<int>() << "," << pass["texel"][1].get<int>() << "]\n";
     out << "  why:    " << pass["why"].get<std::string>() << "\n";
+    // Flushed, the usual mode, goes unsaid, as does a depth-only pass's (no colour to change).
+    const bool writesColor = std::any_of(pass["formats"].begin(), pass["formats"].end(),
+                                         [](const OrderedJson& f) { return !f.get<std::string>().starts_with("DEPTH"); });
+    if (pass["denormals"] == "kept" && writesColor)
+      out << "  denormals kept: llvmpipe's threads stop flushing them at their first half-float draw\n";
     if (!pass["clear"].is_null()) {
       out << "  clear:";
       if (pass["clear"].contains("color")) out << " color " << tuple(pass["clear"]["color"]);

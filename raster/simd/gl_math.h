@@ -21,12 +21,17 @@
 //   compiler/nir/nir_opt_algebraic.py, compiler/glsl/opt_algebraic.cpp: constant folding of
 //       pow (see pow<Y> below).
 //
-// Denormals: llvmpipe's shaders run with the x86 FTZ and DAZ bits set (fragment shaders:
+// Denormals: llvmpipe's shaders start with the x86 FTZ and DAZ bits set (fragment shaders:
 // lp_rast.c, vertex shaders: draw_pt.c, util_fpstate_set_denorms_to_zero), so a denormal
 // operand reads as zero and a denormal result is flushed to zero. This pipeline runs with
-// the default MXCSR, so every function here flushes denormal arguments to a zero of the same
-// sign (daz() below), and flushes the intermediates where a denormal would change the result
-// (each is marked FTZ).
+// the default MXCSR, so while llvmpipe would flush (detail::flushBelow) every function
+// here flushes denormal arguments to a zero of the same sign (daz()), and the intermediates
+// where a denormal would change the result (each is marked FTZ). A fragment shader that runs
+// after a draw into a half-float colour target keeps denormals in llvmpipe (its blend code
+// turns FTZ/DAZ off, lp_state_fs.c generate_unswizzled_blend, and the rasterizer thread is
+// left that way; measured: deferred's lighting pass writes pow(x, 0.4545) of a denormal x as
+// 5e-18, not 0). raster::Renderer tells the functions which (ScopedDenormalMode); then they
+// flush nothing, and log2 reads a denormal's exponent bits as llvmpipe's masks do.
 //
 // Measured against llvmpipe (tests/simd/gl_math_test.cpp, and a standalone GL probe reading the
 // arguments with texelFetch): every result bit-identical, NaN payloads included, for all
@@ -136,8 +141,15 @@ constexpr uint32_t kSignBit = 0x80000000u;
 
 template <class F> F fabsF(F x) { return asFloat(asBits(x) & UOf<F>(~kSignBit)); }
 template <class F> auto isFiniteMask(F x) { const UOf<F> e = asBits(x) & UOf<F>(0x7f800000u); return !eq(e, UOf<F>(0x7f800000u)); }
-// x86 DAZ, as llvmpipe's shader threads run: a denormal operand reads as a zero of its sign.
-template <class F> F daz(F x) { return sel(fabsF(x) < F(0x1p-126f), asFloat(asBits(x) & UOf<F>(kSignBit)), x); }
+// Below what magnitude the shader code now running reads a float as zero in llvmpipe (see the
+// top of this file): 2^-126, the least normal float, while its thread flushes denormals; 0
+// in the fragment stage of a pass at or after a draw into a half-float colour target, which
+// keeps them. A bound rather than a flag, so daz() stays one compare and one select. Written
+// only by ScopedDenormalMode, between parallel loops.
+inline float flushBelow = 0x1p-126f;
+// x86 DAZ, as llvmpipe's shader threads run while they flush: a denormal operand reads as a
+// zero of its sign.
+template <class F> F daz(F x) { return sel(fabsF(x) < F(flushBelow), asFloat(asBits(x) & UOf<F>(kSignBit)), x); }
 // Unordered comparisons (LLVM fcmp u*, what lp_build_cmp emits): true when either is NaN.
 template <class F> auto ueq(F a, F b) { return !((a < b) | (a > b)); }
 template <class F> auto ult(F a, F b) { return !(a >= b); }
@@ -257,10 +269,18 @@ F log2Mantissa(F x) {
   using U = UOf<F>;
   return asFloat((asBits(x) & U(0x007fffffu)) | U(0x3f800000u));
 }
-template <class F>
+// Bitwise: the bit operations above even where AVX-512 has its instructions, which read a
+// kept denormal's true exponent where llvmpipe's masks read exponent 0.
+template <bool Bitwise = false, class F>
 [[gnu::always_inline]] inline F log2Core(F x) {
-  const F logexp = log2Exponent(x);
-  const F mant = log2Mantissa(x);
+  F logexp, mant;
+  if constexpr (Bitwise) {
+    logexp = log2Exponent<F>(x);
+    mant = log2Mantissa<F>(x);
+  } else {
+    logexp = log2Exponent(x);
+    mant = log2Mantissa(x);
+  }
   const F y = (mant - F(1.0f)) / (mant + F(1.0f));
   const F z = y * y;
   const F z2 = z * z;
@@ -275,7 +295,8 @@ template <class F>
 template <class F>
 [[gnu::always_inline]] inline F log2Impl(F x) {
   x = daz(x);
-  F res = log2Core(x);
+  // Bitwise: a denormal x that is kept (flushBelow 0) reads as llvmpipe's masks read it.
+  F res = log2Core<true>(x);
   const float inf = __builtin_inff();
   res = sel(uge(x, F(inf)), F(inf), res);
   res = sel(ueq(x, F(0.0f)), F(-inf), res);
@@ -550,5 +571,18 @@ template <float Y, class F> requires detail::LaneType<F>
   }
 }
 #undef RASTER_MATH_METHOD
+
+// Sets whether the shader code run until it is destroyed flushes denormals as llvmpipe's
+// thread would (detail::flushBelow). Made and destroyed outside parallel loops.
+class ScopedDenormalMode {
+ public:
+  explicit ScopedDenormalMode(bool flush) : previous_(detail::flushBelow) { detail::flushBelow = flush ? 0x1p-126f : 0.0f; }
+  ~ScopedDenormalMode() { detail::flushBelow = previous_; }
+  ScopedDenormalMode(const ScopedDenormalMode&) = delete;
+  ScopedDenormalMode& operator=(const ScopedDenormalMode&) = delete;
+
+ private:
+  float previous_;
+};
 
 }  // namespace raster::glsl

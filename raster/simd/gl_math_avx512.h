@@ -34,10 +34,11 @@ template <> struct IntLanesOf<simd::Float8x2> { using type = U8x2; };
 // log2Core's exponent and mantissa (gl_math.h) in one instruction each, for 8 and 16 lanes:
 // vgetexpps gives floor(log2 |x|) and vgetmantps the significand in [1, 2), which for a
 // positive normal x are the bit operations' float(exponent - 127) and (mantissa | 1.0).
-// They differ elsewhere (getexp(0) is -inf, not -127), but there log2Impl overwrites the
-// result with its edge cases, and powPlain masks its zeros. Four and two operations fewer
-// per log2: pow is log2, then exp2 (docs/notes/2026-11-21-what-made-it-faster.md,
-// "log2 by getexp and getmant").
+// They differ elsewhere (getexp(0) is -inf, not -127; a denormal's true exponent, not -127),
+// so only pow's plain paths use them, whose bases are normal or masked zeros; log2Impl, which
+// may meet a kept denormal, takes the bit operations. Four and two operations fewer per
+// log2: pow is log2, then exp2 (docs/notes/2026-11-21-what-made-it-faster.md, "log2 by
+// getexp and getmant").
 inline simd::Float8x2 log2Exponent(simd::Float8x2 x) { return simd::Float8x2(_mm512_getexp_ps(x.v)); }
 inline simd::Float8x2 log2Mantissa(simd::Float8x2 x) {
   return simd::Float8x2(_mm512_getmant_ps(x.v, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero));

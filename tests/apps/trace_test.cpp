@@ -120,6 +120,10 @@ TEST_SUITE("trace") {
     const Traced traced = checkTrace(lit, 75, 65);
     for (const char* pass : {"shadow_map", "gbuffer", "ssao", "final"}) CHECK(traced.fragmentsOfPass.count(pass) == 1);
     CHECK(traced.lookups > 30);   // SSAO's kernel, the PCF taps, the G-buffer reads
+    // Denormals are kept from the G-buffer's half-float draw on, as llvmpipe's threads keep
+    // them (raster/simd/gl_math.h); the text says so under those passes.
+    for (const json& pass : lit["passes"])
+      if (pass["label"] != "shadow_map") CHECK(pass["denormals"] == "kept");
     // The G-buffer pass's value is what the lighting pass read there.
     const Traced sky = checkTrace(traceJson(temp, "deferred", "80,2"), 80, 2);
     CHECK(sky.fragmentsOfPass.count("gbuffer") == 1);
@@ -149,6 +153,7 @@ TEST_SUITE("trace") {
       CHECK(text.out.find(quoted) != std::string::npos);
     }
     CHECK(text.out.find("equals the frame's dump") != std::string::npos);
+    CHECK(text.out.find("denormals kept") != std::string::npos);
   }
 
   TEST_CASE("a coarse-shaded pass: the invocation behind the pixel, its coarse pixel, and where its outputs went") {

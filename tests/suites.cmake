@@ -113,7 +113,8 @@ set_tests_properties(goal_runs PROPERTIES TIMEOUT 300 LABELS harness COST 30)
 
 # The bench scripts that chart or model files a person hands them (bench/sweep_chart.py,
 # tradeoff_chart.py, scaling_model.py, target_hashes.py): the repository's own results drawn
-# and modelled, anything else refused with exit 2 and a line naming it, before any work.
+# and modelled, anything else refused with exit 2 and a line naming it, before any work; and
+# bench/random_frames.py's random frames against llvmpipe (a difference caught).
 add_test(NAME bench_scripts COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/bench_scripts_test.py
          $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench_scripts PROPERTIES TIMEOUT 180 LABELS harness COST 45)

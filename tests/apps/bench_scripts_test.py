@@ -5,7 +5,8 @@ results, and refuse anything else with exit 2 and one line naming the file and w
 wrong: no Python traceback, no half-written output, and for target_hashes.py no minutes of
 renders before the refusal. scaling_model.py on the committed runs reproduces
 bench/results/scaling/model.md, and goal_runs.py --replot bench/results/issue69/goals.md:
-the tables BENCHMARKS.md quotes.
+the tables BENCHMARKS.md quotes. random_frames.py's frames match llvmpipe, a difference is
+caught, and its bad arguments are refused.
 
 Usage: bench_scripts_test.py RASTER_BINARY SOURCE_DIR
 """
@@ -15,6 +16,7 @@ import io
 import json
 import os
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -373,6 +375,34 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     done = run("target_hashes.py", "--raster", raster, "--scenes", "shadow", "--sizes", "24x16", "--threads", "3,1",
                "--against", hashes, cwd=tmp)
     check(done.returncode == 0 and " 0 changed" in done.stdout, f"the same runs again: {done.stdout[-500:]}")
+
+    # random_frames.py: random frames against llvmpipe, every target bit for bit. Real frames
+    # match; a raster that reports a difference is caught (exit 1, the reproducing line); a
+    # refused frame is counted, not failed; bad arguments exit 2 before any frame.
+    frames_json = os.path.join(tmp, "frames.json")
+    done = run("random_frames.py", "--raster", raster, "--frames", "4", "--max-size", "40x30", "--max-time", "3",
+               "--json", frames_json, "--quiet", timeout=120)
+    check(done.returncode == 0, f"random_frames.py exited {done.returncode}: {done.stdout[-800:]} {done.stderr[-800:]}")
+    if os.path.exists(frames_json):
+        with open(frames_json) as f:
+            frames = json.load(f)
+        check(frames["counts"]["same"] == 4 and len(frames["frames"]) == 4, f"random_frames.py counts: {frames['counts']}")
+        check(all(fr["targets"].get("final") == "0" and set(fr["targets"].values()) == {"0"} for fr in frames["frames"]),
+              f"random_frames.py targets: {[fr.get('targets') for fr in frames['frames']]}")
+    fake = os.path.join(tmp, "fake-raster")
+    for compare, expected, shows in (("echo 'final  rgba8 8x8  max 3  rmse 0.1'", 1, "differs: raster compare "),
+                                     ("echo 'raster: --set: a value out of range' >&2; exit 2", 0, " 1 refused")):
+        with open(fake, "w") as f:
+            f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {compare}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
+        os.chmod(fake, 0o755)
+        done = run("random_frames.py", "--raster", fake, "--frames", "1", "--quiet")
+        check(done.returncode == expected and shows in done.stdout,
+              f"random_frames.py with `{compare}`: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
+    for option, value, naming in (("--threads", "0", "0 is out of range"), ("--max-size", "0x30", "0x30 is not a WxH"),
+                                  ("--max-size", "8x8,9x9", "one WxH"), ("--float-final", "1.5", "not a share"),
+                                  ("--params", "nan", "not a share"), ("--scenes", "forest", "no scene 'forest'"),
+                                  ("--minutes", "-1", "out of range"), ("--json", tmp, "is a folder")):
+        expect_refused("random_frames.py", ["--raster", raster, "--frames", "1", option, value], naming, cwd=tmp)
 
 if failures:
     print(f"{len(failures)} failure(s)", file=sys.stderr)

@@ -1,0 +1,192 @@
+#!/usr/bin/python3
+"""Random frames against llvmpipe: `raster compare` at scenes, times, sizes, thread counts and
+scene parameters that no test names, every target required bit for bit (`max 0`).
+
+Each frame draws a scene (every scene of `raster scenes` by default), a time in
+[0, --max-time] (three decimals), a size up to --max-size, a thread count from --threads,
+--float-final with probability --float-final, and with probability --params one of the
+scene's own parameters (`raster params SCENE`) at a random value of its range: uniform where
+the range spans at most three decades, else its magnitude log-uniform up to the range's end
+(so 1e-3 to 1e20 for a world offset, either sign). A frame raster refuses (exit 2: a value
+another parameter rules out, such as a cascade split past the next) is counted as refused.
+A frame that differs prints the `raster compare` line that shows it again.
+
+Threads: llvmpipe is not stable against itself past its host's cores (STABILITY.md, "Where gl
+is not bit-identical": a thread that drew no half-float tile still flushes denormals), so
+the default is 1,2; a frame that differs only at more threads than cores is llvmpipe's.
+
+Writes --json FILE (every frame: its arguments, status and each target's max difference)
+when asked, and prints a summary. Exit status: 0 when every frame matched or was refused, 1
+when one differed, failed or ran past --timeout, 2 for bad arguments.
+
+Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
+                              [--threads 1,2] [--max-size 720x480] [--max-time 30]
+                              [--float-final 0.5] [--params 0.5] [--timeout 600]
+                              [--raster build/raster] [--json FILE] [--quiet]
+(Found, on 2026-12-06: deferred's denormals and pbr's smoothstep order, both fixed;
+docs/notes/2026-12-06-random-frames-denormals-and-smoothstep.md.)
+"""
+import argparse
+import json
+import math
+import os
+import random
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+
+from chart_files import write_text_atomically
+from input_checks import (RASTER_MAX_THREADS, check_output_path, check_raster, fail, parse_counts, parse_sizes,
+                          split_list)
+from raster_scenes import scene_rows
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PROG = "random_frames.py"
+# A target's line of `raster compare`: name, kind, WxH, then "max N" (N ulps, LSBs or steps).
+TARGET_LINE = re.compile(r"^(\S+)\s+\S+\s+\d+x\d+\s+max (\S+)")
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--frames", type=int, default=0, help="frames to compare (default: as many as --minutes allow)")
+    parser.add_argument("--minutes", type=float, default=10.0, help="time to spend when --frames is not given (default 10)")
+    parser.add_argument("--seed", type=int, default=1, help="seed of the draws: the same seed draws the same frames (default 1)")
+    parser.add_argument("--scenes", help="comma-separated scene names (default: every scene of `raster scenes`)")
+    parser.add_argument("--threads", default="1,2", help="comma-separated thread counts to draw from (default 1,2)")
+    parser.add_argument("--max-size", default="720x480", help="largest WxH drawn (default 720x480)")
+    parser.add_argument("--max-time", type=float, default=30.0, help="latest time drawn, seconds (default 30)")
+    parser.add_argument("--float-final", type=float, default=0.5, help="share of frames with --float-final (default 0.5)")
+    parser.add_argument("--params", type=float, default=0.5, help="share of frames that set a scene parameter (default 0.5)")
+    parser.add_argument("--timeout", type=float, default=600.0, help="seconds one compare may take (default 600)")
+    parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
+    parser.add_argument("--json", help="write every frame and the summary here")
+    parser.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    args = parser.parse_args(argv)
+    if args.frames < 0 or args.frames > 10**7:
+        fail(PROG, f"--frames {args.frames}: out of range (0..10000000; 0: as many as --minutes allow)")
+    if not (math.isfinite(args.minutes) and 0 < args.minutes <= 7 * 24 * 60):
+        fail(PROG, f"--minutes {args.minutes}: out of range (above 0, at most a week)")
+    if not (math.isfinite(args.max_time) and 0 <= args.max_time <= 1e30):
+        fail(PROG, f"--max-time {args.max_time}: out of range (0..1e30, raster's)")
+    for option, share in (("--float-final", args.float_final), ("--params", args.params)):
+        if not 0 <= share <= 1:   # NaN fails too
+            fail(PROG, f"{option} {share}: not a share (0..1)")
+    if not (math.isfinite(args.timeout) and args.timeout > 0):
+        fail(PROG, f"--timeout {args.timeout}: must be a positive number of seconds")
+    args.threads = parse_counts(PROG, "--threads", args.threads, 1, RASTER_MAX_THREADS, "raster's --threads; 0 is not one count")
+    if "," in args.max_size:
+        fail(PROG, f"--max-size {args.max_size}: one WxH, not a list")
+    args.max_size = parse_sizes(PROG, "--max-size", args.max_size)[0]
+    check_raster(PROG, "--raster", args.raster)
+    if args.json:
+        check_output_path(PROG, "--json", args.json)
+    rows = {row["name"]: row for row in scene_rows(args.raster)}
+    if args.scenes:
+        for name in split_list(PROG, "--scenes", args.scenes):
+            if name not in rows:
+                fail(PROG, f"--scenes {args.scenes}: no scene {name!r} (raster scenes: {', '.join(rows)})")
+        rows = {name: rows[name] for name in split_list(PROG, "--scenes", args.scenes)}
+    args.rows = rows
+    return args
+
+
+def parameter_value(rng, param):
+    """A value in the parameter's [min, max]: uniform over at most three decades, else the
+    magnitude log-uniform from 1e-3 (or min) to the end, either sign where the range has both."""
+    low, high = float(param["min"]), float(param["max"])
+    if high <= low:
+        return low
+    magnitude_top = max(abs(low), abs(high))
+    if (low > 0 and high / low <= 1e3) or (low <= 0 and magnitude_top <= 1e3):
+        value = rng.uniform(low, high)
+    else:
+        bottom = low if low > 0 else min(1e-3, magnitude_top)
+        value = math.exp(rng.uniform(math.log(bottom), math.log(magnitude_top)))
+        if low < 0 and rng.random() < 0.5:
+            value = -value
+        value = min(max(value, low), high)
+    return round(value) if param.get("integer") else float(f"{value:.6g}")
+
+
+def draw_frame(rng, args):
+    """One frame's compare arguments, and what was drawn."""
+    scene = rng.choice(sorted(args.rows))
+    width_max, height_max = map(int, args.max_size.split("x"))
+    frame = {"scene": scene, "time": round(rng.uniform(0, args.max_time), 3),
+             "size": f"{rng.randint(1, width_max)}x{rng.randint(1, height_max)}",
+             "threads": rng.choice(args.threads), "float_final": rng.random() < args.float_final, "set": {}}
+    params = [p for p in args.rows[scene].get("params", []) if p["name"] not in ("time", "size")]
+    if params and rng.random() < args.params:
+        param = rng.choice(params)
+        frame["set"][param["name"]] = parameter_value(rng, param)
+    return frame
+
+
+def compare_words(frame):
+    words = ["compare", frame["scene"], "--time", str(frame["time"]), "--size", frame["size"],
+             "--threads", str(frame["threads"])]
+    for name, value in frame["set"].items():
+        words += ["--set", f"{name}={value}"]
+    if frame["float_final"]:
+        words.append("--float-final")
+    return words
+
+
+def run_frame(args, frame, out_dir):
+    """Compares one frame; sets its status (same, differs, refused, failed, timeout) and the
+    max difference of each target."""
+    command = [args.raster, *compare_words(frame), "--out", out_dir, "--quiet"]
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
+    except subprocess.TimeoutExpired:
+        frame["status"] = "timeout"
+        return
+    targets = {}
+    for line in done.stdout.splitlines():
+        match = TARGET_LINE.match(line)
+        if match:
+            targets[match.group(1)] = match.group(2)
+    frame["targets"] = targets
+    if done.returncode == 2:
+        frame["status"] = "refused"
+        frame["message"] = done.stderr.strip()[-500:]
+    elif done.returncode != 0 or not targets:
+        frame["status"] = "failed"
+        frame["message"] = done.stderr.strip()[-500:] or f"exit {done.returncode}, no target compared"
+    else:
+        frame["status"] = "same" if all(v == "0" for v in targets.values()) else "differs"
+
+
+def main(argv):
+    args = parse_args(argv)
+    rng = random.Random(args.seed)
+    deadline = time.monotonic() + args.minutes * 60
+    frames, last_progress = [], time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="random-frames-") as out_dir:
+        while (len(frames) < args.frames) if args.frames else (time.monotonic() < deadline):
+            frame = draw_frame(rng, args)
+            run_frame(args, frame, out_dir)
+            frames.append(frame)
+            if frame["status"] in ("differs", "failed", "timeout"):
+                shown = ", ".join(f"{k} max {v}" for k, v in frame.get("targets", {}).items() if v != "0")
+                print(f"{frame['status']}: raster {shlex.join(compare_words(frame))}"
+                      + (f" ({shown})" if shown else "") + (f": {frame['message']}" if "message" in frame else ""),
+                      flush=True)
+            if not args.quiet and time.monotonic() - last_progress > 10:
+                last_progress = time.monotonic()
+                bad = sum(f["status"] in ("differs", "failed", "timeout") for f in frames)
+                print(f"{PROG}: {len(frames)} frames, {bad} not the same", file=sys.stderr, flush=True)
+    counts = {status: sum(f["status"] == status for f in frames) for status in ("same", "differs", "refused", "failed", "timeout")}
+    print(f"{len(frames)} frames (seed {args.seed}): " + ", ".join(f"{n} {status}" for status, n in counts.items()))
+    if args.json:
+        summary = {"seed": args.seed, "raster": os.path.abspath(args.raster), "threads": args.threads,
+                   "max_size": args.max_size, "max_time": args.max_time, "counts": counts, "frames": frames}
+        write_text_atomically(json.dumps(summary, indent=1) + "\n", args.json)
+    return 1 if counts["differs"] or counts["failed"] or counts["timeout"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -372,8 +372,9 @@ void Renderer::orderAlongHilbertCurve() {
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
-    // llvmpipe's blend into a half-float target leaves its thread keeping denormals, the
-    // fragment shader of the same call included (simd/gl_math.h, the top).
+    // llvmpipe's blend into a half-float target leaves its thread keeping denormals from then
+    // on (simd/gl_math.h, the top). This renderer keeps them from that pass's fragment stage
+    // on: in llvmpipe, all of that pass but each thread's first block, shaded before its blend.
     const auto halfFloat = [](const Texture* t) { return t->format == TexelFormat::RGBA16F || t->format == TexelFormat::RGB16F; };
     if (!triangles_.empty() && std::any_of(framebuffer_.colors.begin(), framebuffer_.colors.end(), halfFloat))
       fragmentsKeepDenormals_ = true;

@@ -84,12 +84,11 @@ def parse_args(argv):
     if args.json:
         check_output_path(PROG, "--json", args.json)
     rows = {row["name"]: row for row in scene_rows(args.raster)}
-    if args.scenes:
-        for name in split_list(PROG, "--scenes", args.scenes):
-            if name not in rows:
-                fail(PROG, f"--scenes {args.scenes}: no scene {name!r} (raster scenes: {', '.join(rows)})")
-        rows = {name: rows[name] for name in split_list(PROG, "--scenes", args.scenes)}
-    args.rows = rows
+    names = split_list(PROG, "--scenes", args.scenes) if args.scenes is not None else list(rows)
+    for name in names:
+        if name not in rows:
+            fail(PROG, f"--scenes: unknown '{name}' (valid: {', '.join(rows)})")
+    args.rows = {name: rows[name] for name in names}
     return args
 
 

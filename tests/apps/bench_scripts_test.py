@@ -400,7 +400,7 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
               f"random_frames.py with `{compare}`: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
     for option, value, naming in (("--threads", "0", "0 is out of range"), ("--max-size", "0x30", "0x30 is not a WxH"),
                                   ("--max-size", "8x8,9x9", "one WxH"), ("--float-final", "1.5", "not a share"),
-                                  ("--params", "nan", "not a share"), ("--scenes", "forest", "no scene 'forest'"),
+                                  ("--params", "nan", "not a share"), ("--scenes", "forest", "unknown 'forest'"), ("--scenes", "", "--scenes '': empty"),
                                   ("--minutes", "-1", "out of range"), ("--json", tmp, "is a folder")):
         expect_refused("random_frames.py", ["--raster", raster, "--frames", "1", option, value], naming, cwd=tmp)
 

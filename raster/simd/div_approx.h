@@ -2,10 +2,10 @@
 // without the divider or the square-root unit, for normalize / inversesqrt (simd/glsl.h)
 // and the 1/w of interpolation (tile/interpolate.h).
 //
-// Needs only gl_math.h's detail namespace; gl_math.h includes it after that namespace.
+// Written over gl_math_bits.h's helpers; gl_math.h includes it, beside the `math` methods.
 #pragma once
 
-#include "raster/simd/gl_math.h"
+#include "raster/simd/gl_math_bits.h"
 
 namespace raster::glsl {
 

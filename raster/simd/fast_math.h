@@ -5,7 +5,7 @@
 // atan, asin, acos; pow up to 5e-3 for extreme results) or 1e-6 (sin, cos).
 //
 // Written once over the lane type F (float, simd::Lanes<N>, simd::Float8, simd::Float8x2)
-// with gl_math.h's detail:: bit-level helpers, so every lane type gives identical bits
+// with gl_math_bits.h's detail:: bit-level helpers, so every lane type gives identical bits
 // (tests/simd/math_methods_test.cpp checks it; as simd/lanes.h says, where two NaNs meet
 // which payload survives may differ).
 //
@@ -23,13 +23,13 @@
 // [-1, 1]; asin/acos of |x| > 1 give NaN. Where GLSL leaves a result undefined the result is
 // whatever the formula gives: pow(0, 0) = NaN, atan(0, 0) = 0, atan(+-inf, +-inf) = NaN.
 //
-// Needs only gl_math.h's detail namespace, so it can also be included from inside gl_math.h,
-// after that namespace.
+// Also uses two helpers of the exact pow (powBaseIsPlain, scaleByPowerOfTwo: gl_math_exp_log.h);
+// gl_math.h includes it and picks it per the method set.
 #pragma once
 
 #include <cstdint>
 
-#include "raster/simd/gl_math.h"
+#include "raster/simd/gl_math_exp_log.h"
 
 namespace raster::glsl::fast {
 
@@ -219,7 +219,7 @@ template <class F> requires detail::LaneType<F>
 // the polynomial in [1, 2), so 2^floor * P is P with its exponent moved, rounding nothing
 // (detail::scaleByPowerOfTwo: one vscalefps with AVX-512). A zero x gives exp2's value at
 // its clamp: +0 for Y > 0, +inf for Y < 0. The composite with `--preset fast` had been
-// slower than with `gl`, whose exact pow takes the same shortcut (gl_math.h, powConstImpl).
+// slower than with `gl`, whose exact pow takes the same shortcut (gl_math_exp_log.h, powConstImpl).
 template <float Y, class F> requires detail::LaneType<F>
 [[gnu::always_inline]] inline F powConst(F x) {
   if constexpr (Y != 0.0f && Y >= -0.98f && Y <= 0.98f) {

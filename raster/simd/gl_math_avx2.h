@@ -1,4 +1,4 @@
-// The 32-bit integer lanes gl_math.h's bit manipulation needs, for Float8 (U8) and for
+// The 32-bit integer lanes gl_math_bits.h's bit manipulation needs, for Float8 (U8) and for
 // Float8x2 as two halves (U8x2; gl_math_avx512.h when Float8x2 is one 512-bit register).
 #pragma once
 

@@ -1,4 +1,4 @@
-// gl_math.h's integer lanes for Float8x2 in one 512-bit register (AVX-512).
+// gl_math_bits.h's integer lanes for Float8x2 in one 512-bit register (AVX-512).
 #pragma once
 
 #include "raster/simd/isa.h"
@@ -31,7 +31,7 @@ inline simd::Float8x2 cvt(U8x2 u) { return simd::Float8x2(_mm512_cvtepi32_ps(u.v
 inline simd::Mask8x2 eq(U8x2 a, U8x2 b) { return {_mm512_cmpeq_epi32_mask(a.v, b.v)}; }
 template <> struct IntLanesOf<simd::Float8x2> { using type = U8x2; };
 
-// log2Core's exponent and mantissa (gl_math.h) in one instruction each, for 8 and 16 lanes:
+// log2Core's exponent and mantissa (gl_math_exp_log.h) in one instruction each, for 8 and 16 lanes:
 // vgetexpps gives floor(log2 |x|) and vgetmantps the significand in [1, 2), which for a
 // positive normal x are the bit operations' float(exponent - 127) and (mantissa | 1.0).
 // They differ elsewhere (getexp(0) is -inf, not -127; a denormal's true exponent, not -127),
@@ -48,8 +48,8 @@ inline simd::Float8 log2Mantissa(simd::Float8 x) {
   return simd::Float8(_mm256_getmant_ps(x.v, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_zero));
 }
 
-// scaleByPowerOfTwo (gl_math.h) in one instruction: vscalefps gives p * 2^floor(ipart),
-// the same product wherever gl_math.h calls it (an integral ipart in [-126, 125], p in
+// scaleByPowerOfTwo (gl_math_exp_log.h) in one instruction: vscalefps gives p * 2^floor(ipart),
+// the same product wherever gl_math_exp_log.h calls it (an integral ipart in [-126, 125], p in
 // [1, 2]: no rounding, no overflow, no denormal).
 inline simd::Float8x2 scaleByPowerOfTwo(simd::Float8x2 p, simd::Float8x2 ipart) {
   return simd::Float8x2(_mm512_scalef_ps(p.v, ipart.v));

@@ -16,13 +16,13 @@
 // The vector lane types go lane by lane through memory: slow, so these are kept out of line
 // ([[gnu::noinline]]) to keep the shader code that calls them small.
 //
-// Needs only gl_math.h's detail namespace, so it can also be included from inside gl_math.h,
-// after that namespace.
+// Written over gl_math_bits.h's lane types; gl_math.h includes it and picks it per the method
+// set.
 #pragma once
 
 #include <cmath>
 
-#include "raster/simd/gl_math.h"
+#include "raster/simd/gl_math_bits.h"
 
 namespace raster::glsl::libm {
 

@@ -37,7 +37,7 @@ import time
 from chart_files import write_atomically, write_text_atomically
 from input_checks import (NUMBER, OPTIONAL, RASTER_MAX_FRAMES, RASTER_MAX_THREADS, BadInput, check_output_folder,
                           check_raster, check_record, fail, is_number, parse_sizes, read_json, split_list)
-from raster_scenes import preset_names, scene_names
+from raster_scenes import checked_names, preset_names, scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROG = "goal_runs.py"
@@ -101,13 +101,8 @@ def parse_args(argv):
     args.sizes = parse_sizes(PROG, "--sizes", args.sizes)
     args.presets = split_list(PROG, "--presets", args.presets)
     args.scenes = None if args.scenes is None else split_list(PROG, "--scenes", args.scenes)
-    known_scenes = scene_names(args.raster)
-    args.scenes = args.scenes or known_scenes
-    for name, given, valid in (("--presets", args.presets, preset_names(args.raster)),
-                               ("--scenes", args.scenes, known_scenes)):
-        for value in given:
-            if value not in valid:
-                parser.error(f"{name}: unknown '{value}' (valid: {', '.join(valid)})")
+    args.presets = checked_names(PROG, "--presets", args.presets, preset_names(args.raster))
+    args.scenes = checked_names(PROG, "--scenes", args.scenes, scene_names(args.raster))
     # Before any rendering: a run of many minutes must not end on an unwritable folder. The
     # folder must take files (and goals.json, .md and .png in it not be folders), or, not made
     # yet, the folder above it (a mistyped path is refused, not made parents and all);

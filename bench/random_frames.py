@@ -41,7 +41,7 @@ import time
 from chart_files import write_text_atomically
 from input_checks import (RASTER_MAX_THREADS, check_output_path, check_raster, fail, parse_counts, parse_sizes,
                           split_list)
-from raster_scenes import scene_rows
+from raster_scenes import checked_names, scene_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROG = "random_frames.py"
@@ -84,10 +84,8 @@ def parse_args(argv):
     if args.json:
         check_output_path(PROG, "--json", args.json)
     rows = {row["name"]: row for row in scene_rows(args.raster)}
-    names = split_list(PROG, "--scenes", args.scenes) if args.scenes is not None else list(rows)
-    for name in names:
-        if name not in rows:
-            fail(PROG, f"--scenes: unknown '{name}' (valid: {', '.join(rows)})")
+    given = split_list(PROG, "--scenes", args.scenes) if args.scenes is not None else None
+    names = checked_names(PROG, "--scenes", given, list(rows))
     args.rows = {name: rows[name] for name in names}
     return args
 

@@ -61,3 +61,17 @@ def preset_names(raster):
     """The presets of the binary's method registry (gl first), in its order."""
     listing = _listing(raster, "methods")
     return _names(raster, "methods", listing.get("presets") if isinstance(listing, dict) else None)
+
+
+def checked_names(prog, option, given, known):
+    """The names `option` chose: `given` (split by input_checks.split_list), or every one of
+    `known` (the registry's, in its order) when it is None. A name not in `known` exits 2
+    naming the valid ones, in one wording for every runner. With `known` None (an older
+    binary without the registry) the given names are taken as they are: raster refuses an
+    unknown one itself."""
+    if given is None:
+        return list(known)
+    for name in given if known is not None else ():
+        if name not in known:
+            fail(prog, f"{option}: unknown '{name}' (valid: {', '.join(known)})")
+    return given

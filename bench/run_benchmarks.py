@@ -24,7 +24,7 @@ import time
 from chart_files import write_atomically, write_text_atomically
 from input_checks import (NUMBER, RASTER_MAX_FRAMES, BadInput, check_range, check_raster, check_record, fail, read_json,
                           split_list)
-from raster_scenes import scene_names
+from raster_scenes import checked_names, scene_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RASTER = os.path.join(ROOT, "build", "raster")
@@ -87,11 +87,7 @@ def main():
     check_raster("run_benchmarks.py", "--raster", args.raster)
     sizes = ["640x480", "1920x1080"] if args.quick else SIZES
     frames = max(3, args.frames // 2) if args.quick else args.frames
-    known = scene_names(args.raster)
-    scenes = known if given is None else given
-    for scene in scenes:
-        if scene not in known:
-            parser.error(f"--scenes: unknown '{scene}' (valid: {', '.join(known)})")
+    scenes = checked_names("run_benchmarks.py", "--scenes", given, scene_names(args.raster))
     jobs = [(s, size, t) for s in scenes for size in sizes for t in (1, 2)]
     if args.dry_run:
         for scene, size, threads in jobs:

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from chart_files import write_text_atomically  # noqa: E402
 from input_checks import (RASTER_MAX_THREADS, check_output_path, check_raster, fail, parse_counts,  # noqa: E402
                           parse_sizes, read_json, split_list)
-from raster_scenes import scene_names  # noqa: E402
+from raster_scenes import checked_names, scene_names  # noqa: E402
 
 PROG = "target_hashes.py"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -88,11 +88,7 @@ def main():
     check_render_options(args.raster)
     # The registry's scenes; --scenes is checked against it where the binary has one (an older
     # binary without it is hashed with the names given: raster refuses an unknown one).
-    known = scene_names(args.raster, required=given is None)
-    scenes = known if given is None else given
-    for scene in scenes if known is not None else ():
-        if scene not in known:
-            fail(PROG, f"--scenes: unknown '{scene}' (valid: {', '.join(known)})")
+    scenes = checked_names(PROG, "--scenes", given, scene_names(args.raster, required=given is None))
     runs = [(s, z, t, scalar) for s in scenes for z in sizes for t in threads for scalar in (False, True)]
     hashes = {}
     with tempfile.TemporaryDirectory() as work:

@@ -326,6 +326,12 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     # raster bench takes at most 10000 frames: --quick's half of 10^8 was printed as a command.
     expect_refused("run_benchmarks.py", ["--dry-run", "--quick", "--frames", "100000000"], "at most 10000", usage=True)
     expect_refused("run_benchmarks.py", ["--raster", raster, "--dry-run", "--scenes", ""], "--scenes '': empty")
+    # Every runner names an unknown scene or preset in one wording (raster_scenes.checked_names).
+    expect_refused("run_benchmarks.py", ["--raster", raster, "--dry-run", "--scenes", "shadow,forest"],
+                   "--scenes: unknown 'forest' (valid: shadow, ")
+    expect_refused("goal_runs.py", ["--raster", raster, "--dry-run", "--scenes", "forest"], "--scenes: unknown 'forest'")
+    expect_refused("goal_runs.py", ["--raster", raster, "--dry-run", "--presets", "gl,warp"],
+                   "--presets: unknown 'warp' (valid: gl, ")
     # --replot's results.json (run in this process: the script reads it from bench/results): a
     # median of 0 divided the table by 0, and NaN is not JSON.
     import run_benchmarks  # noqa: E402

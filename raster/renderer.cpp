@@ -372,9 +372,10 @@ void Renderer::orderAlongHilbertCurve() {
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
-    // llvmpipe's blend into a half-float target leaves its thread keeping denormals from then
-    // on (simd/gl_math.h, the top). This renderer keeps them from that pass's fragment stage
-    // on: in llvmpipe, all of that pass but each thread's first block, shaded before its blend.
+    // llvmpipe's blend into a half-float target can leave its thread keeping denormals from
+    // then on (simd/gl_math.h, the top: the scenes' passes do). This renderer keeps them from
+    // that pass's fragment stage on: in llvmpipe, all of that pass but each thread's first
+    // block, shaded before its blend.
     const auto halfFloat = [](const Texture* t) { return t->format == TexelFormat::RGBA16F; };   // RGB16F is stored so too
     if (!triangles_.empty() && std::any_of(framebuffer_.colors.begin(), framebuffer_.colors.end(), halfFloat))
       fragmentsKeepDenormals_ = true;

@@ -107,7 +107,8 @@ class Renderer {
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
   // Whether a pass of this renderer has drawn into a half-float colour target: from then on
-  // its fragment stage keeps denormals, as llvmpipe's threads do (simd/gl_math.h, the top).
+  // its fragment stage keeps denormals, as llvmpipe's threads do after the scenes' such
+  // passes (simd/gl_math.h, the top).
   bool fragmentsKeepDenormals_ = false;
   ViewRecorder* viewRecorder_ = nullptr;
   PixelHistory* history_ = nullptr;

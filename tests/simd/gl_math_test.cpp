@@ -362,6 +362,21 @@ Agreement compare(const scenes::ImageData& ours, const scenes::ImageData& gl, co
 constexpr const char* kThroughGl = "every transcendental is bit-identical to llvmpipe through real GL";
 constexpr const char* kKeptDenormals = "after an hdr frame every transcendental keeps denormals as llvmpipe does";
 
+// Runs the test case `name` again in a fresh process of this binary, `environment` (shell
+// assignments) before it, and checks that it passed and that its output holds `ranMarker`,
+// a text its messages print: a filter that matched no case would pass with nothing run.
+namespace {
+void runInFreshProcess(const char* name, const std::string& environment, const std::string& ranMarker) {
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const cli_test::RunResult fresh =
+      cli_test::runShell(std::filesystem::current_path(), environment + "exec " + cli_test::shellQuote(self) +
+                                                              " --no-intro --test-case=" + cli_test::shellQuote(name));
+  INFO("the case in a fresh process:\n" << fresh.out << fresh.err);
+  CHECK(fresh.status == 0);
+  CHECK(fresh.out.find(ranMarker) != std::string::npos);
+}
+}  // namespace
+
 TEST_SUITE("gl_math") {
   TEST_CASE(kThroughGl) {
     // The denormal echoes need llvmpipe's threads as they start, flushing denormals; after
@@ -369,12 +384,7 @@ TEST_SUITE("gl_math") {
     // scenes::glBackendsMade). ctest runs each suite in its own process; the whole test
     // binary run at once runs this case again in a fresh process of its own.
     if (scenes::glBackendsMade() > 0) {
-      const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-      const cli_test::RunResult fresh = cli_test::runShell(
-          std::filesystem::current_path(),
-          "exec " + cli_test::shellQuote(self) + " --no-intro --test-case=" + cli_test::shellQuote(kThroughGl));
-      INFO("the case in a fresh process:\n" << fresh.out << fresh.err);
-      CHECK(fresh.status == 0);
+      runInFreshProcess(kThroughGl, "", "results bit-identical to llvmpipe");
       return;
     }
     auto gl = scenes::makeGlBackend();
@@ -410,14 +420,7 @@ TEST_SUITE("gl_math") {
     // hdr frame first; this pipeline's renderer keeps denormals from that pass on.
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     if (scenes::glBackendsMade() > 0 || lpThreads == nullptr || std::string(lpThreads) != "1") {
-      const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
-      const cli_test::RunResult fresh = cli_test::runShell(
-          std::filesystem::current_path(),
-          "LP_NUM_THREADS=1 exec " + cli_test::shellQuote(self) + " --no-intro --test-case=" + cli_test::shellQuote(kKeptDenormals));
-      INFO("the case in a fresh process:\n" << fresh.out << fresh.err);
-      CHECK(fresh.status == 0);
-      // A filter that matched no case would pass with nothing run: the case's last message.
-      CHECK(fresh.out.find("denormal results from llvmpipe") != std::string::npos);
+      runInFreshProcess(kKeptDenormals, "LP_NUM_THREADS=1 ", "denormal results from llvmpipe");
       return;
     }
     auto gl = scenes::makeGlBackend();

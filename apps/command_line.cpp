@@ -16,6 +16,7 @@
 #include "apps/commands.h"
 #include "apps/common/cli_options.h"
 #include "io/output_file.h"
+#include "io/utf8.h"
 #include "scenes/scene.h"
 #include "scenes/scene_params.h"
 
@@ -29,17 +30,14 @@ std::string oneLine(std::string text) {
   for (char& c : text)
     if (c == '\n') c = ' ';
   constexpr size_t kLongWord = 300, kHead = 120, kTail = 60;
-  const auto characterStart = [&](size_t at) {   // back to the first byte of at's character
-    while (at > 0 && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
-    return at;
-  };
   std::string shown;
   for (size_t start = 0; start < text.size();) {
     const size_t space = text.find(' ', start), end = space == std::string::npos ? text.size() : space;
     if (end - start <= kLongWord) {
       shown.append(text, start, end - start);
     } else {
-      const size_t headEnd = characterStart(start + kHead), tailStart = characterStart(end - kTail);
+      const size_t headEnd = compare::utf8CharacterStart(text, start + kHead);
+      const size_t tailStart = compare::utf8CharacterStart(text, end - kTail);
       shown.append(text, start, headEnd - start);
       shown += "...[" + std::to_string(tailStart - headEnd) + " bytes not shown]...";
       shown.append(text, tailStart, end - tailStart);

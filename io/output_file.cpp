@@ -15,6 +15,8 @@
 #include <filesystem>
 #include <mutex>
 
+#include "io/utf8.h"
+
 namespace compare {
 namespace {
 
@@ -152,8 +154,7 @@ namespace {
 // The first `bytes` bytes of text at most, cut between UTF-8 characters (a message quotes it).
 std::string headOf(std::string_view text, size_t bytes) {
   if (text.size() <= bytes) return std::string(text);
-  while (bytes > 0 && (static_cast<unsigned char>(text[bytes]) & 0xC0) == 0x80) --bytes;
-  return std::string(text.substr(0, bytes));
+  return std::string(text.substr(0, utf8CharacterStart(text, bytes)));
 }
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {

@@ -198,7 +198,7 @@ struct TileJob {
   // the pass's targets outgrow the threads' own caches, so that what is stored would leave
   // the cache before anything reads it again.
   bool streamUntouchedClears = false;
-  // The pass's coarse pixel in pixels (methods.h, `shading`; Renderer::passShadingRate):
+  // The pass's coarse pixel in pixels (methods.h, `shading`; passShadingRate, shading_rate.h):
   // 1x1 is GL's one shader invocation per pixel, anything larger is walked by
   // tile/coarse_tile.h. Each side divides a 16-row band and a tile.
   int coarseWidth = 1, coarseHeight = 1;

@@ -98,7 +98,7 @@ enum class ShadingMethod : uint8_t {
                       // read only finite texels (blurs, upsamples)
 };
 
-// Which passes a shading rate applies to (Renderer::passShadingRate decides from the
+// Which passes a shading rate applies to (passShadingRate in shading_rate.h decides from the
 // pass's draws and framebuffer).
 enum class CoarsePasses : uint8_t {
   Post,        // every post pass: no colour draw of the pass tests depth
@@ -269,7 +269,7 @@ constexpr int coarsePixelHeight(ShadingMethod m) {
   }
   return 1;
 }
-// shading: which passes the rate applies to (Renderer::passShadingRate).
+// shading: which passes the rate applies to (passShadingRate, shading_rate.h).
 constexpr CoarsePasses coarsePasses(ShadingMethod m) {
   switch (m) {
     case ShadingMethod::Rate1x1:

@@ -1,5 +1,5 @@
 // Whether a float texture holds a non-finite texel (NaN or an infinity in any channel):
-// coarse shading asks before it shades a pass that reads one (Renderer::passShadingRate,
+// coarse shading asks before it shades a pass that reads one (passShadingRate, shading_rate.h,
 // shading=2x2-smooth), since one invocation per coarse pixel would decide by the coarse
 // centre alone which pixels the NaN reaches.
 #pragma once

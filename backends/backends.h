@@ -38,8 +38,9 @@ std::unique_ptr<Backend> makeGlBackend();
 
 // How many GL backends this process has made so far. llvmpipe's rasterizer threads belong
 // to the process, not to a context, and carry state from one backend to the next: after a
-// draw into a half-float target, those that shaded it no longer flush denormals (Mesa 22.3
-// turns DAZ/FTZ off for that blend and leaves it off, lp_state_fs.c; raster/simd/gl_math.h).
+// draw into a half-float target in which a block failed its depth test everywhere, those
+// that shaded that block no longer flush denormals (Mesa 22.3, lp_state_fs.c; raster/simd/
+// gl_math.h).
 // A check of llvmpipe's flushing of denormals needs the first backend of its process.
 int glBackendsMade();
 

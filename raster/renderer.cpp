@@ -311,12 +311,18 @@ void Renderer::orderAlongHilbertCurve() {
 void Renderer::flush() {
   const bool clearing = pendingClear_.color || pendingClear_.depth;
   if (!triangles_.empty() || clearing) {
-    // llvmpipe's blend into a half-float target can leave its thread keeping denormals from
-    // then on (simd/gl_math.h, the top: the scenes' passes do). This renderer keeps them from
-    // that pass's fragment stage on: in llvmpipe, all of that pass but each thread's first
-    // block, shaded before its blend.
+    // llvmpipe's blend into a half-float target leaves its thread keeping denormals from the
+    // first block whose fragments all fail the depth test on (simd/gl_math.h, the top). This
+    // renderer keeps them from the first pass into a half-float target with a depth-tested
+    // colour draw on: llvmpipe's mode for every later pass wherever that pass has such a block,
+    // as each scene's has (overdraw). Where it has none (no triangle behind another) llvmpipe
+    // flushes on; in that pass itself, it flushes in the blocks shaded before the first one.
     const auto halfFloat = [](const Texture* t) { return t->format == TexelFormat::RGBA16F; };   // RGB16F is stored so too
-    if (!triangles_.empty() && std::any_of(framebuffer_.colors.begin(), framebuffer_.colors.end(), halfFloat))
+    const auto depthTestedColor = [&](const DrawRecord& draw) {
+      return draw.state.depthTest && colorOutputsWritten(draw, framebuffer_) > 0;
+    };
+    if (!triangles_.empty() && framebuffer_.depth && std::any_of(draws_.begin(), draws_.end(), depthTestedColor) &&
+        std::any_of(framebuffer_.colors.begin(), framebuffer_.colors.end(), halfFloat))
       fragmentsKeepDenormals_ = true;
     const glsl::ScopedDenormalMode denormals(!fragmentsKeepDenormals_);
     if (history_ && !history_->passes.empty()) history_->passes.back().keepsDenormals = fragmentsKeepDenormals_;

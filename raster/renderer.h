@@ -106,9 +106,9 @@ class Renderer {
   PipelineCounters counters_;
   bool timeStages_ = false;
   bool visibilityFirstAllowed_ = true;
-  // Whether a pass of this renderer has drawn into a half-float colour target: from then on
-  // its fragment stage keeps denormals, as llvmpipe's threads do after the scenes' such
-  // passes (simd/gl_math.h, the top).
+  // Whether a pass of this renderer has drawn into a half-float colour target with a
+  // depth-tested colour draw: from then on its fragment stage keeps denormals, as llvmpipe's
+  // threads do after such a pass's first block that fails its depth test (simd/gl_math.h).
   bool fragmentsKeepDenormals_ = false;
   ViewRecorder* viewRecorder_ = nullptr;
   PixelHistory* history_ = nullptr;

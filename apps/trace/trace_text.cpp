@@ -137,7 +137,7 @@ void printTrace(std::ostream& out, const OrderedJson& trace) {
     const bool writesColor = std::any_of(pass["formats"].begin(), pass["formats"].end(),
                                          [](const OrderedJson& f) { return !f.get<std::string>().starts_with("DEPTH"); });
     if (pass["denormals"] == "kept" && writesColor)
-      out << "  denormals kept: llvmpipe's threads stop flushing them at their first half-float draw\n";
+      out << "  denormals kept: llvmpipe's threads stop flushing them in a half-float draw's block that fails its depth test\n";
     if (!pass["clear"].is_null()) {
       out << "  clear:";
       if (pass["clear"].contains("color")) out << " color " << tuple(pass["clear"]["color"]);

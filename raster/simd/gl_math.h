@@ -26,17 +26,17 @@
 // operand reads as zero and a denormal result is flushed to zero. This pipeline runs with
 // the default MXCSR, so while llvmpipe would flush (detail::flushBelow) every function
 // here flushes denormal arguments to a zero of the same sign (daz()), and the intermediates
-// where a denormal would change the result (each is marked FTZ). After some draws into a
-// half-float colour target llvmpipe's rasterizer thread keeps denormals: the blend code of
-// such a target saves the MXCSR, turns FTZ/DAZ off and restores it (lp_state_fs.c
-// generate_unswizzled_blend), and the restore is lost in some draws (not traced further; the
-// comment there cites LLVM bug 6393, which reorders those intrinsics). Measured: after a
-// frame of hdr (its scene pass of 1000 cubes alone does it), deferred or pbr every later
-// fragment shader keeps them (deferred's lighting writes pow(x, 0.4545) of a denormal x as
-// 5e-18, not 0); after the test programs' draws into RGBA16F it still flushes. raster::
-// Renderer keeps them from its first pass with triangles into a half-float target, which
-// matches the scenes (ScopedDenormalMode); then these functions flush nothing, and log2
-// reads a denormal's exponent bits as llvmpipe's masks do.
+// where a denormal would change the result (each is marked FTZ). llvmpipe's rasterizer
+// thread can be left keeping denormals: the blend code of a half-float target saves the
+// MXCSR, turns FTZ/DAZ off and restores it (lp_state_fs.c generate_unswizzled_blend), but a
+// block whose fragments the depth test has all killed leaves it off (measured,
+// gl_math_test's "llvmpipe keeps denormals after ..." case; the cause in the JIT code was
+// not traced). Every scene with a half-float target has such blocks (overdraw) in its first
+// half-float pass, so after a frame of hdr, deferred or pbr every later fragment shader
+// keeps denormals (deferred's lighting writes pow(x, 0.4545) of a denormal x as 5e-18, not
+// 0). raster::Renderer keeps them from its first pass into a half-float target with a
+// depth-tested colour draw on (ScopedDenormalMode); then these functions flush nothing, and
+// log2 reads a denormal's exponent bits as llvmpipe's masks do.
 //
 // Measured against llvmpipe (tests/simd/gl_math_test.cpp, and a standalone GL probe reading the
 // arguments with texelFetch): every result bit-identical, NaN payloads included, for all

@@ -88,8 +88,9 @@ TEST_SUITE("scene_deferred") {
   }
   // A pixel the SSAO darkens to 0 is lit by the point lights' specular alone, and there
   // albedo * lighting is a denormal at these two frames: llvmpipe's lighting pass keeps it
-  // (its threads stopped flushing at the G-buffer's half-float draw) and writes
-  // pow(x, 0.4545) as about 5e-18; a pipeline that flushed it wrote 0.
+  // (its threads stopped flushing in the G-buffer's half-float draw, at its first block that
+  // failed the depth test) and writes pow(x, 0.4545) as about 5e-18; a pipeline that flushed
+  // it wrote 0.
   TEST_CASE("the final pass keeps denormals as llvmpipe does after the G-buffer's half-float draw") {
     for (const auto& [t, w, h] : {std::tuple{1.768f, 672, 296}, std::tuple{7.526f, 244, 303}}) {
       const compare::TargetStats s = testing_support::compareFloatFinal("deferred", t, w, h);

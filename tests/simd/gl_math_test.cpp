@@ -16,11 +16,12 @@
 //
 // Denormal arguments: llvmpipe's shaders run with DAZ/FTZ, so a denormal argument is a zero
 // there, while this pipeline delivers it unchanged and the functions flush it themselves;
-// their echo is checked against the flushed value on the GL side. After a draw into a
-// half-float target llvmpipe's thread may keep denormals (simd/gl_math.h, the top), and so
-// does this pipeline's renderer after hdr's scene pass: a second case draws the probe after
-// an hdr frame, with denormal arguments a third of the time, and demands the same bits and
-// the arguments unflushed.
+// their echo is checked against the flushed value on the GL side. llvmpipe's thread keeps
+// denormals from a half-float draw's first block that fails its depth test on (simd/
+// gl_math.h, the top), and this pipeline's renderer from its first depth-tested half-float
+// pass: a second case draws the probe after an hdr frame, with denormal arguments a third of
+// the time, and demands the same bits and the arguments unflushed; a third follows the rule
+// draw by draw.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -401,6 +402,16 @@ void runInFreshProcess(const char* name, const std::string& environment, const s
   CHECK(fresh.status == 0);
   CHECK(fresh.out.find(ranMarker) != std::string::npos);
 }
+
+// Whether the case `name` runs in this process: one with a single llvmpipe rasterizer thread
+// (LP_NUM_THREADS=1), whose denormal mode only this process's draws have set, as no GL
+// backend was made before. Otherwise it runs the case in such a process and says no.
+bool runsHereWithOneLlvmpipeThread(const char* name, const std::string& ranMarker) {
+  const char* lpThreads = std::getenv("LP_NUM_THREADS");
+  if (scenes::glBackendsMade() == 0 && lpThreads != nullptr && std::string(lpThreads) == "1") return true;
+  runInFreshProcess(name, "LP_NUM_THREADS=1 ", ranMarker);
+  return false;
+}
 }  // namespace
 
 TEST_SUITE("gl_math") {
@@ -439,16 +450,11 @@ TEST_SUITE("gl_math") {
   }
 
   TEST_CASE(kKeptDenormals) {
-    // llvmpipe's rasterizer thread is left keeping denormals by some draws into a half-float
-    // target, hdr's scene pass among them (measured: its 1000 cubes at any size, even 4x3; not
-    // one cube, nor the test programs' draws into RGBA16F: simd/gl_math.h, the top). So the
-    // case runs in a fresh process with one rasterizer thread (LP_NUM_THREADS=1) and draws an
-    // hdr frame first; this pipeline's renderer keeps denormals from that pass on.
-    const char* lpThreads = std::getenv("LP_NUM_THREADS");
-    if (scenes::glBackendsMade() > 0 || lpThreads == nullptr || std::string(lpThreads) != "1") {
-      runInFreshProcess(kKeptDenormals, "LP_NUM_THREADS=1 ", "denormal results from llvmpipe");
-      return;
-    }
+    // llvmpipe's rasterizer thread keeps denormals from a half-float draw's first block that
+    // fails its depth test on (simd/gl_math.h, the top; the next case), as hdr's scene pass
+    // has many. So the case draws an hdr frame first, with one llvmpipe thread; this
+    // pipeline's renderer keeps denormals from that pass on.
+    if (!runsHereWithOneLlvmpipeThread(kKeptDenormals, "denormal results from llvmpipe")) return;
     auto gl = scenes::makeGlBackend();
     auto fast = scenes::makeRasterBackend(0);
     auto reference = scenes::makeRasterBackend(0, true);   // the Lanes<8> path
@@ -505,11 +511,7 @@ TEST_SUITE("gl_math") {
     // only at the end, and this pipeline gives its bits at every step but one, which it does
     // not draw (a depth-tested half-float pass where no block fails: this renderer cannot
     // know that none did, and keeps denormals from such a pass on).
-    const char* lpThreads = std::getenv("LP_NUM_THREADS");
-    if (scenes::glBackendsMade() > 0 || lpThreads == nullptr || std::string(lpThreads) != "1") {
-      runInFreshProcess(kWhenKept, "LP_NUM_THREADS=1 ", "denormals kept by llvmpipe");
-      return;
-    }
+    if (!runsHereWithOneLlvmpipeThread(kWhenKept, "denormals kept by llvmpipe")) return;
     auto gl = scenes::makeGlBackend();
     auto ours = scenes::makeRasterBackend(0);
     const std::vector<Args> args = keptDenormalArguments(MathProbe::kSin, size_t(kWidth) * kHeight / 4, 31u);

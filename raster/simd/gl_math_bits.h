@@ -99,10 +99,10 @@ template <class F> F fabsF(F x) { return asFloat(asBits(x) & UOf<F>(~kSignBit));
 template <class F> auto isFiniteMask(F x) { const UOf<F> e = asBits(x) & UOf<F>(0x7f800000u); return !eq(e, UOf<F>(0x7f800000u)); }
 // Below what magnitude the shader code now running reads a float as zero in llvmpipe (see the
 // top of gl_math.h): 2^-126, the least normal float, while its thread flushes denormals; 0
-// in the fragment stage of a pass at or after a draw into a half-float colour target, which
-// keeps them. A bound rather than a flag, so daz() stays one compare and one select. Written
-// only by ScopedDenormalMode, between parallel loops; process-wide for the reason the method
-// set is (raster/methods.h): no two renderers draw at the same time.
+// where it keeps them (raster::Renderer's fragment stage from its first depth-tested pass
+// into a half-float target on). A bound rather than a flag, so daz() stays one compare and
+// one select. Written only by ScopedDenormalMode, between parallel loops; process-wide for
+// the reason the method set is (raster/methods.h): no two renderers draw at the same time.
 inline float flushBelow = 0x1p-126f;
 // x86 DAZ, as llvmpipe's shader threads run while they flush: a denormal operand reads as a
 // zero of its sign.

@@ -356,6 +356,31 @@ Agreement compare(const scenes::ImageData& ours, const scenes::ImageData& gl, co
   return a;
 }
 
+// The probe for `func` over `args` on llvmpipe and on this pipeline's two lane paths (`fast`,
+// the vector lanes; `reference`, Lanes<8>): both must give llvmpipe's bits, and the fast
+// path's echo the arguments as llvmpipe received them (denormals flushed where `glFlushes`).
+// `label` opens the message. Returns llvmpipe's image.
+scenes::ImageData checkAgainstGl(scenes::Backend& gl, scenes::Backend& fast, scenes::Backend& reference, int func,
+                                 const std::vector<Args>& args, bool glFlushes, const std::string& label) {
+  const scenes::ImageData glImage = runProbe(gl, func, args);
+  const scenes::ImageData fastImage = runProbe(fast, func, args);
+  const scenes::ImageData referenceImage = runProbe(reference, func, args);
+  REQUIRE(glImage.floats.size() == size_t(kWidth) * kHeight * 4);
+  REQUIRE(fastImage.floats.size() == glImage.floats.size());
+  REQUIRE(referenceImage.floats.size() == glImage.floats.size());
+  const Agreement a = compare(fastImage, glImage, args, true, glFlushes);
+  const Agreement r = compare(referenceImage, glImage, args, false);
+  MESSAGE(label << ": " << a.exact << " of " << a.total << " results bit-identical to llvmpipe (max " << a.maxUlp
+                << " ulp); Lanes<8> path " << r.exact << " of " << r.total);
+  CAPTURE(a.firstDiff);
+  CAPTURE(r.firstDiff);
+  CAPTURE(a.firstEchoBroken);
+  CHECK(a.echoBroken == 0);
+  CHECK(a.exact == a.total);
+  CHECK(r.exact == r.total);
+  return glImage;
+}
+
 // Draws test/mrt's full-screen quad at depth 0 `times` times in one pass into a new target of
 // `format`, with a Depth16 target and the depth test (LESS) where `depthTested`: from the
 // second time on, every fragment fails its depth test.
@@ -430,22 +455,7 @@ TEST_SUITE("gl_math") {
     for (int func = 0; func < MathProbe::kFunctionCount; ++func) {
       CAPTURE(functionName(func));
       const std::vector<Args> args = argumentsFor(func, size_t(kWidth) * kHeight, 4242u + uint32_t(func));
-      const scenes::ImageData glImage = runProbe(*gl, func, args);
-      const scenes::ImageData fastImage = runProbe(*fast, func, args);
-      const scenes::ImageData referenceImage = runProbe(*reference, func, args);
-      REQUIRE(glImage.floats.size() == size_t(kWidth) * kHeight * 4);
-      REQUIRE(fastImage.floats.size() == glImage.floats.size());
-      REQUIRE(referenceImage.floats.size() == glImage.floats.size());
-      const Agreement a = compare(fastImage, glImage, args, true);
-      const Agreement r = compare(referenceImage, glImage, args, false);
-      MESSAGE(functionName(func) << ": " << a.exact << " of " << a.total << " results bit-identical to llvmpipe (max "
-                                 << a.maxUlp << " ulp); Lanes<8> path " << r.exact << " of " << r.total);
-      CAPTURE(a.firstDiff);
-      CAPTURE(r.firstDiff);
-      CAPTURE(a.firstEchoBroken);
-      CHECK(a.echoBroken == 0);
-      CHECK(a.exact == a.total);
-      CHECK(r.exact == r.total);
+      checkAgainstGl(*gl, *fast, *reference, func, args, true, functionName(func));
     }
   }
 
@@ -473,27 +483,13 @@ TEST_SUITE("gl_math") {
     for (int func = 0; func < MathProbe::kFunctionCount; ++func) {
       CAPTURE(functionName(func));
       const std::vector<Args> args = keptDenormalArguments(func, count, 977u + uint32_t(func));
-      const scenes::ImageData glImage = runProbe(*gl, func, args);
-      const scenes::ImageData fastImage = runProbe(*fast, func, args);
-      const scenes::ImageData referenceImage = runProbe(*reference, func, args);
-      REQUIRE(glImage.floats.size() == size_t(kWidth) * kHeight * 4);
-      REQUIRE(fastImage.floats.size() == glImage.floats.size());
-      REQUIRE(referenceImage.floats.size() == glImage.floats.size());
+      // The echo unflushed: llvmpipe delivered the denormal arguments, it kept them.
+      const scenes::ImageData glImage =
+          checkAgainstGl(*gl, *fast, *reference, func, args, false, functionName(func) + ", denormals kept");
       for (size_t i = 0; i < count; ++i) {
         denormalArguments += isDenormal(args[i].x.effective()) || isDenormal(args[i].y.effective());
         denormalResults += isDenormal(glImage.floats[i * 4]);
       }
-      const Agreement a = compare(fastImage, glImage, args, true, false);
-      const Agreement r = compare(referenceImage, glImage, args, false);
-      MESSAGE(functionName(func) << ", denormals kept: " << a.exact << " of " << a.total
-                                 << " results bit-identical to llvmpipe (max " << a.maxUlp << " ulp); Lanes<8> path " << r.exact
-                                 << " of " << r.total);
-      CAPTURE(a.firstDiff);
-      CAPTURE(r.firstDiff);
-      CAPTURE(a.firstEchoBroken);
-      CHECK(a.echoBroken == 0);   // llvmpipe delivered the denormal arguments: it kept them
-      CHECK(a.exact == a.total);
-      CHECK(r.exact == r.total);
     }
     // The mode is the one meant: denormals reached the functions and came out of some.
     MESSAGE(denormalArguments << " denormal arguments, " << denormalResults << " denormal results from llvmpipe");

@@ -47,6 +47,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROG = "random_frames.py"
 # A target's line of `raster compare`: name, kind, WxH, then "max N" (N ulps, LSBs or steps).
 TARGET_LINE = re.compile(r"^(\S+)\s+\S+\s+\d+x\d+\s+max (\S+)")
+# The statuses that make the run fail and are printed as they happen.
+NOT_SAME = ("differs", "failed", "timeout")
 
 
 def parse_args(argv):
@@ -167,14 +169,14 @@ def main(argv):
             frame = draw_frame(rng, args)
             run_frame(args, frame, out_dir)
             frames.append(frame)
-            if frame["status"] in ("differs", "failed", "timeout"):
+            if frame["status"] in NOT_SAME:
                 shown = ", ".join(f"{k} max {v}" for k, v in frame.get("targets", {}).items() if v != "0")
                 print(f"{frame['status']}: raster {shlex.join(compare_words(frame))}"
                       + (f" ({shown})" if shown else "") + (f": {frame['message']}" if "message" in frame else ""),
                       flush=True)
             if not args.quiet and time.monotonic() - last_progress > 10:
                 last_progress = time.monotonic()
-                bad = sum(f["status"] in ("differs", "failed", "timeout") for f in frames)
+                bad = sum(f["status"] in NOT_SAME for f in frames)
                 print(f"{PROG}: {len(frames)} frames, {bad} not the same", file=sys.stderr, flush=True)
     counts = {status: sum(f["status"] == status for f in frames) for status in ("same", "differs", "refused", "failed", "timeout")}
     print(f"{len(frames)} frames (seed {args.seed}): " + ", ".join(f"{n} {status}" for status, n in counts.items()))
@@ -182,7 +184,7 @@ def main(argv):
         summary = {"seed": args.seed, "raster": os.path.abspath(args.raster), "threads": args.threads,
                    "max_size": args.max_size, "max_time": args.max_time, "counts": counts, "frames": frames}
         write_text_atomically(json.dumps(summary, indent=1) + "\n", args.json)
-    return 1 if counts["differs"] or counts["failed"] or counts["timeout"] else 0
+    return 1 if any(counts[status] for status in NOT_SAME) else 0
 
 
 if __name__ == "__main__":

@@ -12,8 +12,13 @@
 # a frame is split over threads is the same code under every lane type, and the release and
 # sanitizer configurations run it). Only their sources are compiled
 # (RASTER_TEST_SUITES_ONLY), at -O1 as in the SIMD-off configuration (the same bits at any
-# level), the command line at -O0 (it only runs the scenes' softpipe renders and refusals
-# here). About two minutes on two cores.
+# level). The command line is not built, and the cases of these suites that run it are left
+# out (below): what they check does not depend on the lane code. They are softpipe's renders
+# of each scene, for scale (13 of the suites' 23 seconds on two cores; the distance to
+# llvmpipe they bound is zero in the cases kept), and the refusals of bad assets and
+# options; the release and sanitizer configurations run both. A case added to these suites
+# that runs the program fails here on the missing program, not silently. About a minute and
+# a half on two cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null || true)
@@ -28,8 +33,8 @@ for subset in avx512f avx512vl avx512bw avx512dq; do   # what RASTER_AVX512=AUTO
   fi
 done
 cmake -S . -B build-avx2 -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -DNDEBUG" -DRASTER_AVX512=OFF \
-  -DRASTER_COMMAND_LINE_OPTIONS=-O0 \
   -DRASTER_TEST_SUITES_ONLY="scene_shadow;scene_deferred;scene_hdr;scene_pbr;raster_vs_gl;hdr_features;shadow_compare;clears;texture;format;derivatives;geometry;shaders;simd;gl_math;math_methods;methods;shading_rate" \
   > /dev/null
-cmake --build build-avx2 -j"$(nproc)" --target raster_tests raster_cli
+cmake --build build-avx2 -j"$(nproc)" --target raster_tests
+export RASTER_TEST_CASE_EXCLUDE="*softpipe*,a missing or corrupt asset stops the render*,a split order that cannot work*"
 ctest --test-dir build-avx2 --output-on-failure -j"$(nproc)"

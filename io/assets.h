@@ -27,10 +27,8 @@ namespace scenes {
 // assetDirectory(options) + "/" + relative.
 std::string assetPath(const SceneOptions& options, const std::string& relative);
 
-// Throws SceneError ("asset PATH: no such file", "is a directory, not a file", ...) unless
-// `path` names a regular file: the first checks every loader below makes, with their words,
-// for a caller that must know up front (sweep --check) and reads the file only later.
-void checkAssetFileExists(const std::string& path);
+// Every loader below reads its file through io/asset_file.h's readAssetFile (there, too, the
+// existence check alone, for a caller that must know up front).
 
 // ---- the cat mesh -------------------------------------------------------------------------
 

@@ -20,6 +20,7 @@
 #include "apps/common/sides.h"
 #include "apps/sweep/sweep_file.h"
 #include "compare/metrics.h"
+#include "io/asset_file.h"
 #include "io/assets.h"
 #include "io/memory_budget.h"
 #include "io/output_file.h"

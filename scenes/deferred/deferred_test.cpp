@@ -30,6 +30,7 @@
 #include "compare/metrics.h"
 #include "io/asset_manifest.h"
 #include "io/image_io.h"
+#include "tests/sanitizer_build.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {
@@ -44,12 +45,6 @@ void checkAgainstLlvmpipe(float t, int w, int h) {
     CHECK(s.shareDiffering == 0.0);   // every target, SSAO and final included: bit-identical
   }
 }
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kUnderAddressSanitizer = true;
-#else
-constexpr bool kUnderAddressSanitizer = false;
-#endif
 
 std::string cli() { return RASTER_CLI_PATH; }
 
@@ -115,7 +110,7 @@ TEST_SUITE("scene_deferred") {
   // under ASan's interceptors this case took most of the suite's 20 minutes, the whole ASan
   // job's critical path (Intel host, 2026-11-29). Softpipe is not instrumented, and this
   // pipeline's render here is the one the cases above already run under ASan.
-  TEST_CASE("every target is closer to llvmpipe than softpipe is" * doctest::skip(kUnderAddressSanitizer)) {
+  TEST_CASE("every target is closer to llvmpipe than softpipe is" * doctest::skip(testing_support::kUnderAddressSanitizer)) {
     const auto gl = renderWithLlvmpipe("deferred", 1.0f, 640, 480);
     auto ours = scenes::makeRasterBackend(0);
     const auto mine = renderScene(*ours, "deferred", 1.0f, 640, 480);

@@ -15,6 +15,7 @@
 #include "io/image_io.h"
 #include "scenes/scene.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/sanitizer_build.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {
@@ -119,10 +120,8 @@ TEST_SUITE("memory") {
   // makes no GL backend never loads Mesa (backends/gl_entry_points.h). Each scene is rendered
   // once with each backend, each a process of its own. Sanitizer builds are left out: their
   // allocators' redzones and shadow memory weigh on the two sides unevenly.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  TEST_CASE("memory: at 1920x1080 no scene's render needs more memory than llvmpipe's" * doctest::skip()) {}
-#else
-  TEST_CASE("memory: at 1920x1080 no scene's render needs more memory than llvmpipe's") {
+  TEST_CASE("memory: at 1920x1080 no scene's render needs more memory than llvmpipe's" *
+            doctest::skip(testing_support::kUnderSanitizer)) {
     TempFolder temp;
     for (const std::string& scene : testing_support::scenesUnderTest()) {
       long peak[2] = {};
@@ -135,7 +134,6 @@ TEST_SUITE("memory") {
       CHECK(peak[0] <= peak[1]);
     }
   }
-#endif
 
   // Seven 16384x16384 JPEGs in the asset folder took 17 GB before anything failed. An image
   // is now refused from its header, before it is decoded: here a PNG whose header claims

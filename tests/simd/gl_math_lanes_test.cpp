@@ -12,6 +12,7 @@
 #include <string>
 
 #include "raster/simd/glsl.h"
+#include "tests/sanitizer_build.h"
 #include "tests/simd/gl_math_args.h"
 
 using namespace gl_math_test;
@@ -61,11 +62,7 @@ TEST_SUITE("gl_math") {
     // argument, not millions, and each of the 256 exponents is still drawn hundreds of
     // times; the other builds compare the bits at full count (2^21 took 15 of the
     // ASan + UBSan suites' 345 seconds).
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-    constexpr size_t kArguments = size_t(1) << 18;
-#else
-    constexpr size_t kArguments = size_t(1) << 21;
-#endif
+    constexpr size_t kArguments = size_t(1) << (testing_support::kUnderSanitizer ? 18 : 21);
     // Both of llvmpipe's denormal modes: flushed, and kept (a fragment shader after a draw
     // into a half-float target), where AVX-512's log2 instructions would read a denormal
     // unlike the bit operations; a quarter of the kept mode's x are denormals.

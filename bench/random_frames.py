@@ -15,8 +15,8 @@ Threads: llvmpipe is not stable against itself past its host's cores (STABILITY.
 is not bit-identical": a thread that drew no half-float tile still flushes denormals), so
 the default is 1,2; a frame that differs only at more threads than cores is llvmpipe's.
 
-Writes --json FILE (every frame: its arguments, status and each target's max difference)
-when asked, and prints a summary. Exit status: 0 when every frame matched or was refused, 1
+Writes --json FILE (every frame: its arguments, status and each target's largest difference,
+read from the compare.json `raster compare` writes) when asked, and prints a summary. Exit status: 0 when every frame matched or was refused, 1
 when one differed, failed or ran past --timeout, 2 for bad arguments.
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
@@ -31,7 +31,6 @@ import json
 import math
 import os
 import random
-import re
 import shlex
 import subprocess
 import sys
@@ -45,8 +44,6 @@ from raster_scenes import checked_names, scene_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROG = "random_frames.py"
-# A target's line of `raster compare`: name, kind, WxH, then "max N" (N ulps, LSBs or steps).
-TARGET_LINE = re.compile(r"^(\S+)\s+\S+\s+\d+x\d+\s+max (\S+)")
 # The statuses that make the run fail and are printed as they happen.
 NOT_SAME = ("differs", "failed", "timeout")
 
@@ -136,27 +133,33 @@ def compare_words(frame):
 
 def run_frame(args, frame, out_dir):
     """Compares one frame; sets its status (same, differs, refused, failed, timeout) and the
-    max difference of each target."""
+    largest difference of each target in the target's own unit (compare.json's max_in_unit:
+    8-bit steps, depth LSBs, half or float ULPs)."""
     command = [args.raster, *compare_words(frame), "--out", out_dir, "--quiet"]
+    numbers = os.path.join(out_dir, "compare.json")
+    if os.path.exists(numbers):   # the last frame's: this one must write its own
+        os.remove(numbers)
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     except subprocess.TimeoutExpired:
         frame["status"] = "timeout"
         return
     targets = {}
-    for line in done.stdout.splitlines():
-        match = TARGET_LINE.match(line)
-        if match:
-            targets[match.group(1)] = match.group(2)
+    if done.returncode == 0 and os.path.exists(numbers):
+        try:
+            with open(numbers) as f:
+                targets = {t["name"]: t["max_in_unit"] for t in json.load(f)["targets"]}
+        except (OSError, ValueError, KeyError, TypeError) as error:
+            frame["message"] = f"{numbers} unreadable: {error}"
     frame["targets"] = targets
     if done.returncode == 2:
         frame["status"] = "refused"
         frame["message"] = done.stderr.strip()[-500:]
     elif done.returncode != 0 or not targets:
         frame["status"] = "failed"
-        frame["message"] = done.stderr.strip()[-500:] or f"exit {done.returncode}, no target compared"
+        frame.setdefault("message", done.stderr.strip()[-500:] or f"exit {done.returncode}, no target compared")
     else:
-        frame["status"] = "same" if all(v == "0" for v in targets.values()) else "differs"
+        frame["status"] = "same" if all(v == 0 for v in targets.values()) else "differs"
 
 
 def main(argv):
@@ -170,7 +173,7 @@ def main(argv):
             run_frame(args, frame, out_dir)
             frames.append(frame)
             if frame["status"] in NOT_SAME:
-                shown = ", ".join(f"{k} max {v}" for k, v in frame.get("targets", {}).items() if v != "0")
+                shown = ", ".join(f"{k} max {v:g}" for k, v in frame.get("targets", {}).items() if v != 0)
                 print(f"{frame['status']}: raster {shlex.join(compare_words(frame))}"
                       + (f" ({shown})" if shown else "") + (f": {frame['message']}" if "message" in frame else ""),
                       flush=True)

@@ -7,7 +7,9 @@
 
 #include "apps/common/number_text.h"
 #include "apps/common/sides.h"
+#include "apps/common/target_stats_json.h"
 #include "io/image_io.h"
+#include "io/output_file.h"
 #include "compare/metrics.h"
 #include "backends/backends.h"
 
@@ -68,6 +70,15 @@ int runCompare(const CompareArgs& args) {
   std::cout << "  reference: " << reference.backend << "  scene: " << frame.scene << " at " << sizeAndTime(frame)
             << std::endl;
   std::vector<std::string> failures;
+  nlohmann::json record = {{"scene", frame.scene},
+                           {"size", {frame.width, frame.height}},
+                           {"time", frame.time},
+                           {"sets", frame.sets},
+                           {"float_final", frame.floatFinal},
+                           {"test", test.backend},
+                           {"reference", reference.backend},
+                           {"targets", nlohmann::json::array()}};
+  if (args.test == "raster") record["methods"] = raster::methodLabel(frame.methods);
   for (size_t i = 0; i < test.targets.size(); ++i) {
     const Target& ours = test.targets[i];
     const Target& theirs = reference.targets[i];
@@ -78,9 +89,14 @@ int runCompare(const CompareArgs& args) {
     compare::writePng(base + "_gl.png", theirs.image);
     compare::writeHeatmapPng(base + "_diff.png", ours.image, theirs.image);
     std::cout << compare::formatStatsLine(stats) << std::endl;
+    record["targets"].push_back(targetStatsJson(stats));
     for (const std::string& failure : exceeded(stats, limits)) failures.push_back(failure);
   }
-  std::cout << "images: " << outFolder << "/NAME_{ours,gl,diff}.png" << std::endl;
+  // The numbers of the lines above, for scripts: written last, whole (io/output_file.h).
+  record["failures"] = failures;
+  const std::string numbers = (fs::path(outFolder) / "compare.json").string();
+  compare::writeOutputFile(numbers, record.dump(1) + "\n");
+  std::cout << "images: " << outFolder << "/NAME_{ours,gl,diff}.png  numbers: " << numbers << std::endl;
   for (const std::string& failure : failures) std::cerr << "raster: " << failure << std::endl;
   return failures.empty() ? 0 : 1;
 }

@@ -1,6 +1,7 @@
 // `raster compare SCENE`: one frame with a test and a reference backend; per target a stats
-// line (compare/metrics.h) and the ours / gl / heat-map PNGs, and the thresholds that fail
-// the run (exit 1) when a target exceeds them.
+// line (compare/metrics.h) and the ours / gl / heat-map PNGs, then compare.json beside them
+// (every target's numbers, apps/common/target_stats_json.h, and the thresholds exceeded); a
+// threshold exceeded fails the run (exit 1).
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@ namespace cli {
 void addCompareOptions(CLI::App& command, CompareArgs& args) {
   addFrameOptions(command, args);
   command.add_option("--out", args.out,
-                     "Folder for NAME_ours.png, NAME_gl.png, NAME_diff.png (default: compare-SCENE)")
+                     "Folder for NAME_ours.png, NAME_gl.png, NAME_diff.png and compare.json (default: compare-SCENE)")
       ->type_name("DIR");
   command.add_option("--reference", args.reference, "Reference GL driver")
       ->type_name("llvmpipe|softpipe")->capture_default_str();

@@ -12,6 +12,7 @@
 
 #include "apps/common/progress.h"
 #include "apps/common/sides.h"
+#include "apps/common/target_stats_json.h"
 #include "apps/report/report_charts.h"
 #include "apps/report/report_children.h"
 #include "apps/report/report_folder.h"
@@ -94,7 +95,7 @@ report::Section sceneSection(const report::SceneWork& scene, json& record) {
     if (mine.name != theirs.name) throw std::runtime_error("the sides of " + frame.scene + " expose different targets");
     compare::TargetStats stats = compare::compareImages(mine.name, mine.image, theirs.image);
     compare::measureFlip(stats, mine.image, theirs.image);
-    const json statsRecord = report::statsJson(stats);
+    const json statsRecord = cli::targetStatsJson(stats);
     html += "<h3>" + report::escape(mine.name + " (" + stats.kind + ")") + "</h3>\n" +
             report::targetRow(mine, theirs, gl.backend, scene.folder, scene.work, statsRecord);
     record["targets"].push_back(statsRecord);

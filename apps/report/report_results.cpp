@@ -22,29 +22,6 @@ std::string ulpsKey(const std::string& kind) { return kind == "half" ? "max_half
 
 }  // namespace
 
-json statsJson(const compare::TargetStats& s) {
-  json j = {{"name", s.name},
-            {"kind", s.kind},
-            {"size", {s.width, s.height}},
-            {"max_abs", s.maxAbs},
-            {"rmse", s.rmse},
-            {"psnr_db", cli::dbOrNull(s.psnr)},
-            {"share_differing", s.shareDiffering},
-            {"share_over1", s.shareOver1},
-            {"share_over4", s.shareOver4}};
-  if (s.kind == "depth") {
-    j["depth_texels_differing"] = s.depthTexelsDiffering;
-    j["max_depth_lsb"] = s.maxDepthLsb;
-  }
-  if (s.isFloatKind()) {
-    j["share_bit_identical"] = s.shareBitIdentical;
-    j[ulpsKey(s.kind)] = s.maxUlps;
-    j["nonfinite_pixels"] = s.nonFinitePixels;
-  }
-  if (s.flipMeasured) j["flip_mean"] = s.flipMean ? json(*s.flipMean) : json(nullptr);
-  return j;
-}
-
 std::string psnrText(const json& db) { return db.is_null() ? "identical" : cli::fixedDigits(db.get<double>(), 2); }
 
 std::string metricsTable(const json& s, const std::string& id) {

@@ -1,7 +1,7 @@
 // The report's tables of results, each rendered from the JSON it came from, so what the page
 // shows is what the data file beside it holds (the Chromium test checks cells against it):
 //   - a target's metrics: compare::compareImages' TargetStats (what `raster compare` prints),
-//     as JSON (statsJson) and as a table;
+//     as JSON (cli::targetStatsJson, apps/common/target_stats_json.h) and as a table;
 //   - `raster tradeoff`'s tradeoff.json (one scene's object, or a list of them);
 //   - `raster sweep`'s sweep.json;
 //   - a stage view's sidecar JSON (`raster render --view`), whatever its fields.
@@ -14,13 +14,6 @@
 #include "compare/metrics.h"
 
 namespace report {
-
-// The stats as JSON: name, kind, size [w, h], max_abs, rmse, psnr_db (null when identical),
-// share_differing, share_over1, share_over4, and the kind's own fields (depth:
-// depth_texels_differing, max_depth_lsb; half: share_bit_identical, max_half_ulps,
-// nonfinite_pixels; float: the same with max_float_ulps), and flip_mean when FLIP was
-// measured (compare::measureFlip; null for a target that is not rgba8).
-nlohmann::json statsJson(const compare::TargetStats& stats);
 
 // One target's metrics, a row per metric (the PSNR row is "PSNR (dB)", shown with two
 // decimals or "identical"). `id` names the table.

@@ -393,11 +393,14 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         with open(frames_json) as f:
             frames = json.load(f)
         check(frames["counts"]["same"] == 4 and len(frames["frames"]) == 4, f"random_frames.py counts: {frames['counts']}")
-        check(all(fr["targets"].get("final") == "0" and set(fr["targets"].values()) == {"0"} for fr in frames["frames"]),
+        check(all(fr["targets"].get("final") == 0 and set(fr["targets"].values()) == {0} for fr in frames["frames"]),
               f"random_frames.py targets: {[fr.get('targets') for fr in frames['frames']]}")
     fake = os.path.join(tmp, "fake-raster")
-    for compare, expected, shows in (("echo 'final  rgba8 8x8  max 3  rmse 0.1'", 1, "differs: raster compare "),
-                                     ("echo 'raster: --set: a value out of range' >&2; exit 2", 0, " 1 refused")):
+    # The fake's compare writes compare.json where --out says, as raster's does.
+    numbers = 'while [ $# -gt 0 ] && [ "$1" != --out ]; do shift; done; echo \'{"targets": [{"name": "final", "max_in_unit": 3}]}\' > "$2/compare.json"'
+    for compare, expected, shows in ((numbers, 1, "differs: raster compare "),
+                                     ("echo 'raster: --set: a value out of range' >&2; exit 2", 0, " 1 refused"),
+                                     ("echo 'final  rgba8 8x8  max 0'", 1, "failed: raster compare ")):
         with open(fake, "w") as f:
             f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {compare}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
         os.chmod(fake, 0o755)

@@ -231,6 +231,49 @@ TEST_SUITE("cli") {
     CHECK(readText(cwd / "default.png") != readText(cwd / "libm.png"));
   }
 
+  // Scripts read compare.json, not the lines (bench/random_frames.py among them): it must say
+  // what the lines and the exit status say, target by target. `draft` leaves the shadow
+  // scene's final image off llvmpipe's, so a threshold fails and the run exits 1.
+  TEST_CASE("compare writes compare.json: each printed target's numbers and the thresholds exceeded") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    const RunResult run =
+        runCli(cwd, "compare shadow --size 64x48 --preset draft --max-rmse 0 --max-depth-lsb 0 --quiet --out cmp");
+    REQUIRE(run.status == 1);
+    const nlohmann::json json = nlohmann::json::parse(readText(cwd / "cmp" / "compare.json"));
+    CHECK(json.at("scene") == "shadow");
+    CHECK(json.at("size") == nlohmann::json::array({64, 48}));
+    CHECK(json.at("methods") == "draft");
+    CHECK(json.at("test") == "raster");
+    CHECK(json.at("reference") == "llvmpipe");
+    // One entry a printed line, in order, with the line's name, kind and "max".
+    std::vector<std::string> lines;
+    for (size_t start = 0, end; (end = run.out.find('\n', start)) != std::string::npos; start = end + 1)
+      if (run.out.compare(start, 5, "test:") != 0 && run.out.compare(start, 7, "images:") != 0)
+        lines.push_back(run.out.substr(start, end - start));
+    const nlohmann::json& targets = json.at("targets");
+    REQUIRE(targets.size() == lines.size());
+    REQUIRE(targets.size() == 3);   // the map, the window's depth, the final image
+    bool finalDiffers = false;
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const nlohmann::json& t = targets[i];
+      CAPTURE(lines[i]);
+      CHECK(lines[i].rfind(t.at("name").get<std::string>() + " ", 0) == 0);
+      CHECK(lines[i].find(" " + t.at("kind").get<std::string>() + " ") != std::string::npos);
+      std::ostringstream max;
+      max << " max " << t.at("max_in_unit").get<uint64_t>() << (t.at("kind") == "depth" ? " lsb" : " ");
+      CHECK(lines[i].find(max.str()) != std::string::npos);
+      if (t.at("name") == "final") finalDiffers = t.at("max_in_unit").get<uint64_t>() > 0;
+    }
+    CHECK(finalDiffers);
+    // The failures are the lines on stderr, without the program's prefix.
+    std::string failures;
+    for (const nlohmann::json& failure : json.at("failures")) failures += "raster: " + failure.get<std::string>() + "\n";
+    CHECK(!json.at("failures").empty());
+    CHECK(failures == run.err);
+  }
+
   TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {
     expectRefused("tradeoff " + aScene());
     expectRefused("tradeoff " + aScene() + " --out /nonexistent/dir/t");

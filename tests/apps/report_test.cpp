@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/common/target_stats_json.h"
 #include "apps/report/report_html.h"
 #include "apps/report/report_pixels.h"
 #include "apps/report/report_results.h"
@@ -68,7 +69,7 @@ TEST_CASE("JSON values read as short texts") {
 TEST_CASE("the metrics table shows what the stats JSON holds") {
   scenes::ImageData a = rgba8(4, 2), b = rgba8(4, 2);
   b.rgba8[0] = 103;   // one pixel off by 3 steps
-  const json stats = report::statsJson(compare::compareImages("final", a, b));
+  const json stats = cli::targetStatsJson(compare::compareImages("final", a, b));
   CHECK(stats.at("kind") == "rgba8");
   CHECK(stats.at("max_abs").get<double>() == 3);
   const std::string html = report::metricsTable(stats, "metrics-x-final");
@@ -77,14 +78,14 @@ TEST_CASE("the metrics table shows what the stats JSON holds") {
   CHECK(html.find("data-value=\"" + stats.at("psnr_db").dump() + "\"") != std::string::npos);
   CHECK(html.find("12.500%") != std::string::npos);   // 1 of 8 pixels differs
 
-  const json same = report::statsJson(compare::compareImages("final", a, a));
+  const json same = cli::targetStatsJson(compare::compareImages("final", a, a));
   CHECK(same.at("psnr_db").is_null());
   CHECK(report::metricsTable(same, "m").find(">identical</td>") != std::string::npos);
   CHECK(!stats.contains("flip_mean"));   // FLIP is added only where it was measured
 
   compare::TargetStats measured = compare::compareImages("final", a, b);
   compare::measureFlip(measured, a, b);
-  const json withFlip = report::statsJson(measured);
+  const json withFlip = cli::targetStatsJson(measured);
   REQUIRE(withFlip.at("flip_mean").is_number());
   CHECK(withFlip.at("flip_mean").get<double>() == *measured.flipMean);
   CHECK(withFlip.at("flip_mean").get<double>() > 0.0);

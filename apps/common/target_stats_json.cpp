@@ -1,0 +1,41 @@
+// A target's metrics as JSON (target_stats_json.h).
+#include "apps/common/target_stats_json.h"
+
+#include <cstdint>
+
+#include "apps/common/number_text.h"
+
+namespace cli {
+
+nlohmann::json targetStatsJson(const compare::TargetStats& s) {
+  using nlohmann::json;
+  const bool depth = s.kind == "depth";
+  // The largest difference in the kind's unit, a whole number, as formatStatsLine prints it
+  // (an RGBA8 target's maxAbs counts whole 8-bit steps).
+  const uint64_t largest = depth ? s.maxDepthLsb : s.isFloatKind() ? s.maxUlps : uint64_t(s.maxAbs);
+  const char* unit = depth ? "depth LSBs" : s.kind == "half" ? "half ULPs" : s.kind == "float" ? "float ULPs" : "8-bit steps";
+  json j = {{"name", s.name},
+            {"kind", s.kind},
+            {"size", {s.width, s.height}},
+            {"max_in_unit", largest},
+            {"unit", unit},
+            {"max_abs", s.maxAbs},
+            {"rmse", s.rmse},
+            {"psnr_db", dbOrNull(s.psnr)},
+            {"share_differing", s.shareDiffering},
+            {"share_over1", s.shareOver1},
+            {"share_over4", s.shareOver4}};
+  if (depth) {
+    j["depth_texels_differing"] = s.depthTexelsDiffering;
+    j["max_depth_lsb"] = s.maxDepthLsb;
+  }
+  if (s.isFloatKind()) {
+    j["share_bit_identical"] = s.shareBitIdentical;
+    j[s.kind == "half" ? "max_half_ulps" : "max_float_ulps"] = s.maxUlps;
+    j["nonfinite_pixels"] = s.nonFinitePixels;
+  }
+  if (s.flipMeasured) j["flip_mean"] = s.flipMean ? json(*s.flipMean) : json(nullptr);
+  return j;
+}
+
+}  // namespace cli

@@ -7,18 +7,21 @@
 
 namespace cli {
 
+const char* differenceUnit(const std::string& kind) {
+  return kind == "depth" ? "depth LSBs" : kind == "half" ? "half ULPs" : kind == "float" ? "float ULPs" : "8-bit steps";
+}
+
 nlohmann::json targetStatsJson(const compare::TargetStats& s) {
   using nlohmann::json;
   const bool depth = s.kind == "depth";
   // The largest difference in the kind's unit, a whole number, as formatStatsLine prints it
   // (an RGBA8 target's maxAbs counts whole 8-bit steps).
   const uint64_t largest = depth ? s.maxDepthLsb : s.isFloatKind() ? s.maxUlps : uint64_t(s.maxAbs);
-  const char* unit = depth ? "depth LSBs" : s.kind == "half" ? "half ULPs" : s.kind == "float" ? "float ULPs" : "8-bit steps";
   json j = {{"name", s.name},
             {"kind", s.kind},
             {"size", {s.width, s.height}},
             {"max_in_unit", largest},
-            {"unit", unit},
+            {"unit", differenceUnit(s.kind)},
             {"max_abs", s.maxAbs},
             {"rmse", s.rmse},
             {"psnr_db", dbOrNull(s.psnr)},

@@ -2,6 +2,8 @@
 // the one schema of `raster compare`'s compare.json and `raster report`'s report.json.
 #pragma once
 
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "compare/metrics.h"
@@ -18,5 +20,9 @@ namespace cli {
 // max_float_ulps), and flip_mean when FLIP was measured (compare::measureFlip; null for a
 // target that is not rgba8).
 nlohmann::json targetStatsJson(const compare::TargetStats& stats);
+
+// The unit a target of `kind` counts its differences in (the JSON's `unit`): "8-bit steps",
+// "depth LSBs", "half ULPs" or "float ULPs".
+const char* differenceUnit(const std::string& kind);
 
 }  // namespace cli

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/common/number_text.h"
+#include "apps/common/pixels_to_trace.h"
 #include "apps/common/sides.h"
 #include "apps/common/target_stats_json.h"
 #include "io/image_io.h"
@@ -35,6 +36,32 @@ std::vector<std::string> exceeded(const compare::TargetStats& s, const Threshold
     failures.push_back(s.name + ": depth differs by up to " + std::to_string(s.maxDepthLsb) +
                        " LSBs, over --max-depth-lsb " + std::to_string(*limits.maxDepthLsb));
   return failures;
+}
+
+// A word as a POSIX shell reads it back: as it is when it holds only characters no shell
+// treats specially, else in single quotes (a quote inside as '\'').
+std::string shellWord(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                             "0123456789_-+=.,:/@%") == std::string::npos;
+  if (plain) return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The `raster trace` that shows this pipeline's history of pixel (x, y) of the final image in
+// this frame, with the same method set (the trace follows the window's image, so a
+// --float-final compare's pixel is traced there; the thread count changes no byte).
+std::vector<std::string> traceCommand(const CompareArgs& args, const Frame& frame, const ChosenPixel& pixel) {
+  std::vector<std::string> words = {"raster", "trace", frame.scene, "--pixel",
+                                    std::to_string(pixel.x) + "," + std::to_string(pixel.y)};
+  const std::vector<std::string> options = childFrameOptions(frame);
+  for (size_t i = 0; i + 1 < options.size(); i += 2)   // option and value pairs
+    if (options[i] != "--instances" || frame.instances != FrameArgs{}.instances)
+      words.insert(words.end(), {options[i], options[i + 1]});
+  if (args.preset != FrameArgs{}.preset) words.insert(words.end(), {"--preset", args.preset});
+  if (!args.method.empty()) words.insert(words.end(), {"--method", args.method});
+  return words;
 }
 
 }  // namespace
@@ -91,6 +118,22 @@ int runCompare(const CompareArgs& args) {
     std::cout << compare::formatStatsLine(stats) << std::endl;
     record["targets"].push_back(targetStatsJson(stats));
     for (const std::string& failure : exceeded(stats, limits)) failures.push_back(failure);
+  }
+  // Where the final image differs, the pixel to trace first: the worst, and the command that
+  // shows why this pipeline made it what it is.
+  record["worst_pixel"] = nullptr;
+  const Target& finalOurs = test.targets.back();
+  const std::vector<ChosenPixel> worst = choosePixels(finalOurs.image, reference.targets.back().image, 1);
+  if (args.test == "raster" && !worst.empty() && worst[0].difference > 0) {
+    const ChosenPixel& pixel = worst[0];
+    const std::vector<std::string> trace = traceCommand(args, frame, pixel);
+    const char* unit = differenceUnit(compare::imageKind(finalOurs.image));
+    std::string command;
+    for (const std::string& word : trace) command += (command.empty() ? "" : " ") + shellWord(word);
+    std::cout << finalOurs.name << " differs most at (" << pixel.x << "," << pixel.y << "), by " << pixel.difference << " "
+              << unit << "; its history: " << command << std::endl;
+    record["worst_pixel"] = {{"target", finalOurs.name}, {"x", pixel.x},   {"y", pixel.y},
+                             {"difference", pixel.difference}, {"unit", unit}, {"trace", trace}};
   }
   // The numbers of the lines above, for scripts: written last, whole (io/output_file.h).
   record["failures"] = failures;

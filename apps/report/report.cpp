@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/common/pixels_to_trace.h"
 #include "apps/common/progress.h"
 #include "apps/common/sides.h"
 #include "apps/common/target_stats_json.h"
@@ -17,7 +18,6 @@
 #include "apps/report/report_children.h"
 #include "apps/report/report_folder.h"
 #include "apps/report/report_html.h"
-#include "apps/report/report_pixels.h"
 #include "apps/report/report_results.h"
 #include "apps/report/report_targets.h"
 #include "apps/views/stage_views.h"
@@ -102,8 +102,8 @@ report::Section sceneSection(const report::SceneWork& scene, json& record) {
   }
 
   html += report::viewsHtml(scene, record["views"]);
-  const std::vector<report::ChosenPixel> pixels =
-      report::choosePixels(ours.targets.back().image, gl.targets.back().image, scene.args.pixels);
+  const std::vector<cli::ChosenPixel> pixels =
+      cli::choosePixels(ours.targets.back().image, gl.targets.back().image, scene.args.pixels);
   html += report::tracesHtml(scene, pixels, gl.backend, record["traces"]);
   return {"scene-" + scene.folder, "Scene " + frame.scene, html};
 }

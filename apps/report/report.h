@@ -9,7 +9,7 @@
 //   - per scene, every stage view of `raster render --view NAME` (each with its sidecar
 //     JSON), the views as their registry lists them (apps/views/stage_views.h);
 //   - per scene, the pixel history (`raster trace --json`) of a few pixels: the worst
-//     differing pixels of the final image first (report_pixels.h);
+//     differing pixels of the final image first (apps/common/pixels_to_trace.h);
 //   - the tradeoff and sweep charts and their tables, from every tradeoff.json / sweep.json
 //     under the --include folders (default: the repository's docs/): report_charts.h.
 // Views and traces come from child processes of this program (report_children.h), as

@@ -85,7 +85,7 @@ std::string viewHtml(const SceneWork& scene, const std::string& view, json& reco
 }
 
 // One pixel's history, as a collapsible panel.
-std::string traceHtml(const SceneWork& scene, const ChosenPixel& pixel, json& record) {
+std::string traceHtml(const SceneWork& scene, const cli::ChosenPixel& pixel, json& record) {
   const std::string at = std::to_string(pixel.x) + "," + std::to_string(pixel.y);
   const std::string file = scene.folder + "/trace-" + std::to_string(pixel.x) + "-" + std::to_string(pixel.y) + ".json";
   const ChildRun run = runThisProgram(
@@ -116,13 +116,13 @@ std::string viewsHtml(const SceneWork& scene, json& record) {
   return html;
 }
 
-std::string tracesHtml(const SceneWork& scene, const std::vector<ChosenPixel>& pixels, const std::string& reference,
+std::string tracesHtml(const SceneWork& scene, const std::vector<cli::ChosenPixel>& pixels, const std::string& reference,
                        json& record) {
   std::string html = "<h3>Pixel histories</h3>\n";
   if (!pixels.empty())
     html += "<p>The worst differing pixels of the final image first (largest channel difference against " +
             escape(reference) + "), then interior pixels. Open a pixel, then a pass.</p>\n";
-  for (const ChosenPixel& pixel : pixels) {
+  for (const cli::ChosenPixel& pixel : pixels) {
     scene.step(scene.frame.scene + ": trace " + std::to_string(pixel.x) + "," + std::to_string(pixel.y));
     html += traceHtml(scene, pixel, record);
   }

@@ -15,7 +15,7 @@
 
 #include "apps/common/cli_options.h"
 #include "apps/report/report.h"
-#include "apps/report/report_pixels.h"
+#include "apps/common/pixels_to_trace.h"
 
 namespace report {
 
@@ -35,7 +35,7 @@ std::string viewsHtml(const SceneWork& scene, nlohmann::json& record);
 
 // The pixel histories of `pixels`, against `reference` (GL's backend, for the text); `record`
 // gets an entry per pixel.
-std::string tracesHtml(const SceneWork& scene, const std::vector<ChosenPixel>& pixels, const std::string& reference,
+std::string tracesHtml(const SceneWork& scene, const std::vector<cli::ChosenPixel>& pixels, const std::string& reference,
                        nlohmann::json& record);
 
 }  // namespace report

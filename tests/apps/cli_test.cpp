@@ -234,7 +234,7 @@ TEST_SUITE("cli") {
   // Scripts read compare.json, not the lines (bench/random_frames.py among them): it must say
   // what the lines and the exit status say, target by target. `draft` leaves the shadow
   // scene's final image off llvmpipe's, so a threshold fails and the run exits 1.
-  TEST_CASE("compare writes compare.json: each printed target's numbers and the thresholds exceeded") {
+  TEST_CASE("compare writes compare.json: each printed target's numbers, the thresholds exceeded, the pixel to trace") {
     TempFolder temp;
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
@@ -247,11 +247,13 @@ TEST_SUITE("cli") {
     CHECK(json.at("methods") == "draft");
     CHECK(json.at("test") == "raster");
     CHECK(json.at("reference") == "llvmpipe");
-    // One entry a printed line, in order, with the line's name, kind and "max".
+    // One entry a target's line, in order, with the line's name, kind and "max".
     std::vector<std::string> lines;
-    for (size_t start = 0, end; (end = run.out.find('\n', start)) != std::string::npos; start = end + 1)
-      if (run.out.compare(start, 5, "test:") != 0 && run.out.compare(start, 7, "images:") != 0)
-        lines.push_back(run.out.substr(start, end - start));
+    for (size_t start = 0, end; (end = run.out.find('\n', start)) != std::string::npos; start = end + 1) {
+      const std::string line = run.out.substr(start, end - start);
+      if (line.rfind("test:", 0) != 0 && line.rfind("images:", 0) != 0 && line.find(" differs most at (") == std::string::npos)
+        lines.push_back(line);
+    }
     const nlohmann::json& targets = json.at("targets");
     REQUIRE(targets.size() == lines.size());
     REQUIRE(targets.size() == 3);   // the map, the window's depth, the final image
@@ -272,6 +274,28 @@ TEST_SUITE("cli") {
     for (const nlohmann::json& failure : json.at("failures")) failures += "raster: " + failure.get<std::string>() + "\n";
     CHECK(!json.at("failures").empty());
     CHECK(failures == run.err);
+
+    // The final image's worst pixel, and a `raster trace` of it that runs: its history.
+    const nlohmann::json& worst = json.at("worst_pixel");
+    REQUIRE(worst.is_object());
+    CHECK(worst.at("target") == "final");
+    CHECK(worst.at("difference").get<uint64_t>() == targets.back().at("max_in_unit").get<uint64_t>());
+    const std::string at = std::to_string(worst.at("x").get<int>()) + "," + std::to_string(worst.at("y").get<int>());
+    CHECK(run.out.find("final differs most at (" + at + ")") != std::string::npos);
+    std::string trace;
+    for (const nlohmann::json& word : worst.at("trace")) trace += (trace.empty() ? "" : " ") + word.get<std::string>();
+    CHECK(run.out.find("its history: " + trace + "\n") != std::string::npos);
+    REQUIRE(trace.rfind("raster trace shadow --pixel " + at + " ", 0) == 0);
+    const RunResult traced = runCli(cwd, trace.substr(std::string("raster ").size()) + " --no-reference --quiet");
+    CHECK(traced.status == 0);
+    CHECK(traced.out.find("pixel (" + std::to_string(worst.at("x").get<int>()) + ", ") != std::string::npos);
+    CHECK(traced.out.find("math=fast-fragment") != std::string::npos);   // draft's methods, as compared
+
+    // A frame that matches names no pixel.
+    const RunResult same = runCli(cwd, "compare shadow --size 32x24 --quiet --out same");
+    REQUIRE(same.status == 0);
+    CHECK(nlohmann::json::parse(readText(cwd / "same" / "compare.json")).at("worst_pixel").is_null());
+    CHECK(same.out.find("differs most") == std::string::npos);
   }
 
   TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/common/pixels_to_trace.h"
 #include "apps/common/target_stats_json.h"
 #include "apps/report/report_html.h"
-#include "apps/report/report_pixels.h"
 #include "apps/report/report_results.h"
 #include "apps/report/report_targets.h"
 #include "apps/report/report_trace_panel.h"
@@ -140,23 +140,23 @@ TEST_CASE("the traced pixels: the worst differing first, ties by position, then 
   set(6, 3, 0, 105);   // off by 5
   set(1, 2, 2, 110);   // off by 10
   set(5, 0, 1, 105);   // off by 5, before (6, 3) by position
-  const std::vector<report::ChosenPixel> three = report::choosePixels(ours, gl, 3);
+  const std::vector<cli::ChosenPixel> three = cli::choosePixels(ours, gl, 3);
   REQUIRE(three.size() == 3);
   CHECK((three[0].x == 1 && three[0].y == 2 && three[0].difference == 10));
   CHECK((three[1].x == 5 && three[1].y == 0 && three[1].difference == 5));
   CHECK((three[2].x == 6 && three[2].y == 3));
 
-  const std::vector<report::ChosenPixel> five = report::choosePixels(ours, gl, 5);
+  const std::vector<cli::ChosenPixel> five = cli::choosePixels(ours, gl, 5);
   REQUIRE(five.size() == 5);
   CHECK((five[3].x == 4 && five[3].y == 2 && five[3].difference == 0));   // the centre
   CHECK((five[4].x == 2 && five[4].y == 1));                              // a quarter point
 
-  const std::vector<report::ChosenPixel> none = report::choosePixels(gl, gl, 2);
+  const std::vector<cli::ChosenPixel> none = cli::choosePixels(gl, gl, 2);
   REQUIRE(none.size() == 2);
   CHECK((none[0].x == 4 && none[0].y == 2));
-  CHECK(report::choosePixels(gl, gl, 0).empty());
+  CHECK(cli::choosePixels(gl, gl, 0).empty());
   // A one-pixel image has one pixel to give.
-  CHECK(report::choosePixels(rgba8(1, 1), rgba8(1, 1), 5).size() == 1);
+  CHECK(cli::choosePixels(rgba8(1, 1), rgba8(1, 1), 5).size() == 1);
 }
 
 TEST_CASE("an RGBA8 preview is opaque, and its alpha, which is data, is a grey image of its own") {

@@ -1,12 +1,12 @@
-// The pixels the report traces (report_pixels.h).
-#include "apps/report/report_pixels.h"
+// The pixels to trace (pixels_to_trace.h).
+#include "apps/common/pixels_to_trace.h"
 
 #include <algorithm>
 #include <utility>
 
 #include "compare/metrics.h"
 
-namespace report {
+namespace cli {
 
 std::vector<ChosenPixel> choosePixels(const scenes::ImageData& ours, const scenes::ImageData& gl, int count) {
   compare::checkComparable("final", ours, gl);
@@ -37,4 +37,4 @@ std::vector<ChosenPixel> choosePixels(const scenes::ImageData& ours, const scene
   return chosen;
 }
 
-}  // namespace report
+}  // namespace cli

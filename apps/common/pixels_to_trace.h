@@ -1,5 +1,6 @@
-// Which pixels the report traces (`raster report --pixels N`): the worst differing pixels of
-// the final image first (largest difference over the channels against GL, in the kind's unit,
+// Which pixels to trace (`raster trace`): `raster report --pixels N` traces these, and `raster
+// compare` names the first as the one to trace. The worst differing pixels of the final image
+// first (largest difference over the channels against GL, in the kind's unit,
 // compare::pixelDifference; ties by position, row by row from the top), then, when fewer than
 // N differ, interior points of a fixed pattern (the centre, then the quarter points).
 #pragma once
@@ -9,7 +10,7 @@
 
 #include "backends/backend.h"
 
-namespace report {
+namespace cli {
 
 struct ChosenPixel {
   int x = 0, y = 0;            // image coordinates, row 0 at the top
@@ -19,4 +20,4 @@ struct ChosenPixel {
 // At most `count` distinct pixels; ours and gl must be comparable (compare::checkComparable).
 std::vector<ChosenPixel> choosePixels(const scenes::ImageData& ours, const scenes::ImageData& gl, int count);
 
-}  // namespace report
+}  // namespace cli

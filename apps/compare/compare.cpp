@@ -119,12 +119,13 @@ int runCompare(const CompareArgs& args) {
     record["targets"].push_back(targetStatsJson(stats));
     for (const std::string& failure : exceeded(stats, limits)) failures.push_back(failure);
   }
-  // Where the final image differs, the pixel to trace first: the worst, and the command that
-  // shows why this pipeline made it what it is.
+  // Where this pipeline's final image differs, the pixel to trace first: the worst, and the
+  // command that shows why this pipeline made it what it is.
   record["worst_pixel"] = nullptr;
   const Target& finalOurs = test.targets.back();
-  const std::vector<ChosenPixel> worst = choosePixels(finalOurs.image, reference.targets.back().image, 1);
-  if (args.test == "raster" && !worst.empty() && worst[0].difference > 0) {
+  const std::vector<ChosenPixel> worst =
+      args.test == "raster" ? choosePixels(finalOurs.image, reference.targets.back().image, 1) : std::vector<ChosenPixel>{};
+  if (!worst.empty() && worst[0].difference > 0) {
     const ChosenPixel& pixel = worst[0];
     const std::vector<std::string> trace = traceCommand(args, frame, pixel);
     const char* unit = differenceUnit(compare::imageKind(finalOurs.image));

@@ -1,8 +1,6 @@
 // A target's metrics as JSON (target_stats_json.h).
 #include "apps/common/target_stats_json.h"
 
-#include <cstdint>
-
 #include "apps/common/number_text.h"
 
 namespace cli {
@@ -11,16 +9,18 @@ const char* differenceUnit(const std::string& kind) {
   return kind == "depth" ? "depth LSBs" : kind == "half" ? "half ULPs" : kind == "float" ? "float ULPs" : "8-bit steps";
 }
 
+uint64_t largestDifference(const compare::TargetStats& s) {
+  // An RGBA8 target's maxAbs counts whole 8-bit steps.
+  return s.kind == "depth" ? s.maxDepthLsb : s.isFloatKind() ? s.maxUlps : uint64_t(s.maxAbs);
+}
+
 nlohmann::json targetStatsJson(const compare::TargetStats& s) {
   using nlohmann::json;
   const bool depth = s.kind == "depth";
-  // The largest difference in the kind's unit, a whole number, as formatStatsLine prints it
-  // (an RGBA8 target's maxAbs counts whole 8-bit steps).
-  const uint64_t largest = depth ? s.maxDepthLsb : s.isFloatKind() ? s.maxUlps : uint64_t(s.maxAbs);
   json j = {{"name", s.name},
             {"kind", s.kind},
             {"size", {s.width, s.height}},
-            {"max_in_unit", largest},
+            {"max_in_unit", largestDifference(s)},
             {"unit", differenceUnit(s.kind)},
             {"max_abs", s.maxAbs},
             {"rmse", s.rmse},

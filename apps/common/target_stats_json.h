@@ -2,6 +2,7 @@
 // the one schema of `raster compare`'s compare.json and `raster report`'s report.json.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,10 @@ namespace cli {
 // max_float_ulps), and flip_mean when FLIP was measured (compare::measureFlip; null for a
 // target that is not rgba8).
 nlohmann::json targetStatsJson(const compare::TargetStats& stats);
+
+// The largest difference of a target in its kind's unit, a whole number (max_in_unit; the
+// `max` of compare's line): 0 exactly when no pixel differs.
+uint64_t largestDifference(const compare::TargetStats& stats);
 
 // The unit a target of `kind` counts its differences in (the JSON's `unit`): "8-bit steps",
 // "depth LSBs", "half ULPs" or "float ULPs".

@@ -19,12 +19,14 @@ struct CompareArgs : FrameArgs {
   std::string reference = "llvmpipe";
   std::string test = "raster";
   std::string maxRmse, minPsnr, maxShareOver1, maxDepthLsb;   // empty: no threshold
+  bool exact = false;          // every target must match, whatever its kind
 };
 
 // Limits the compare thresholds set; absent ones are not checked.
 struct Thresholds {
   std::optional<double> maxRmse, minPsnr, maxShareOver1;
   std::optional<uint64_t> maxDepthLsb;
+  bool exact = false;
 };
 
 // compare_options.cpp, apart so that the command-line fuzz target (fuzz/cli_fuzz.cpp) links

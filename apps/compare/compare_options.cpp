@@ -22,10 +22,13 @@ void addCompareOptions(CLI::App& command, CompareArgs& args) {
   command.add_option("--max-depth-lsb", args.maxDepthLsb,
                      "Fail if a depth target differs anywhere by more than N LSBs")
       ->type_name("N");
+  command.add_flag("--exact", args.exact,
+                   "Fail if any target differs at all: 8-bit steps, depth LSBs, half or float ULPs (+0 and -0 as one)");
 }
 
 Thresholds validateThresholds(const CompareArgs& args) {
   Thresholds limits;
+  limits.exact = args.exact;
   if (!args.maxRmse.empty()) {
     limits.maxRmse = parseFiniteNumber("--max-rmse", args.maxRmse);
     if (*limits.maxRmse < 0) throw UsageError("--max-rmse: must be 0 or more");

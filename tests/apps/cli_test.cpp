@@ -239,7 +239,7 @@ TEST_SUITE("cli") {
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
     const RunResult run =
-        runCli(cwd, "compare shadow --size 64x48 --preset draft --max-rmse 0 --max-depth-lsb 0 --quiet --out cmp");
+        runCli(cwd, "compare shadow --size 64x48 --preset draft --max-rmse 0 --max-depth-lsb 0 --exact --quiet --out cmp");
     REQUIRE(run.status == 1);
     const nlohmann::json json = nlohmann::json::parse(readText(cwd / "cmp" / "compare.json"));
     CHECK(json.at("scene") == "shadow");
@@ -272,8 +272,12 @@ TEST_SUITE("cli") {
     // The failures are the lines on stderr, without the program's prefix.
     std::string failures;
     for (const nlohmann::json& failure : json.at("failures")) failures += "raster: " + failure.get<std::string>() + "\n";
-    CHECK(!json.at("failures").empty());
     CHECK(failures == run.err);
+    // --max-rmse and --exact fail on the final image; the two depth targets match.
+    CHECK(json.at("failures").size() == 2);
+    CHECK(run.err.find("raster: final: rmse ") != std::string::npos);
+    CHECK(run.err.find("raster: final: ") != std::string::npos);
+    CHECK(run.err.find("8-bit steps), under --exact\n") != std::string::npos);
 
     // The final image's worst pixel, and a `raster trace` of it that runs: its history.
     const nlohmann::json& worst = json.at("worst_pixel");
@@ -291,8 +295,8 @@ TEST_SUITE("cli") {
     CHECK(traced.out.find("pixel (" + std::to_string(worst.at("x").get<int>()) + ", ") != std::string::npos);
     CHECK(traced.out.find("math=fast-fragment") != std::string::npos);   // draft's methods, as compared
 
-    // A frame that matches names no pixel.
-    const RunResult same = runCli(cwd, "compare shadow --size 32x24 --quiet --out same");
+    // A frame that matches names no pixel, and passes --exact.
+    const RunResult same = runCli(cwd, "compare shadow --size 32x24 --exact --quiet --out same");
     REQUIRE(same.status == 0);
     CHECK(nlohmann::json::parse(readText(cwd / "same" / "compare.json")).at("worst_pixel").is_null());
     CHECK(same.out.find("differs most") == std::string::npos);

@@ -16,8 +16,9 @@ is not bit-identical": a thread that drew no half-float tile still flushes denor
 the default is 1,2; a frame that differs only at more threads than cores is llvmpipe's.
 
 Writes --json FILE (every frame: its arguments, status and each target's largest difference,
-read from the compare.json `raster compare` writes) when asked, and prints a summary. Exit status: 0 when every frame matched or was refused, 1
-when one differed, failed or ran past --timeout, 2 for bad arguments.
+read from the compare.json `raster compare` writes) when asked, and prints a summary. Exit
+status: 0 when every frame matched or was refused, 1 when one differed, failed or ran past
+--timeout, 2 for bad arguments.
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]

@@ -79,6 +79,16 @@ int runCompare(const CompareArgs& args) {
   const Thresholds limits = validateThresholds(args);
   const std::string outFolder = args.out.empty() ? "compare-" + frame.scene : args.out;
   checkOutputFolder("--out", outFolder);
+  // compare.json's path too, where the folder is there already: a folder or link of that
+  // name would otherwise be found only after both renders.
+  const std::string numbers = (fs::path(outFolder) / "compare.json").string();
+  if (fs::is_directory(outFolder)) {
+    try {
+      compare::checkOutputPath(numbers);
+    } catch (const compare::OutputPathError& e) {
+      throw UsageError(std::string("--out: ") + e.what());
+    }
+  }
   scenes::checkGalliumEnvironment();
 
   // Render both sides; they must expose the same targets in the same order.
@@ -141,7 +151,6 @@ int runCompare(const CompareArgs& args) {
   }
   // The numbers of the lines above, for scripts: written last, whole (io/output_file.h).
   record["failures"] = failures;
-  const std::string numbers = (fs::path(outFolder) / "compare.json").string();
   compare::writeOutputFile(numbers, record.dump(1) + "\n");
   std::cout << "images: " << outFolder << "/NAME_{ours,gl,diff}.png  numbers: " << numbers << std::endl;
   for (const std::string& failure : failures) std::cerr << "raster: " << failure << std::endl;

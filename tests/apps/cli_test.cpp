@@ -295,6 +295,13 @@ TEST_SUITE("cli") {
     CHECK(traced.out.find("pixel (" + std::to_string(worst.at("x").get<int>()) + ", ") != std::string::npos);
     CHECK(traced.out.find("math=fast-fragment") != std::string::npos);   // draft's methods, as compared
 
+    // A compare.json that could not be written is refused before the renders, not after them.
+    fs::create_directories(cwd / "taken" / "compare.json");
+    const RunResult taken = runCli(cwd, "compare shadow --size 32x24 --quiet --out taken");
+    CHECK(taken.status == 2);
+    CHECK(taken.err == "raster: --out: cannot write taken/compare.json: it is a folder, not a regular file\n");
+    CHECK(!fs::exists(cwd / "taken" / "final_ours.png"));
+
     // A frame that matches names no pixel, and passes --exact.
     const RunResult same = runCli(cwd, "compare shadow --size 32x24 --exact --quiet --out same");
     REQUIRE(same.status == 0);

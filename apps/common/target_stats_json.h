@@ -11,14 +11,14 @@
 
 namespace cli {
 
-// name, kind, size [w, h]; max_in_unit and unit, the largest difference in the kind's own
-// unit (the `max` column of compare's line: "8-bit steps", "depth LSBs", "half ULPs" or
-// "float ULPs"; 0 exactly when every pixel is the reference's, where a float target's +0 and
-// -0 are one value and so are its NaNs); max_abs (the largest difference as a value: 8-bit
-// steps, depth LSBs, or the float difference), rmse, psnr_db (null when identical), share_differing, share_over1,
-// share_over4, and the kind's own fields (depth: depth_texels_differing, max_depth_lsb;
-// half: share_bit_identical, max_half_ulps, nonfinite_pixels; float: the same with
-// max_float_ulps), and flip_mean when FLIP was measured (compare::measureFlip; null for a
+// name, kind, size [w, h]; max_in_unit and unit, the largest difference in the kind's own unit
+// (the `max` column of compare's line: "8-bit steps", "depth LSBs", "half ULPs" or "float
+// ULPs"; 0 exactly when every pixel is the reference's, where a float target's +0 and -0 are
+// one value and so are its NaNs); max_abs (the largest difference as a value: 8-bit steps,
+// depth LSBs, or the float difference), rmse, psnr_db (null when identical), share_differing,
+// share_over1, share_over4, and the kind's own fields (depth: depth_texels_differing,
+// max_depth_lsb; half: share_bit_identical, max_half_ulps, nonfinite_pixels; float: the same
+// with max_float_ulps), and flip_mean when FLIP was measured (compare::measureFlip; null for a
 // target that is not rgba8).
 nlohmann::json targetStatsJson(const compare::TargetStats& stats);
 

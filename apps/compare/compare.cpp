@@ -36,7 +36,7 @@ std::vector<std::string> exceeded(const compare::TargetStats& s, const Threshold
     failures.push_back(s.name + ": depth differs by up to " + std::to_string(s.maxDepthLsb) +
                        " LSBs, over --max-depth-lsb " + std::to_string(*limits.maxDepthLsb));
   if (limits.exact && s.shareDiffering > 0)
-    failures.push_back(s.name + ": " + fixedDigits(100.0 * s.shareDiffering, 3) + "%" + " of its pixels differ (by up to " +
+    failures.push_back(s.name + ": " + fixedDigits(100.0 * s.shareDiffering, 3) + "% of its pixels differ (by up to " +
                        std::to_string(largestDifference(s)) + " " + differenceUnit(s.kind) + "), under --exact");
   return failures;
 }

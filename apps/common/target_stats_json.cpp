@@ -9,6 +9,8 @@ const char* differenceUnit(const std::string& kind) {
   return kind == "depth" ? "depth LSBs" : kind == "half" ? "half ULPs" : kind == "float" ? "float ULPs" : "8-bit steps";
 }
 
+const char* ulpsKey(const std::string& floatKind) { return floatKind == "half" ? "max_half_ulps" : "max_float_ulps"; }
+
 uint64_t largestDifference(const compare::TargetStats& s) {
   // An RGBA8 target's maxAbs counts whole 8-bit steps.
   return s.kind == "depth" ? s.maxDepthLsb : s.isFloatKind() ? s.maxUlps : uint64_t(s.maxAbs);
@@ -34,7 +36,7 @@ nlohmann::json targetStatsJson(const compare::TargetStats& s) {
   }
   if (s.isFloatKind()) {
     j["share_bit_identical"] = s.shareBitIdentical;
-    j[s.kind == "half" ? "max_half_ulps" : "max_float_ulps"] = s.maxUlps;
+    j[ulpsKey(s.kind)] = s.maxUlps;
     j["nonfinite_pixels"] = s.nonFinitePixels;
   }
   if (s.flipMeasured) j["flip_mean"] = s.flipMean ? json(*s.flipMean) : json(nullptr);

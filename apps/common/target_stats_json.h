@@ -26,6 +26,10 @@ nlohmann::json targetStatsJson(const compare::TargetStats& stats);
 // `max` of compare's line): 0 exactly when no pixel differs.
 uint64_t largestDifference(const compare::TargetStats& stats);
 
+// The key of a float target's largest ULP distance: "max_half_ulps" or "max_float_ulps" (the
+// unit is named in the key).
+const char* ulpsKey(const std::string& floatKind);
+
 // The unit a target of `kind` counts its differences in (the JSON's `unit`): "8-bit steps",
 // "depth LSBs", "half ULPs" or "float ULPs".
 const char* differenceUnit(const std::string& kind);

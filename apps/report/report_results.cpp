@@ -6,6 +6,7 @@
 
 #include "apps/report/report_html.h"
 #include "apps/common/number_text.h"
+#include "apps/common/target_stats_json.h"
 
 namespace report {
 namespace {
@@ -16,9 +17,6 @@ std::string percent(double share) { return cli::fixedDigits(100.0 * share, 3) + 
 
 // A number cell: `shown` from `value`, the value itself in data-value.
 std::string cell(const json& value, const std::string& shown) { return numberCell(shown, value); }
-
-// The JSON key of a float kind's largest ULP distance: the unit is named in the key.
-std::string ulpsKey(const std::string& kind) { return kind == "half" ? "max_half_ulps" : "max_float_ulps"; }
 
 }  // namespace
 
@@ -43,7 +41,7 @@ std::string metricsTable(const json& s, const std::string& id) {
     t.rows.push_back({escape("texels differing"), cell(s.at("depth_texels_differing"), jsonText(s.at("depth_texels_differing")))});
   }
   if (compare::TargetStats::isFloatKindName(kind)) {
-    const std::string ulps = ulpsKey(kind);
+    const std::string ulps = cli::ulpsKey(kind);
     t.rows.push_back({escape("pixels bit-identical"), cell(s.at("share_bit_identical"), percent(s.at("share_bit_identical")))});
     t.rows.push_back({escape("largest difference (" + kind + " ULPs)"), cell(s.at(ulps), jsonText(s.at(ulps)))});
     t.rows.push_back({escape("non-finite pixels"), cell(s.at("nonfinite_pixels"), jsonText(s.at("nonfinite_pixels")))});

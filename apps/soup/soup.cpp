@@ -3,12 +3,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "apps/common/cli_options.h"
 #include "apps/soup/soup_file.h"
@@ -27,6 +30,8 @@ constexpr int kMaxTriangleOption = 1000000;   // a million triangles a soup: far
 // Backends cannot free meshes (backends/backend.h), so a fresh pair every this many seeds keeps
 // a long run's memory flat.
 constexpr int kSeedsPerBackend = 64;
+// The failing seeds --json describes in full (all of them are listed by number).
+constexpr size_t kFailuresInFull = 100;
 // A run's seeds: a million soups take hours (milliseconds each at 64x64), so a longer range
 // is a typo (1:99999999999999 would never end), and a real search is split into runs.
 constexpr uint64_t kMaxSeedsPerRun = 1000000;
@@ -44,6 +49,7 @@ Plan validate(const SoupArgs& args) {
     throw UsageError("soup: give --seeds A:B or --replay FILE (exactly one)");
   if (args.threads < 0 || args.threads > kMaxThreads)
     throw UsageError("--threads: " + std::to_string(args.threads) + " is out of range (0.." + std::to_string(kMaxThreads) + ")");
+  if (!args.json.empty()) checkOutputFile("--json", args.json);
   if (!args.replay.empty()) {
     plan.replay = true;
     plan.replayed = readSoupFile(args.replay);
@@ -122,6 +128,10 @@ void addSoupOptions(CLI::App& command, SoupArgs& args) {
       ->type_name("N")->capture_default_str();
   command.add_option("--out", args.out, "Folder for the reproducers of failing seeds, soup-SEED.json")
       ->type_name("DIR")->capture_default_str();
+  command.add_option("--json", args.json,
+                     "Also write the results as JSON to FILE: the run, its counts, every failing seed, the first " +
+                         std::to_string(kFailuresInFull) + " failures in full")
+      ->type_name("FILE");
   command.add_option("--threads", args.threads, "Threads of this pipeline, 0..1024; 0: every core")
       ->type_name("N")->capture_default_str();
   command.add_flag("--scalar", args.scalar, "This pipeline with every SIMD fast path off (same bytes, slower)");
@@ -142,7 +152,8 @@ int runSoup(const SoupArgs& args) {
   std::unique_ptr<Pair> pair;
   std::string reference;
   uint64_t done = 0, failed = 0, nonFinite = 0, referenceLeaks = 0;
-  std::vector<uint64_t> failedSeeds;
+  std::vector<uint64_t> failedSeeds;                     // every one (the error line names the first 20)
+  nlohmann::json failures = nlohmann::json::array();   // the first kFailuresInFull, for --json
   for (uint64_t seed = plan.first;; ++seed) {
     if (!pair || done % kSeedsPerBackend == 0) {
       pair.reset();   // the old pair's GL context is gone before the next is made
@@ -160,13 +171,24 @@ int runSoup(const SoupArgs& args) {
     std::ostringstream lines;
     if (!report(soup, verdict, reference, lines)) {
       ++failed;
-      if (failedSeeds.size() < 20) failedSeeds.push_back(seed);
+      failedSeeds.push_back(seed);
+      nlohmann::json reproducer = nullptr;
       if (!plan.replay) {
         fs::create_directory(args.out);
         const std::string path = (fs::path(args.out) / ("soup-" + std::to_string(seed) + ".json")).string();
         compare::writeOutputFile(path, soupToJson(soup, verdict.firstDiffs));
         lines << "  reproducer: " << path << " (raster soup --replay " << path << ")\n";
+        reproducer = path;
       }
+      if (failures.size() < kFailuresInFull)
+        failures.push_back({{"seed", seed},
+                            {"identical", verdict.identical()},
+                            {"watertight", verdict.oursWatertight()},
+                            {"color_diffs", verdict.colorDiffs},
+                            {"depth_diffs", verdict.depthDiffs},
+                            {"count_diffs", verdict.countDiffs},
+                            {"first_diffs", verdict.firstDiffs},
+                            {"reproducer", reproducer}});
     }
     std::cout << lines.str() << std::flush;
     ++done;
@@ -194,11 +216,28 @@ int runSoup(const SoupArgs& args) {
   char time[32];
   std::snprintf(time, sizeof time, "%.1f", seconds);
   std::cout << "; " << time << " s" << std::endl;
+  if (!args.json.empty()) {   // no time in it: the same seeds give the same bytes
+    const nlohmann::json record = {
+        {"size", {plan.width, plan.height}},
+        {"triangles", plan.replay ? nlohmann::json(nullptr) : nlohmann::json(plan.triangles)},
+        {"seeds", {plan.first, plan.last}},
+        {"replay", plan.replay ? nlohmann::json(args.replay) : nlohmann::json(nullptr)},
+        {"reference", reference},
+        {"soups", done},
+        {"passed", done - failed},
+        {"failed", failed},
+        {"non_finite_triangles", nonFinite},
+        {"reference_not_watertight", referenceLeaks},
+        {"failed_seeds", failedSeeds},
+        {"failures", failures}};
+    compare::writeOutputFile(args.json, record.dump(1) + "\n");
+  }
   if (failed > 0) {
     std::string list;
-    for (uint64_t s : failedSeeds) list += (list.empty() ? "" : ", ") + std::to_string(s);
-    std::cerr << "raster: soup: " << failed << " of " << done << " failed (seeds " << list
-              << (failed > failedSeeds.size() ? ", ..." : "") << ")" << std::endl;
+    for (size_t k = 0; k < std::min<size_t>(failedSeeds.size(), 20); ++k)
+      list += (list.empty() ? "" : ", ") + std::to_string(failedSeeds[k]);
+    std::cerr << "raster: soup: " << failed << " of " << done << " failed (seeds " << list << (failed > 20 ? ", ..." : "")
+              << ")" << std::endl;
   }
   return failed == 0 ? 0 : 1;
 }

@@ -88,7 +88,7 @@ TEST_SUITE("soup") {
     TempFolder temp;
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
-    const RunResult result = runCli(cwd, "soup --seeds 0:299 --size 64x64");
+    const RunResult result = runCli(cwd, "soup --seeds 0:299 --size 64x64 --json ../soup.json");
     INFO("stdout tail: " << result.out.substr(result.out.size() > 2000 ? result.out.size() - 2000 : 0) << "\nstderr: "
                          << result.err);
     CHECK(result.status == 0);
@@ -97,6 +97,15 @@ TEST_SUITE("soup") {
           std::string::npos);
     CHECK(result.out.find("non-finite triangles drawn apart, not compared") != std::string::npos);
     CHECK(fs::is_empty(cwd));
+    // The same for scripts.
+    const json summary = json::parse(readText(temp.path / "soup.json"));
+    CHECK(summary["seeds"] == json::array({0, 299}));
+    CHECK(summary["size"] == json::array({64, 64}));
+    CHECK(summary["soups"] == 300);
+    CHECK(summary["passed"] == 300);
+    CHECK(summary["failed"] == 0);
+    CHECK(summary["failed_seeds"].empty());
+    CHECK(summary["non_finite_triangles"].get<int>() > 0);
   }
 
   TEST_CASE("the same seed makes the same soup, with every kind of triangle over a few seeds") {
@@ -120,7 +129,7 @@ TEST_SUITE("soup") {
     TempFolder temp;
     const fs::path cwd = temp.path / "cwd";
     fs::create_directory(cwd);
-    const RunResult failing = runCli(cwd, "soup --seeds 4:5 --size 64x64 --out repro --inject-difference");
+    const RunResult failing = runCli(cwd, "soup --seeds 4:5 --size 64x64 --out repro --json failing.json --inject-difference");
     INFO("stdout: " << failing.out << "\nstderr: " << failing.err);
     CHECK(failing.status == 1);
     CHECK(failing.out.find("seed 4: ") != std::string::npos);
@@ -130,6 +139,16 @@ TEST_SUITE("soup") {
     CHECK(failing.err.find("failed (seeds 4, 5)") != std::string::npos);
     REQUIRE(fs::is_regular_file(cwd / "repro" / "soup-4.json"));
     REQUIRE(fs::is_regular_file(cwd / "repro" / "soup-5.json"));
+    // --json: the same verdicts, each failure with its reproducer.
+    const json results = json::parse(readText(cwd / "failing.json"));
+    CHECK(results["failed"] == 2);
+    CHECK(results["failed_seeds"] == json::array({4, 5}));
+    REQUIRE(results["failures"].size() == 2);
+    CHECK(results["failures"][0]["seed"] == 4);
+    CHECK(results["failures"][0]["identical"] == false);
+    CHECK(results["failures"][0]["color_diffs"].get<int>() > 0);
+    CHECK(results["failures"][1]["reproducer"] == "repro/soup-5.json");
+    CHECK(!results["failures"][0]["first_diffs"].empty());
 
     // The file holds the generator's soup bit for bit.
     const json file = json::parse(readText(cwd / "repro" / "soup-4.json"));
@@ -196,6 +215,7 @@ TEST_SUITE("soup") {
     expectRefused("soup --seeds 0:3 --size 0x0", "--size: 0x0 is out of range", cwd);
     expectRefused("soup --seeds 0:3 --size 64", "--size: '64' is not WxH", cwd);
     expectRefused("soup --seeds 0:3 --triangles -1", "--triangles", cwd);
+    expectRefused("soup --seeds 0:3 --json /nonexistent/soup.json", "--json", cwd);
     expectRefused("soup --seeds 0:3 --triangles 2000000", "--triangles: '2000000' is not a whole number 0..1000000", cwd);
     expectRefused("soup --seeds 0:3 --threads -1", "--threads", cwd);
     expectRefused("soup", "give --seeds A:B or --replay FILE", cwd);

@@ -125,6 +125,13 @@ std::vector<std::string> childFrameOptions(const Frame& frame) {
   return options;
 }
 
+std::vector<std::string> childMethodOptions(const FrameArgs& args) {
+  std::vector<std::string> options;
+  if (args.preset != FrameArgs{}.preset) options.insert(options.end(), {"--preset", args.preset});
+  if (!args.method.empty()) options.insert(options.end(), {"--method", args.method});
+  return options;
+}
+
 raster::MethodSet validateMethods(const std::string& preset, const std::string& overrides) {
   try {
     raster::MethodSet set = raster::presetMethods(preset);

@@ -74,6 +74,10 @@ scenes::SceneOptions sceneOptions(const Frame& frame);
 // came from them or from --set: both at once is refused as ambiguous.
 std::vector<std::string> childFrameOptions(const Frame& frame);
 
+// The options that give a child process the same method set: --preset unless it is the
+// default, and --method when it was given.
+std::vector<std::string> childMethodOptions(const FrameArgs& args);
+
 // Adds the options every frame command shares (the scene, --time, --size, --threads,
 // --preset, --set, ...) to a command.
 void addFrameOptions(CLI::App& command, FrameArgs& args);

@@ -62,8 +62,8 @@ std::vector<std::string> traceCommand(const CompareArgs& args, const Frame& fram
   for (size_t i = 0; i + 1 < options.size(); i += 2)   // option and value pairs
     if (options[i] != "--instances" || frame.instances != FrameArgs{}.instances)
       words.insert(words.end(), {options[i], options[i + 1]});
-  if (args.preset != FrameArgs{}.preset) words.insert(words.end(), {"--preset", args.preset});
-  if (!args.method.empty()) words.insert(words.end(), {"--method", args.method});
+  const std::vector<std::string> methods = childMethodOptions(args);
+  words.insert(words.end(), methods.begin(), methods.end());
   return words;
 }
 

@@ -51,8 +51,8 @@ std::vector<std::string> withFrameOptions(std::vector<std::string> command, cons
   const cli::Frame& frame = scene.frame;
   const std::vector<std::string> frameOptions = cli::childFrameOptions(frame);
   command.insert(command.end(), frameOptions.begin(), frameOptions.end());
-  if (!(frame.methods == raster::MethodSet{})) command.insert(command.end(), {"--preset", scene.args.preset});
-  if (!scene.args.method.empty()) command.insert(command.end(), {"--method", scene.args.method});
+  const std::vector<std::string> methods = cli::childMethodOptions(scene.args);
+  command.insert(command.end(), methods.begin(), methods.end());
   return command;
 }
 

@@ -5,7 +5,9 @@ scene parameters that no test names, every target required bit for bit (`max 0`)
 Each frame draws a scene (every scene of `raster scenes` by default), a time in
 [0, --max-time] (three decimals), a size up to --max-size, a thread count from --threads,
 --float-final with probability --float-final, and with probability --params one of the
-scene's own parameters (`raster params SCENE`) at a random value of its range: uniform where
+scene's own parameters (`raster params SCENE`; with --max-params K, 1 to K distinct ones, so
+that parameters meet: a near plane of 1e-7 far from the origin) at a random value of its
+range: uniform where
 the range spans at most three decades, else its magnitude log-uniform up to the range's end
 (so 1e-3 to 1e20 for a world offset, either sign). A frame raster refuses (exit 2: a value
 another parameter rules out, such as a cascade split past the next) is counted as refused.
@@ -22,7 +24,8 @@ status: 0 when every frame matched or was refused, 1 when one differed, failed o
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]
-                              [--float-final 0.5] [--params 0.5] [--timeout 600]
+                              [--float-final 0.5] [--params 0.5] [--max-params 1]
+                              [--timeout 600]
                               [--raster build/raster] [--json FILE] [--quiet]
 (Found, on 2026-12-06: deferred's denormals and pbr's smoothstep order, both fixed;
 docs/notes/2026-12-06-random-frames-denormals-and-smoothstep.md.)
@@ -60,6 +63,8 @@ def parse_args(argv):
     parser.add_argument("--max-time", type=float, default=30.0, help="latest time drawn, seconds (default 30)")
     parser.add_argument("--float-final", type=float, default=0.5, help="share of frames with --float-final (default 0.5)")
     parser.add_argument("--params", type=float, default=0.5, help="share of frames that set a scene parameter (default 0.5)")
+    parser.add_argument("--max-params", type=int, default=1,
+                        help="most parameters such a frame sets, 1 to this many distinct ones (default 1)")
     parser.add_argument("--timeout", type=float, default=600.0, help="seconds one compare may take (default 600)")
     parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
     parser.add_argument("--json", help="write every frame and the summary here")
@@ -74,6 +79,8 @@ def parse_args(argv):
     for option, share in (("--float-final", args.float_final), ("--params", args.params)):
         if not 0 <= share <= 1:   # NaN fails too
             fail(PROG, f"{option} {share}: not a share (0..1)")
+    if not 1 <= args.max_params <= 100:
+        fail(PROG, f"--max-params {args.max_params}: out of range (1..100)")
     if not (math.isfinite(args.timeout) and args.timeout > 0):
         fail(PROG, f"--timeout {args.timeout}: must be a positive number of seconds")
     args.threads = parse_counts(PROG, "--threads", args.threads, 1, RASTER_MAX_THREADS, "raster's --threads; 0 is not one count")
@@ -117,8 +124,13 @@ def draw_frame(rng, args):
              "threads": rng.choice(args.threads), "float_final": rng.random() < args.float_final, "set": {}}
     params = [p for p in args.rows[scene].get("params", []) if p["name"] not in ("time", "size")]
     if params and rng.random() < args.params:
-        param = rng.choice(params)
-        frame["set"][param["name"]] = parameter_value(rng, param)
+        if args.max_params == 1:   # the draws of the seeds quoted before --max-params existed
+            chosen = [rng.choice(params)]
+        else:
+            chosen = rng.sample(params, rng.randint(1, min(args.max_params, len(params))))
+            chosen.sort(key=params.index)   # --set in the order `raster params` lists them
+        for param in chosen:
+            frame["set"][param["name"]] = parameter_value(rng, param)
     return frame
 
 

@@ -407,9 +407,20 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         done = run("random_frames.py", "--raster", fake, "--frames", "1", "--quiet")
         check(done.returncode == expected and shows in done.stdout,
               f"random_frames.py with `{compare}`: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
+    # --max-params K: each frame that sets parameters sets 1 to K distinct ones, as --set options.
+    same = numbers.replace('"max_in_unit": 3', '"max_in_unit": 0')
+    with open(fake, "w") as f:
+        f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {same}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
+    done = run("random_frames.py", "--raster", fake, "--frames", "30", "--scenes", "shadow", "--params", "1",
+               "--max-params", "3", "--json", frames_json, "--quiet")
+    with open(frames_json) as f:
+        counts = [len(fr["set"]) for fr in json.load(f)["frames"]]
+    check(done.returncode == 0 and min(counts) >= 1 and max(counts) == 3 and 2 in counts,
+          f"random_frames.py --max-params 3: exit {done.returncode}, parameters a frame {counts}")
     for option, value, naming in (("--threads", "0", "0 is out of range"), ("--max-size", "0x30", "0x30 is not a WxH"),
                                   ("--max-size", "8x8,9x9", "one WxH"), ("--float-final", "1.5", "not a share"),
-                                  ("--params", "nan", "not a share"), ("--scenes", "forest", "unknown 'forest'"), ("--scenes", "", "--scenes '': empty"),
+                                  ("--params", "nan", "not a share"), ("--max-params", "0", "out of range (1..100)"),
+                                  ("--scenes", "forest", "unknown 'forest'"), ("--scenes", "", "--scenes '': empty"),
                                   ("--minutes", "-1", "out of range"), ("--json", tmp, "is a folder")):
         expect_refused("random_frames.py", ["--raster", raster, "--frames", "1", option, value], naming, cwd=tmp)
 

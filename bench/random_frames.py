@@ -13,19 +13,25 @@ the range spans at most three decades, else its magnitude log-uniform up to the 
 another parameter rules out, such as a cascade split past the next) is counted as refused.
 A frame that differs prints the `raster compare` line that shows it again.
 
+Presets: with --preset P (`raster methods` lists them and what each promises) the frames are
+drawn with that method set, and --min-psnr X states what each must hold instead of the bytes:
+the final image's PSNR against llvmpipe at least X dB (a frame holds or is below). So
+`--preset fast --min-psnr 40 --params 0 --min-size 320x240 --max-size 1920x1080
+--float-final 0` checks fast's promise at times no test names.
+
 Threads: llvmpipe is not stable against itself past its host's cores (STABILITY.md, "Where gl
 is not bit-identical": a thread that drew no half-float tile still flushes denormals), so
 the default is 1,2; a frame that differs only at more threads than cores is llvmpipe's.
 
 Writes --json FILE (every frame: its arguments, status and each target's largest difference,
 read from the compare.json `raster compare` writes) when asked, and prints a summary. Exit
-status: 0 when every frame matched or was refused, 1 when one differed, failed or ran past
---timeout, 2 for bad arguments.
+status: 0 when every frame matched (or held) or was refused, 1 when one differed (or was
+below), failed or ran past --timeout, 2 for bad arguments.
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]
-                              [--float-final 0.5] [--params 0.5] [--max-params 1]
-                              [--timeout 600]
+                              [--min-size 1x1] [--float-final 0.5] [--params 0.5]
+                              [--max-params 1] [--preset gl --min-psnr DB] [--timeout 600]
                               [--raster build/raster] [--json FILE] [--quiet]
 (Found, on 2026-12-06: deferred's denormals and pbr's smoothstep order, both fixed;
 docs/notes/2026-12-06-random-frames-denormals-and-smoothstep.md.)
@@ -44,12 +50,15 @@ import time
 from chart_files import write_text_atomically
 from input_checks import (RASTER_MAX_THREADS, check_output_path, check_raster, fail, parse_counts, parse_sizes,
                           split_list)
-from raster_scenes import checked_names, scene_rows
+from raster_scenes import checked_names, preset_names, scene_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROG = "random_frames.py"
-# The statuses that make the run fail and are printed as they happen.
-NOT_SAME = ("differs", "failed", "timeout")
+# A frame's statuses, with --min-psnr and without, and those that make the run fail (printed
+# as they happen).
+STATUSES_EXACT = ("same", "differs", "refused", "failed", "timeout")
+STATUSES_PSNR = ("holds", "below", "refused", "failed", "timeout")
+NOT_SAME = ("differs", "below", "failed", "timeout")
 
 
 def parse_args(argv):
@@ -60,11 +69,15 @@ def parse_args(argv):
     parser.add_argument("--scenes", help="comma-separated scene names (default: every scene of `raster scenes`)")
     parser.add_argument("--threads", default="1,2", help="comma-separated thread counts to draw from (default 1,2)")
     parser.add_argument("--max-size", default="720x480", help="largest WxH drawn (default 720x480)")
+    parser.add_argument("--min-size", default="1x1", help="smallest WxH drawn (default 1x1)")
     parser.add_argument("--max-time", type=float, default=30.0, help="latest time drawn, seconds (default 30)")
     parser.add_argument("--float-final", type=float, default=0.5, help="share of frames with --float-final (default 0.5)")
     parser.add_argument("--params", type=float, default=0.5, help="share of frames that set a scene parameter (default 0.5)")
     parser.add_argument("--max-params", type=int, default=1,
                         help="most parameters such a frame sets, 1 to this many distinct ones (default 1)")
+    parser.add_argument("--preset", default="gl", help="the method set compared (default gl: every target bit for bit)")
+    parser.add_argument("--min-psnr", type=float,
+                        help="instead of the bytes: the final image's PSNR against llvmpipe, at least this many dB")
     parser.add_argument("--timeout", type=float, default=600.0, help="seconds one compare may take (default 600)")
     parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
     parser.add_argument("--json", help="write every frame and the summary here")
@@ -84,10 +97,24 @@ def parse_args(argv):
     if not (math.isfinite(args.timeout) and args.timeout > 0):
         fail(PROG, f"--timeout {args.timeout}: must be a positive number of seconds")
     args.threads = parse_counts(PROG, "--threads", args.threads, 1, RASTER_MAX_THREADS, "raster's --threads; 0 is not one count")
-    if "," in args.max_size:
-        fail(PROG, f"--max-size {args.max_size}: one WxH, not a list")
-    args.max_size = parse_sizes(PROG, "--max-size", args.max_size)[0]
+    for option in ("--max-size", "--min-size"):
+        attribute = option[2:].replace("-", "_")
+        if "," in getattr(args, attribute):
+            fail(PROG, f"{option} {getattr(args, attribute)}: one WxH, not a list")
+        setattr(args, attribute, parse_sizes(PROG, option, getattr(args, attribute))[0])
+    (min_w, min_h), (max_w, max_h) = (map(int, size.split("x")) for size in (args.min_size, args.max_size))
+    if min_w > max_w or min_h > max_h:
+        fail(PROG, f"--min-size {args.min_size}: larger than --max-size {args.max_size} on a side")
+    if args.min_psnr is not None:
+        if not (math.isfinite(args.min_psnr) and 0 <= args.min_psnr <= 200):
+            fail(PROG, f"--min-psnr {args.min_psnr}: out of range (0..200 dB)")
+        if args.float_final > 0:
+            fail(PROG, f"--min-psnr reads the final RGBA8 image's PSNR: give --float-final 0, not {args.float_final}")
     check_raster(PROG, "--raster", args.raster)
+    args.preset = checked_names(PROG, "--preset", [args.preset], preset_names(args.raster))[0]
+    if args.preset != "gl" and args.min_psnr is None:
+        fail(PROG, f"--preset {args.preset}: say what its frames must hold with --min-psnr DB "
+                   "(`raster methods` gives each preset's promise); only gl is held to the bytes")
     if args.json:
         check_output_path(PROG, "--json", args.json)
     rows = {row["name"]: row for row in scene_rows(args.raster)}
@@ -118,9 +145,9 @@ def parameter_value(rng, param):
 def draw_frame(rng, args):
     """One frame's compare arguments, and what was drawn."""
     scene = rng.choice(sorted(args.rows))
-    width_max, height_max = map(int, args.max_size.split("x"))
+    (width_min, height_min), (width_max, height_max) = (map(int, size.split("x")) for size in (args.min_size, args.max_size))
     frame = {"scene": scene, "time": round(rng.uniform(0, args.max_time), 3),
-             "size": f"{rng.randint(1, width_max)}x{rng.randint(1, height_max)}",
+             "size": f"{rng.randint(width_min, width_max)}x{rng.randint(height_min, height_max)}",
              "threads": rng.choice(args.threads), "float_final": rng.random() < args.float_final, "set": {}}
     params = [p for p in args.rows[scene].get("params", []) if p["name"] not in ("time", "size")]
     if params and rng.random() < args.params:
@@ -131,6 +158,8 @@ def draw_frame(rng, args):
             chosen.sort(key=params.index)   # --set in the order `raster params` lists them
         for param in chosen:
             frame["set"][param["name"]] = parameter_value(rng, param)
+    if args.preset != "gl":
+        frame["preset"] = args.preset
     return frame
 
 
@@ -141,13 +170,16 @@ def compare_words(frame):
         words += ["--set", f"{name}={value}"]
     if frame["float_final"]:
         words.append("--float-final")
+    if "preset" in frame:
+        words += ["--preset", frame["preset"]]
     return words
 
 
 def run_frame(args, frame, out_dir):
-    """Compares one frame; sets its status (same, differs, refused, failed, timeout) and the
-    largest difference of each target in the target's own unit (compare.json's max_in_unit:
-    8-bit steps, depth LSBs, half or float ULPs)."""
+    """Compares one frame; sets its status (same, differs, refused, failed, timeout; with
+    --min-psnr holds or below instead of same or differs) and the largest difference of each
+    target in the target's own unit (compare.json's max_in_unit: 8-bit steps, depth LSBs,
+    half or float ULPs), and with --min-psnr the final image's PSNR (None: identical)."""
     command = [args.raster, *compare_words(frame), "--out", out_dir, "--quiet"]
     numbers = os.path.join(out_dir, "compare.json")
     if os.path.exists(numbers):   # the last frame's: this one must write its own
@@ -157,13 +189,17 @@ def run_frame(args, frame, out_dir):
     except subprocess.TimeoutExpired:
         frame["status"] = "timeout"
         return
-    targets = {}
+    targets, final_psnr = {}, None
     if done.returncode == 0 and os.path.exists(numbers):
         try:
             with open(numbers) as f:
-                targets = {t["name"]: t["max_in_unit"] for t in json.load(f)["targets"]}
-        except (OSError, ValueError, KeyError, TypeError) as error:
-            frame["message"] = f"{numbers} unreadable: {error}"
+                listed = json.load(f)["targets"]
+            targets = {t["name"]: t["max_in_unit"] for t in listed}
+            if args.min_psnr is not None:
+                final_psnr = next(t["psnr_db"] for t in listed if t["name"] == "final")
+        except (OSError, ValueError, KeyError, TypeError, StopIteration) as error:
+            targets = {}
+            frame["message"] = f"{numbers} unreadable: {error!r}"
     frame["targets"] = targets
     if done.returncode == 2:
         frame["status"] = "refused"
@@ -171,6 +207,9 @@ def run_frame(args, frame, out_dir):
     elif done.returncode != 0 or not targets:
         frame["status"] = "failed"
         frame.setdefault("message", done.stderr.strip()[-500:] or f"exit {done.returncode}, no target compared")
+    elif args.min_psnr is not None:
+        frame["final_psnr_db"] = final_psnr   # null in compare.json: identical, no finite PSNR
+        frame["status"] = "holds" if final_psnr is None or final_psnr >= args.min_psnr else "below"
     else:
         frame["status"] = "same" if all(v == 0 for v in targets.values()) else "differs"
 
@@ -186,7 +225,10 @@ def main(argv):
             run_frame(args, frame, out_dir)
             frames.append(frame)
             if frame["status"] in NOT_SAME:
-                shown = ", ".join(f"{k} max {v:g}" for k, v in frame.get("targets", {}).items() if v != 0)
+                if frame["status"] == "below":
+                    shown = f"final {frame['final_psnr_db']:.2f} dB, under {args.min_psnr:g}"
+                else:
+                    shown = ", ".join(f"{k} max {v:g}" for k, v in frame.get("targets", {}).items() if v != 0)
                 print(f"{frame['status']}: raster {shlex.join(compare_words(frame))}"
                       + (f" ({shown})" if shown else "") + (f": {frame['message']}" if "message" in frame else ""),
                       flush=True)
@@ -194,13 +236,15 @@ def main(argv):
                 last_progress = time.monotonic()
                 bad = sum(f["status"] in NOT_SAME for f in frames)
                 print(f"{PROG}: {len(frames)} frames, {bad} not the same", file=sys.stderr, flush=True)
-    counts = {status: sum(f["status"] == status for f in frames) for status in ("same", "differs", "refused", "failed", "timeout")}
+    statuses = STATUSES_EXACT if args.min_psnr is None else STATUSES_PSNR
+    counts = {status: sum(f["status"] == status for f in frames) for status in statuses}
     print(f"{len(frames)} frames (seed {args.seed}): " + ", ".join(f"{n} {status}" for status, n in counts.items()))
     if args.json:
         summary = {"seed": args.seed, "raster": os.path.abspath(args.raster), "threads": args.threads,
-                   "max_size": args.max_size, "max_time": args.max_time, "counts": counts, "frames": frames}
+                   "min_size": args.min_size, "max_size": args.max_size, "max_time": args.max_time,
+                   "preset": args.preset, "min_psnr_db": args.min_psnr, "counts": counts, "frames": frames}
         write_text_atomically(json.dumps(summary, indent=1) + "\n", args.json)
-    return 1 if any(counts[status] for status in NOT_SAME) else 0
+    return 1 if any(counts.get(status) for status in NOT_SAME) else 0
 
 
 if __name__ == "__main__":

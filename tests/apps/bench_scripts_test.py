@@ -417,9 +417,22 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         counts = [len(fr["set"]) for fr in json.load(f)["frames"]]
     check(done.returncode == 0 and min(counts) >= 1 and max(counts) == 3 and 2 in counts,
           f"random_frames.py --max-params 3: exit {done.returncode}, parameters a frame {counts}")
+    # --preset P --min-psnr X: a frame holds when the final image's PSNR is at least X (null in
+    # compare.json: identical), and the preset reaches compare; below X fails the run.
+    for psnr, expected, shows in (("35.5", 1, "--preset fast (final 35.50 dB, under 40)"), ("45", 0, " 1 holds, 0 below"),
+                                  ("null", 0, " 1 holds, 0 below")):
+        with_psnr = numbers.replace('"max_in_unit": 3}', f'"max_in_unit": 3, "psnr_db": {psnr}}}')
+        with open(fake, "w") as f:
+            f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {with_psnr}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
+        done = run("random_frames.py", "--raster", fake, "--frames", "1", "--preset", "fast", "--min-psnr", "40",
+                   "--float-final", "0", "--quiet")
+        check(done.returncode == expected and shows in done.stdout,
+              f"random_frames.py --preset fast, final at {psnr} dB: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
     for option, value, naming in (("--threads", "0", "0 is out of range"), ("--max-size", "0x30", "0x30 is not a WxH"),
                                   ("--max-size", "8x8,9x9", "one WxH"), ("--float-final", "1.5", "not a share"),
                                   ("--params", "nan", "not a share"), ("--max-params", "0", "out of range (1..100)"),
+                                  ("--preset", "fast", "say what its frames must hold with --min-psnr"),
+                                  ("--min-psnr", "40", "give --float-final 0"), ("--min-size", "800x10", "larger than --max-size"),
                                   ("--scenes", "forest", "unknown 'forest'"), ("--scenes", "", "--scenes '': empty"),
                                   ("--minutes", "-1", "out of range"), ("--json", tmp, "is a folder")):
         expect_refused("random_frames.py", ["--raster", raster, "--frames", "1", option, value], naming, cwd=tmp)

@@ -4,13 +4,14 @@ scene parameters that no test names, every target required bit for bit (`max 0`)
 
 Each frame draws a scene (every scene of `raster scenes` by default), a time in
 [0, --max-time] (three decimals), a size up to --max-size, a thread count from --threads,
---float-final with probability --float-final, and with probability --params one of the
-scene's own parameters (`raster params SCENE`; with --max-params K, 1 to K distinct ones, so
-that parameters meet: a near plane of 1e-7 far from the origin) at a random value of its
-range: uniform where
-the range spans at most three decades, else its magnitude log-uniform up to the range's end
-(so 1e-3 to 1e20 for a world offset, either sign). A frame raster refuses (exit 2: a value
-another parameter rules out, such as a cascade split past the next) is counted as refused.
+--float-final with probability --float-final, --scalar (this pipeline's plain lanes: the
+readable instantiation of every port, the SIMD paths off) with probability --scalar, and
+with probability --params one of the scene's own parameters (`raster params SCENE`; with
+--max-params K, 1 to K distinct ones, so that parameters meet: a near plane of 1e-7 far from
+the origin) at a random value of its range: uniform where the range spans at most three
+decades, else its magnitude log-uniform up to the range's end (so 1e-3 to 1e20 for a world
+offset, either sign). A frame raster refuses (exit 2: a value another parameter rules out,
+such as a cascade split past the next) is counted as refused.
 A frame that differs prints the `raster compare` line that shows it again.
 
 Presets: with --preset P (`raster methods` lists them and what each promises) the frames are
@@ -31,7 +32,8 @@ below), failed or ran past --timeout, 2 for bad arguments.
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]
                               [--min-size 1x1] [--float-final 0.5] [--params 0.5]
-                              [--max-params 1] [--preset gl --min-psnr DB] [--timeout 600]
+                              [--max-params 1] [--scalar 0] [--preset gl --min-psnr DB]
+                              [--timeout 600]
                               [--raster build/raster] [--json FILE] [--quiet]
 (Found, on 2026-12-06: deferred's denormals and pbr's smoothstep order, both fixed;
 docs/notes/2026-12-06-random-frames-denormals-and-smoothstep.md.)
@@ -73,6 +75,8 @@ def parse_args(argv):
     parser.add_argument("--max-time", type=float, default=30.0, help="latest time drawn, seconds (default 30)")
     parser.add_argument("--float-final", type=float, default=0.5, help="share of frames with --float-final (default 0.5)")
     parser.add_argument("--params", type=float, default=0.5, help="share of frames that set a scene parameter (default 0.5)")
+    parser.add_argument("--scalar", type=float, default=0.0,
+                        help="share of frames with --scalar: this pipeline's plain lanes, every SIMD path off (default 0)")
     parser.add_argument("--max-params", type=int, default=1,
                         help="most parameters such a frame sets, 1 to this many distinct ones (default 1)")
     parser.add_argument("--preset", default="gl", help="the method set compared (default gl: every target bit for bit)")
@@ -89,7 +93,7 @@ def parse_args(argv):
         fail(PROG, f"--minutes {args.minutes}: out of range (above 0, at most a week)")
     if not (math.isfinite(args.max_time) and 0 <= args.max_time <= 1e30):
         fail(PROG, f"--max-time {args.max_time}: out of range (0..1e30, raster's)")
-    for option, share in (("--float-final", args.float_final), ("--params", args.params)):
+    for option, share in (("--float-final", args.float_final), ("--params", args.params), ("--scalar", args.scalar)):
         if not 0 <= share <= 1:   # NaN fails too
             fail(PROG, f"{option} {share}: not a share (0..1)")
     if not 1 <= args.max_params <= 100:
@@ -160,6 +164,8 @@ def draw_frame(rng, args):
             frame["set"][param["name"]] = parameter_value(rng, param)
     if args.preset != "gl":
         frame["preset"] = args.preset
+    if args.scalar > 0:   # drawn only when asked, so that the seeds quoted before keep their frames
+        frame["scalar"] = rng.random() < args.scalar
     return frame
 
 
@@ -172,6 +178,8 @@ def compare_words(frame):
         words.append("--float-final")
     if "preset" in frame:
         words += ["--preset", frame["preset"]]
+    if frame.get("scalar"):
+        words.append("--scalar")
     return words
 
 

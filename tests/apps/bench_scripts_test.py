@@ -407,16 +407,23 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         done = run("random_frames.py", "--raster", fake, "--frames", "1", "--quiet")
         check(done.returncode == expected and shows in done.stdout,
               f"random_frames.py with `{compare}`: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
-    # --max-params K: each frame that sets parameters sets 1 to K distinct ones, as --set options.
+    # --max-params K: each frame that sets parameters sets 1 to K distinct ones, as --set options;
     same = numbers.replace('"max_in_unit": 3', '"max_in_unit": 0')
     with open(fake, "w") as f:
         f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {same}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
+    # --scalar S: that share of frames with the plain lanes.
     done = run("random_frames.py", "--raster", fake, "--frames", "30", "--scenes", "shadow", "--params", "1",
-               "--max-params", "3", "--json", frames_json, "--quiet")
+               "--max-params", "3", "--scalar", "0.5", "--json", frames_json, "--quiet")
     with open(frames_json) as f:
-        counts = [len(fr["set"]) for fr in json.load(f)["frames"]]
+        drawn = json.load(f)["frames"]
+    counts = [len(fr["set"]) for fr in drawn]
     check(done.returncode == 0 and min(counts) >= 1 and max(counts) == 3 and 2 in counts,
           f"random_frames.py --max-params 3: exit {done.returncode}, parameters a frame {counts}")
+    check(0 < sum(fr["scalar"] for fr in drawn) < 30, f"random_frames.py --scalar 0.5: {[fr.get('scalar') for fr in drawn]}")
+    with open(fake, "w") as f:   # a difference: its reproducing line carries --scalar
+        f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {numbers}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
+    done = run("random_frames.py", "--raster", fake, "--frames", "1", "--scalar", "1", "--quiet")
+    check(done.returncode == 1 and " --scalar (final max 3)" in done.stdout, f"random_frames.py --scalar 1: {done.stdout[-500:]}")
     # --preset P --min-psnr X: a frame holds when the final image's PSNR is at least X (null in
     # compare.json: identical), and the preset reaches compare; below X fails the run.
     for psnr, expected, shows in (("35.5", 1, "--preset fast (final 35.50 dB, under 40)"), ("45", 0, " 1 holds, 0 below"),
@@ -430,7 +437,7 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
               f"random_frames.py --preset fast, final at {psnr} dB: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
     for option, value, naming in (("--threads", "0", "0 is out of range"), ("--max-size", "0x30", "0x30 is not a WxH"),
                                   ("--max-size", "8x8,9x9", "one WxH"), ("--float-final", "1.5", "not a share"),
-                                  ("--params", "nan", "not a share"), ("--max-params", "0", "out of range (1..100)"),
+                                  ("--params", "nan", "not a share"), ("--max-params", "0", "out of range (1..100)"), ("--scalar", "2", "not a share"),
                                   ("--preset", "fast", "say what its frames must hold with --min-psnr"),
                                   ("--min-psnr", "40", "give --float-final 0"), ("--min-size", "800x10", "larger than --max-size"),
                                   ("--scenes", "forest", "unknown 'forest'"), ("--scenes", "", "--scenes '': empty"),

@@ -407,11 +407,11 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         done = run("random_frames.py", "--raster", fake, "--frames", "1", "--quiet")
         check(done.returncode == expected and shows in done.stdout,
               f"random_frames.py with `{compare}`: exit {done.returncode}, {done.stdout[-500:]} {done.stderr[-500:]}")
-    # --max-params K: each frame that sets parameters sets 1 to K distinct ones, as --set options;
+    # --max-params K: each frame that sets parameters sets 1 to K distinct ones; --scalar S:
+    # that share of the frames with the plain lanes (a fake whose compare finds no difference).
     same = numbers.replace('"max_in_unit": 3', '"max_in_unit": 0')
     with open(fake, "w") as f:
         f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {same}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
-    # --scalar S: that share of frames with the plain lanes.
     done = run("random_frames.py", "--raster", fake, "--frames", "30", "--scenes", "shadow", "--params", "1",
                "--max-params", "3", "--scalar", "0.5", "--json", frames_json, "--quiet")
     with open(frames_json) as f:

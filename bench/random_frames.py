@@ -106,7 +106,9 @@ def parse_args(argv):
         if "," in getattr(args, attribute):
             fail(PROG, f"{option} {getattr(args, attribute)}: one WxH, not a list")
         setattr(args, attribute, parse_sizes(PROG, option, getattr(args, attribute))[0])
-    (min_w, min_h), (max_w, max_h) = (map(int, size.split("x")) for size in (args.min_size, args.max_size))
+    # The two sizes as (width, height), parsed once for every frame's draw.
+    args.size_bounds = [tuple(map(int, size.split("x"))) for size in (args.min_size, args.max_size)]
+    (min_w, min_h), (max_w, max_h) = args.size_bounds
     if min_w > max_w or min_h > max_h:
         fail(PROG, f"--min-size {args.min_size}: larger than --max-size {args.max_size} on a side")
     if args.min_psnr is not None:
@@ -149,7 +151,7 @@ def parameter_value(rng, param):
 def draw_frame(rng, args):
     """One frame's compare arguments, and what was drawn."""
     scene = rng.choice(sorted(args.rows))
-    (width_min, height_min), (width_max, height_max) = (map(int, size.split("x")) for size in (args.min_size, args.max_size))
+    (width_min, height_min), (width_max, height_max) = args.size_bounds
     frame = {"scene": scene, "time": round(rng.uniform(0, args.max_time), 3),
              "size": f"{rng.randint(width_min, width_max)}x{rng.randint(height_min, height_max)}",
              "threads": rng.choice(args.threads), "float_final": rng.random() < args.float_final, "set": {}}

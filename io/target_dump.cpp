@@ -34,16 +34,28 @@ std::string kindTag(const ImageData& image) {
 
 }  // namespace
 
+std::vector<std::string> targetDumpFiles(const std::vector<Target>& targets) {
+  std::vector<std::string> files;
+  for (const Target& target : targets) {
+    if (target.name.empty() || target.name.find_first_of("/ \t\n") != std::string::npos)
+      throw std::runtime_error("target name '" + target.name + "' cannot be a file name");
+    files.push_back(target.name + ".png");
+    if (target.image.format != TexelFormat::RGBA8) files.push_back(target.name + ".exr");
+  }
+  files.push_back(kManifest);
+  return files;
+}
+
 void writeTargetDump(const std::string& folder, const std::vector<Target>& targets,
                      const std::function<void(const std::string&)>& wrote) {
+  const std::vector<std::string> files = targetDumpFiles(targets);
   fs::create_directory(folder);
+  for (const std::string& file : files) checkOutputPath((fs::path(folder) / file).string());
   const auto written = [&](const std::string& path) {
     if (wrote) wrote(path);
   };
   std::string manifest;
   for (const Target& target : targets) {
-    if (target.name.empty() || target.name.find_first_of("/ \t\n") != std::string::npos)
-      throw std::runtime_error("target name '" + target.name + "' cannot be a file name");
     const std::string base = (fs::path(folder) / target.name).string();
     writePng(base + ".png", target.image);
     written(base + ".png");

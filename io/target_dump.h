@@ -17,8 +17,14 @@
 
 namespace compare {
 
+// The names of the files above for these targets, in the order they are written (the
+// manifest last). Throws std::runtime_error for a target name that cannot be a file name.
+std::vector<std::string> targetDumpFiles(const std::vector<scenes::Target>& targets);
+
 // Writes the files above into folder (created if missing; its parent must exist), each
-// whole or not at all, calling wrote(PATH) after each (the manifest last).
+// whole or not at all, calling wrote(PATH) after each (the manifest last). Every path is
+// checked before the first is written (checkOutputPath), so a name taken by a folder or a
+// link stops the dump with nothing written.
 void writeTargetDump(const std::string& folder, const std::vector<scenes::Target>& targets,
                      const std::function<void(const std::string&)>& wrote = {});
 

@@ -289,4 +289,17 @@ void checkOutputFolder(const std::string& option, const std::string& path) {
                      " does not exist or is not writable)");
 }
 
+void checkOutputFolder(const std::string& option, const std::string& path, const std::vector<std::string>& files) {
+  checkOutputFolder(option, path);
+  std::error_code error;
+  if (!fs::is_directory(path, error)) return;   // to be made: nothing in it yet
+  for (const std::string& file : files) {
+    try {
+      compare::checkOutputPath((fs::path(path) / file).string());
+    } catch (const compare::OutputPathError& e) {
+      throw UsageError(option + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace cli

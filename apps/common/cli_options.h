@@ -118,5 +118,9 @@ void checkOutputFile(const std::string& option, const std::string& path);
 void checkOutputPng(const std::string& option, const std::string& path);
 // Checks that `path` is a writable folder, or can be made in an existing writable folder.
 void checkOutputFolder(const std::string& option, const std::string& path);
+// checkOutputFolder, then, where the folder exists, each of `files` in it as the writer will
+// check it (a regular file or nothing): a folder or link that took one of the names is found
+// before the work (a sweep, a race, two renders), not after it with half the files written.
+void checkOutputFolder(const std::string& option, const std::string& path, const std::vector<std::string>& files);
 
 }  // namespace cli

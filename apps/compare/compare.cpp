@@ -78,17 +78,10 @@ int runCompare(const CompareArgs& args) {
   if (args.test != "raster") refuseOwnOptionsOnGl(frame, "--test " + args.test);
   const Thresholds limits = validateThresholds(args);
   const std::string outFolder = args.out.empty() ? "compare-" + frame.scene : args.out;
-  checkOutputFolder("--out", outFolder);
-  // compare.json's path too, where the folder is there already: a folder or link of that
-  // name would otherwise be found only after both renders.
+  // compare.json's path too: a folder or link of that name would otherwise be found only
+  // after both renders. (The images' names are the targets', checked once they are known.)
+  checkOutputFolder("--out", outFolder, {"compare.json"});
   const std::string numbers = (fs::path(outFolder) / "compare.json").string();
-  if (fs::is_directory(outFolder)) {
-    try {
-      compare::checkOutputPath(numbers);
-    } catch (const compare::OutputPathError& e) {
-      throw UsageError(std::string("--out: ") + e.what());
-    }
-  }
   scenes::checkGalliumEnvironment();
 
   // Render both sides; they must expose the same targets in the same order.
@@ -103,7 +96,12 @@ int runCompare(const CompareArgs& args) {
     throw std::runtime_error("the sides expose different targets: " + test.backend + " {" + names(test) +
                              "}, " + reference.backend + " {" + names(reference) + "}");
 
-  // Per target: three images, one stats line, and the thresholds it exceeds.
+  // Per target: three images, one stats line, and the thresholds it exceeds. Every name is
+  // checked before the first file is written, so a taken one leaves the folder as it was.
+  std::vector<std::string> files;
+  for (const Target& t : test.targets)
+    for (const char* suffix : {"_ours.png", "_gl.png", "_diff.png"}) files.push_back(t.name + suffix);
+  checkOutputFolder("--out", outFolder, files);
   fs::create_directory(outFolder);
   std::cout << "test: " << test.backend;
   if (args.test == "raster") std::cout << " (methods: " << raster::methodLabel(frame.methods) << ")";

@@ -6,6 +6,7 @@
 #include "apps/common/sides.h"
 #include "apps/views/view_render.h"
 #include "io/image_io.h"
+#include "io/target_dump.h"
 #include "backends/backends.h"
 
 namespace cli {
@@ -23,6 +24,9 @@ int runRender(const RenderArgs& args) {
   if (args.backend == "gl") scenes::checkGalliumEnvironment();
 
   const Side side = renderInProcess(frame, args.backend, /*finalOnly=*/args.dump.empty());
+  // The dump's names are the scene's targets, known now: each checked before any file is
+  // written, --out's included.
+  if (!args.dump.empty()) checkOutputFolder("--dump", args.dump, compare::targetDumpFiles(side.targets));
   compare::writePng(out, side.targets.back().image);
   std::cout << "wrote " << out << std::endl;
   if (!args.dump.empty()) dumpTargets(args.dump, side.targets);

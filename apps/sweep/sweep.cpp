@@ -262,7 +262,7 @@ int runSweep(const SweepArgs& args) {
   checkSceneAtEveryValue(frames, range.name, values);
   checkAssetsPresent(base);
   checkMemoryFloor(frames);
-  checkOutputFolder("--out", args.out);
+  checkOutputFolder("--out", args.out, sweepFiles(shard.sharded));
   if (!shard.sharded) checkChartTools(kSweepChartScript);
   if (args.check) {
     std::cout << "sweep " << base.scene << " " << range.name << ": " << values.size() << " values x "

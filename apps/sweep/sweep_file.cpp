@@ -146,6 +146,12 @@ std::vector<std::string> sweepSides(const json& sweep) {
   return order;
 }
 
+std::vector<std::string> sweepFiles(bool shard) {
+  std::vector<std::string> files = {"sweep.json", "sweep.md"};
+  if (!shard) files.insert(files.end(), {"sweep.png", "sweep.svg"});
+  return files;
+}
+
 // Writes sweep.json and sweep.md into `folder`, and the chart unless it is a shard.
 void writeSweep(json sweep, const std::string& folder) {
   const bool shard = sweep.contains("shard");
@@ -154,16 +160,12 @@ void writeSweep(json sweep, const std::string& folder) {
   const std::string jsonPath = (fs::path(folder) / "sweep.json").string();
   compare::writeOutputFile(jsonPath, sweep.dump(2) + "\n");
   compare::writeOutputFile((fs::path(folder) / "sweep.md").string(), markdown(sweep));
-  std::vector<std::string> written = {"sweep.json", "sweep.md"};
-  if (!shard) {
-    drawChart(kSweepChartScript, jsonPath, (fs::path(folder) / "sweep").string());
-    written.insert(written.end(), {"sweep.png", "sweep.svg"});
-  }
+  if (!shard) drawChart(kSweepChartScript, jsonPath, (fs::path(folder) / "sweep").string());
   if (sweep.contains("first_failure"))
     for (const auto& [side, value] : sweep.at("first_failure").items())
       std::cout << side << ": " << (value.is_null() ? "does not fail" : "first fails at " + sixDigits(value.get<double>()))
                 << "\n";
-  for (const std::string& file : written) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
+  for (const std::string& file : sweepFiles(shard)) std::cout << "wrote " << (fs::path(folder) / file).string() << "\n";
 }
 
 

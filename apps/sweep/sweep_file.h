@@ -46,6 +46,10 @@ std::vector<size_t> shardValueIndexes(const ShardSpec& shard, size_t valueCount)
 // sets, softpipe.
 std::vector<std::string> sweepSides(const nlohmann::json& sweep);
 
+// The files writeSweep writes: sweep.json and sweep.md, and a whole run's chart, sweep.png
+// and sweep.svg (checked in the --out folder before the run: checkOutputFolder).
+std::vector<std::string> sweepFiles(bool shard);
+
 // Writes sweep.json and sweep.md into `folder` (a whole run adds "first_failure" and the
 // chart; a shard neither), and says on stdout what it wrote. The folder is made here, with
 // its first file, so that a run that fails before it (a render, a shard refused) leaves none.

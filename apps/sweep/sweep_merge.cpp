@@ -282,7 +282,7 @@ int runSweepMerge(const SweepMergeArgs& args) {
   std::vector<json> points = merged.at("points").get<std::vector<json>>();
   std::stable_sort(points.begin(), points.end(), [&](const json& a, const json& b) { return rank(a) < rank(b); });
   merged["points"] = points;
-  checkOutputFolder("--out", args.out);
+  checkOutputFolder("--out", args.out, sweepFiles(/*shard=*/false));
   checkChartTools(kSweepChartScript);
   writeSweep(std::move(merged), args.out);
   return 0;

@@ -39,6 +39,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// What a race writes into --out, checked there before it starts.
+const std::vector<std::string> kTradeoffFiles = {"tradeoff.json", "tradeoff.md", "tradeoff.png", "tradeoff.svg"};
+
 // One point of the chart: a method set of this pipeline, or a GL driver.
 struct Point {
   std::string name;                 // gl, precise, fast, math=fast, ..., llvmpipe, softpipe
@@ -310,7 +313,7 @@ int runTradeoff(const TradeoffArgs& args) {
   if (args.frames < 1 || args.frames > 1000) throw UsageError("--frames: out of range (1..1000)");
   if (args.warmup < 0 || args.warmup > 100) throw UsageError("--warmup: out of range (0..100)");
   if (args.softpipeFrames < 1 || args.softpipeFrames > 100) throw UsageError("--softpipe-frames: out of range (1..100)");
-  checkOutputFolder("--out", args.out);
+  checkOutputFolder("--out", args.out, kTradeoffFiles);
   checkChartTools("tradeoff_chart.py");
 
   const int threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -336,8 +339,7 @@ int runTradeoff(const TradeoffArgs& args) {
   compare::writeOutputFile((fs::path(args.out) / "tradeoff.md").string(), markdown);
   drawChart("tradeoff_chart.py", jsonPath, (fs::path(args.out) / "tradeoff").string());
   std::cout << markdown;
-  for (const char* file : {"tradeoff.json", "tradeoff.md", "tradeoff.png", "tradeoff.svg"})
-    std::cout << "wrote " << (fs::path(args.out) / file).string() << "\n";
+  for (const std::string& file : kTradeoffFiles) std::cout << "wrote " << (fs::path(args.out) / file).string() << "\n";
   return 0;
 }
 

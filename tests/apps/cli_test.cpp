@@ -301,6 +301,13 @@ TEST_SUITE("cli") {
     CHECK(taken.status == 2);
     CHECK(taken.err == "raster: --out: cannot write taken/compare.json: it is a folder, not a regular file\n");
     CHECK(!fs::exists(cwd / "taken" / "final_ours.png"));
+    // A target's image name taken: known only once the targets are, and still refused before
+    // any file is written, so the folder holds what it held.
+    fs::create_directories(cwd / "taken2" / "final_gl.png");
+    const RunResult taken2 = runCli(cwd, "compare shadow --size 32x24 --quiet --out taken2");
+    CHECK(taken2.status == 2);
+    CHECK(taken2.err == "raster: --out: cannot write taken2/final_gl.png: it is a folder, not a regular file\n");
+    CHECK(std::distance(fs::directory_iterator(cwd / "taken2"), fs::directory_iterator()) == 1);
 
     // A frame that matches names no pixel, and passes --exact.
     const RunResult same = runCli(cwd, "compare shadow --size 32x24 --exact --quiet --out same");
@@ -384,6 +391,31 @@ TEST_SUITE("cli") {
     // A file where a folder is asked for says so.
     expectRefused("render " + aScene() + " --dump /etc/passwd", "/etc/passwd is a file, not a folder");
     expectRefused("compare " + aScene() + " --out /etc/passwd", "/etc/passwd is a file, not a folder");
+  }
+
+  // A name in an existing --out folder that a folder or link took is found before the work
+  // (a race, a sweep), not after it with half the files written.
+  TEST_CASE("a file name taken in the --out folder is refused before the work, nothing written") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    for (const char* taken : {"t/tradeoff.svg", "s/sweep.png", "d/hdr_depth.exr"}) fs::create_directories(cwd / taken);
+    fs::create_directory(cwd / "s2");
+    fs::create_directory_symlink("/tmp", cwd / "s2" / "sweep.md");
+    const auto expectRefused = [&](const std::string& args, const std::string& says) {
+      const RunResult result = runCli(cwd, args);
+      INFO("raster " << args << "\nstderr: " << result.err);
+      CHECK(result.status == 2);
+      CHECK(result.err.rfind("raster: " + says, 0) == 0);
+    };
+    expectRefused("tradeoff shadow --size 32x24 --out t", "--out: cannot write t/tradeoff.svg: it is a folder");
+    expectRefused("sweep shadow --param offset_scale=0:2:2 --size 32x24 --out s", "--out: cannot write s/sweep.png");
+    expectRefused("sweep shadow --param offset_scale=0:2:2 --size 32x24 --out s2", "--out: cannot write s2/sweep.md");
+    // A shard draws no chart: its sweep.png may stay a folder.
+    CHECK(runCli(cwd, "sweep shadow --param offset_scale=0:2:2 --size 32x24 --shard 1/2 --out s --check").status == 0);
+    // The dump's names are the scene's targets: checked once rendered, before --out's PNG.
+    expectRefused("render hdr --size 32x24 --dump d --out d/x.png --quiet", "--dump: cannot write d/hdr_depth.exr");
+    CHECK_FALSE(fs::exists(cwd / "d" / "x.png"));
+    CHECK_FALSE(fs::exists(cwd / "d" / "hdr_scene.png"));
   }
 
   TEST_CASE("render writes PNG only under a .png name") {

@@ -82,14 +82,10 @@ Side renderInChild(const Frame& frame, const std::string& driver) {
   if (!frame.quiet)
     std::cerr << "starting a child process for " << driver << " (GALLIUM_DRIVER=" << driver << ") ..."
             << std::endl;
-  args[0] = "/proc/self/exe";
   ChildOptions options;
   options.setEnvironment = {"GALLIUM_DRIVER=" + driver};
-  const std::string what = "the " + driver + " render (child process)";
-  const int status = runChildProcess(args, what, options);
-  // Its failure is ours: bad input stays bad input (2), anything else is internal (1).
-  if (status == 2) throw UsageError(what + " failed with exit status 2");
-  if (status != 0) throw std::runtime_error(what + " failed with exit status " + std::to_string(status));
+  // Its failure is ours, in one line with its reason: bad input stays bad input (2).
+  runThisProgram(args, "the " + driver + " render (child process)", options);
   return {driver, compare::loadTargetDump(dump.path)};
 }
 

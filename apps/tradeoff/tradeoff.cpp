@@ -106,9 +106,7 @@ std::pair<double, double> timeSoftpipe(const Frame& frame, int threads, int fram
   args.insert(args.end(), frameOptions.begin(), frameOptions.end());
   if (frame.quiet) args.push_back("--quiet");
   else std::cerr << "  softpipe: timing it in a child process (" << frames << " frames) ..." << std::endl;
-  args[0] = "/proc/self/exe";
-  if (runChildProcess(args, "the softpipe timing child (raster bench --gl-driver softpipe)") != 0)
-    throw std::runtime_error("the softpipe timing child (raster bench --gl-driver softpipe) failed");
+  runThisProgram(args, "the softpipe timing child (raster bench --gl-driver softpipe)");
   std::ifstream in(jsonPath);
   const json report = json::parse(in);
   double softpipe = 0, gl = 0;

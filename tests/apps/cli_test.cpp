@@ -316,6 +316,29 @@ TEST_SUITE("cli") {
     CHECK(same.out.find("differs most") == std::string::npos);
   }
 
+  // The softpipe side renders in a child process of this program; when the child refuses
+  // (here: the memory cap it is handed, half of what is left of ours), the user gets one
+  // error line, ours, carrying the child's reason, and the child's progress as it came.
+  TEST_CASE("a child process's refusal ends the run in one line that gives the child's reason") {
+    TempFolder temp;
+    for (const bool quiet : {true, false}) {
+      const RunResult run =
+          runCli(temp.path, std::string("compare shadow --test softpipe --size 32x24 --max-memory 10M") + (quiet ? " --quiet" : ""));
+      CAPTURE(run.err);
+      CHECK(run.status == 2);
+      const size_t error = run.err.find("raster: ");
+      REQUIRE(error != std::string::npos);
+      CHECK(run.err.substr(error).rfind("raster: the softpipe render (child process) failed with exit status 2: memory: "
+                                        "reading back a 1024x1024 depth target from GL needs 4.0 MiB",
+                                        0) == 0);
+      CHECK(run.err.find("raster: ", error + 1) == std::string::npos);
+      CHECK(run.err.back() == '\n');
+      CHECK(std::count(run.err.begin() + long(error), run.err.end(), '\n') == 1);
+      CHECK((run.err.find("rendering shadow with softpipe") != std::string::npos) == !quiet);
+      CHECK_FALSE(fs::exists(temp.path / "compare-shadow"));
+    }
+  }
+
   TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {
     expectRefused("tradeoff " + aScene());
     expectRefused("tradeoff " + aScene() + " --out /nonexistent/dir/t");

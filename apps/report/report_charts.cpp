@@ -17,10 +17,18 @@ std::vector<ChartResult> findChartResults(const std::vector<std::string>& includ
   std::vector<ChartResult> found;
   for (const std::string& include : includes) {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::recursive_directory_iterator(include, fs::directory_options::skip_permission_denied)) {
-      const std::string name = entry.path().filename().string();
-      if (entry.is_regular_file() && (name == "tradeoff.json" || name == "sweep.json")) files.push_back(entry.path());
+    // A folder this user may not enter is passed over, and so is an entry of the right name
+    // whose status cannot be read (a link into such a folder): neither holds a result. What
+    // stops the walk itself (a folder removed meanwhile) is named, as bad input.
+    std::error_code error;
+    fs::recursive_directory_iterator entry(include, fs::directory_options::skip_permission_denied, error);
+    for (; !error && entry != fs::recursive_directory_iterator(); entry.increment(error)) {
+      const std::string name = entry->path().filename().string();
+      std::error_code unreadable;
+      if ((name == "tradeoff.json" || name == "sweep.json") && entry->is_regular_file(unreadable))
+        files.push_back(entry->path());
     }
+    if (error) throw cli::UsageError("--include: cannot search " + include + ": " + error.message());
     std::sort(files.begin(), files.end());   // the same order on every machine
     for (const fs::path& file : files) {
       const fs::path relative = fs::relative(file.parent_path(), include);

@@ -87,6 +87,19 @@ TEST_CASE("report: bad input exits 2 with one line before anything renders") {
   }
 }
 
+// What --include's search cannot read holds no result: passed over, as a folder it may not
+// enter is. (A link that loops had made the status call throw: exit 1 with a bare
+// "filesystem error".)
+TEST_CASE("report: an entry under --include whose status cannot be read is passed over") {
+  TempFolder temp;
+  fs::create_directories(temp.path / "inc" / "one");
+  fs::create_symlink("sweep.json", temp.path / "inc" / "one" / "sweep.json");   // loops
+  const RunResult result =
+      runCli(temp.path, "report shadow --size 16x12 --pixels 0 --include inc --no-default-include --quiet --out r");
+  REQUIRE_MESSAGE(result.status == 0, result.err);
+  CHECK(readText(temp.path / "r" / "index.html").find("No tradeoff.json or sweep.json") != std::string::npos);
+}
+
 TEST_CASE("report: every target's images and metrics; a second run replaces the first whole") {
   TempFolder temp;
   const std::string command = "report shadow --size 32x24 --pixels 1 --threads 2 --no-default-include --quiet --out r";

@@ -175,8 +175,7 @@ Frame validateFrame(const FrameArgs& args) {
                      std::to_string(kMaxInstances) + ")");
   frame.instances = args.instances;
 
-  if (!args.assets.empty() && !fs::is_directory(args.assets))
-    throw UsageError("--assets: no such folder: " + args.assets);
+  if (!args.assets.empty()) requireFolder("--assets", args.assets);
   frame.assets = args.assets;
 
   // --set NAME=VALUE, after the options whose defaults it may replace (time, size,
@@ -267,6 +266,15 @@ void checkOutputPng(const std::string& option, const std::string& path) {
     throw UsageError(option + ": " + path + " is written as PNG; give it a name ending in .png");
 }
 
+void requireFolder(const std::string& option, const std::string& path) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) return;
+  // A status that cannot be read (a link that loops, a folder on the way this user may not
+  // enter) is named with its reason, not thrown as a bare filesystem error.
+  const bool missing = !error || error == std::errc::no_such_file_or_directory || error == std::errc::not_a_directory;
+  throw UsageError(option + (missing ? ": no such folder: " + path : ": " + path + ": " + error.message()));
+}
+
 void checkOutputFolder(const std::string& option, const std::string& path) {
   if (path.empty()) throw UsageError(option + ": names no folder");
   try {
@@ -283,6 +291,10 @@ void checkOutputFolder(const std::string& option, const std::string& path) {
       throw UsageError(option + ": " + path + " is not a writable folder");
     return;
   }
+  // Not there, or its status unreadable (a link that loops): a name that cannot be made.
+  if (error) throw UsageError(option + ": " + path + ": " + error.message());
+  if (fs::is_symlink(fs::symlink_status(folder, error)))
+    throw UsageError(option + ": " + path + " is a symbolic link to nothing; name a folder");
   const fs::path parent = folder.has_parent_path() ? folder.parent_path() : fs::path(".");
   if (!writableFolder(parent))
     throw UsageError(option + ": cannot create " + path + " (" + parent.string() +

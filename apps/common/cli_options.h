@@ -116,6 +116,9 @@ void checkOutputFile(const std::string& option, const std::string& path);
 // checkOutputFile for a PNG: the name must also end in .png, so that a y.jpg is not given PNG
 // bytes under another format's name.
 void checkOutputPng(const std::string& option, const std::string& path);
+// Checks that `path` is an existing folder (or a link to one): else UsageError, "OPTION: no
+// such folder: PATH", or the reason its status cannot be read.
+void requireFolder(const std::string& option, const std::string& path);
 // Checks that `path` is a writable folder, or can be made in an existing writable folder.
 void checkOutputFolder(const std::string& option, const std::string& path);
 // checkOutputFolder, then, where the folder exists, each of `files` in it as the writer will

@@ -58,13 +58,14 @@ ReportPlan planReport(const ReportArgs& args) {
   if (args.pixels < 0 || args.pixels > kMaxPixels)
     throw UsageError("--pixels: " + std::to_string(args.pixels) + " is out of range (0.." + std::to_string(kMaxPixels) + ")");
   for (const std::string& include : args.include) {
-    if (!fs::is_directory(include)) throw UsageError("--include: no such folder: " + include);
+    requireFolder("--include", include);
     plan.includes.push_back(include);
   }
   if (!args.noDefaultInclude) {
     const char* sourceDir = std::getenv("RASTER_SOURCE_DIR");
     const fs::path docs = fs::path(sourceDir ? sourceDir : RASTER_SOURCE_DIR) / "docs";
-    if (fs::is_directory(docs)) plan.includes.push_back(docs.string());
+    std::error_code unreadable;   // the repository's docs/, where it can be read; else none
+    if (fs::is_directory(docs, unreadable)) plan.includes.push_back(docs.string());
   }
   report::checkReportFolder(args.out);
   scenes::checkGalliumEnvironment();

@@ -117,6 +117,21 @@ TEST_SUITE("hostile") {
     expectBadInput("exec \"$RASTER\" compare shadow --size 16x12 --out " + longName, "is longer than 255 bytes");
   }
 
+  // A link that loops, or points at nothing, where a folder is asked for: found by the status
+  // call that the checks made without an error code (exit 1, a bare "filesystem error"), and
+  // for sweep and tradeoff only at the end, when the folder was made after the work.
+  TEST_CASE("paths: a link that loops or points at nothing, given as a folder, is refused before the run") {
+    const std::string loop = "ln -s loop ../loop && ln -s ../nothing ../dangling && exec \"$RASTER\" ";
+    expectBadInput(loop + "render shadow --size 16x12 --out ../a.png --dump ../loop", "--dump: ../loop: Too many levels");
+    expectBadInput(loop + "compare shadow --size 16x12 --out ../loop", "--out: ../loop: Too many levels");
+    expectBadInput(loop + "sweep shadow --param time=1:2:2 --size 16x12 --out ../loop", "--out: ../loop: Too many levels");
+    expectBadInput(loop + "tradeoff shadow --size 16x12 --out ../loop", "--out: ../loop: Too many levels");
+    expectBadInput(loop + "render shadow --size 16x12 --out ../a.png --assets ../loop", "--assets: ../loop: Too many levels");
+    expectBadInput(loop + "report shadow --size 16x12 --include ../loop --out ../r", "--include: ../loop: Too many levels");
+    expectBadInput(loop + "compare shadow --size 16x12 --out ../dangling", "--out: ../dangling is a symbolic link to nothing");
+    expectBadInput(loop + "render shadow --size 16x12 --out ../a.png --assets ../dangling", "--assets: no such folder: ../dangling");
+  }
+
   // With an interpreter that exits 0 and draws nothing, tradeoff said it wrote its chart.
   TEST_CASE("output: a chart script that writes no chart is a failure") {
     TempFolder temp;

@@ -39,7 +39,9 @@ std::string chartScript(const std::string& script) {
 }
 
 void checkChartTools(const std::string& script) {
-  if (!fs::exists(chartScript(script))) throw std::runtime_error("the chart script is missing: " + chartScript(script));
+  std::error_code unreadable;   // a status that cannot be read (a link that loops) is a missing script too
+  if (!fs::is_regular_file(chartScript(script), unreadable))
+    throw std::runtime_error("the chart script is missing: " + chartScript(script));
   if (runPython({"-c", "import matplotlib"}) != 0)
     throw std::runtime_error(python() + " cannot import matplotlib, which draws the chart "
                              "(Debian: python3-matplotlib, which ./setup.sh installs; or set RASTER_PYTHON)");

@@ -121,7 +121,7 @@ TEST_SUITE("hostile") {
   // call that the checks made without an error code (exit 1, a bare "filesystem error"), and
   // for sweep and tradeoff only at the end, when the folder was made after the work.
   TEST_CASE("paths: a link that loops or points at nothing, given as a folder, is refused before the run") {
-    const std::string loop = "ln -s loop ../loop && ln -s ../nothing ../dangling && exec \"$RASTER\" ";
+    const std::string loop = "ln -s loop ../loop && ln -s nothing-here ../dangling && exec \"$RASTER\" ";
     expectBadInput(loop + "render shadow --size 16x12 --out ../a.png --dump ../loop", "--dump: ../loop: Too many levels");
     expectBadInput(loop + "compare shadow --size 16x12 --out ../loop", "--out: ../loop: Too many levels");
     expectBadInput(loop + "sweep shadow --param time=1:2:2 --size 16x12 --out ../loop", "--out: ../loop: Too many levels");

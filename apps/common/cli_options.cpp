@@ -64,6 +64,16 @@ std::optional<uint64_t> parseUnsigned(const std::string& text) {
   return value;
 }
 
+// compare::checkOutputPath (the writer's own rules: a regular file or nothing), its refusal
+// bad input named by the option that gave the path.
+void checkOutputPathOf(const std::string& option, const std::string& path) {
+  try {
+    compare::checkOutputPath(path);
+  } catch (const compare::OutputPathError& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 // Whether this process can make a file in `folder`, tried rather than predicted: for root,
@@ -248,11 +258,7 @@ void checkOutputFile(const std::string& option, const std::string& path) {
   const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   if (path.empty() || !file.has_filename())
     throw UsageError(option + ": '" + path + "' names no file");
-  try {
-    compare::checkOutputPath(path);   // the writer's own rules: a regular file or nothing
-  } catch (const compare::OutputPathError& e) {
-    throw UsageError(option + ": " + e.what());
-  }
+  checkOutputPathOf(option, path);
   if (!writableFolder(folder))
     throw UsageError(option + ": cannot write into " + folder.string() +
                      " (no such folder, or not writable)");
@@ -305,13 +311,7 @@ void checkOutputFolder(const std::string& option, const std::string& path, const
   checkOutputFolder(option, path);
   std::error_code error;
   if (!fs::is_directory(path, error)) return;   // to be made: nothing in it yet
-  for (const std::string& file : files) {
-    try {
-      compare::checkOutputPath((fs::path(path) / file).string());
-    } catch (const compare::OutputPathError& e) {
-      throw UsageError(option + ": " + e.what());
-    }
-  }
+  for (const std::string& file : files) checkOutputPathOf(option, (fs::path(path) / file).string());
 }
 
 }  // namespace cli

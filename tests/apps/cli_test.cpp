@@ -316,29 +316,6 @@ TEST_SUITE("cli") {
     CHECK(same.out.find("differs most") == std::string::npos);
   }
 
-  // The softpipe side renders in a child process of this program; when the child refuses
-  // (here: the memory cap it is handed, half of what is left of ours), the user gets one
-  // error line, ours, carrying the child's reason, and the child's progress as it came.
-  TEST_CASE("a child process's refusal ends the run in one line that gives the child's reason") {
-    TempFolder temp;
-    for (const bool quiet : {true, false}) {
-      const RunResult run =
-          runCli(temp.path, std::string("compare shadow --test softpipe --size 32x24 --max-memory 10M") + (quiet ? " --quiet" : ""));
-      CAPTURE(run.err);
-      CHECK(run.status == 2);
-      const size_t error = run.err.find("raster: ");
-      REQUIRE(error != std::string::npos);
-      CHECK(run.err.substr(error).rfind("raster: the softpipe render (child process) failed with exit status 2: memory: "
-                                        "reading back a 1024x1024 depth target from GL needs 4.0 MiB",
-                                        0) == 0);
-      CHECK(run.err.find("raster: ", error + 1) == std::string::npos);
-      CHECK(run.err.back() == '\n');
-      CHECK(std::count(run.err.begin() + long(error), run.err.end(), '\n') == 1);
-      CHECK((run.err.find("rendering shadow with softpipe") != std::string::npos) == !quiet);
-      CHECK_FALSE(fs::exists(temp.path / "compare-shadow"));
-    }
-  }
-
   TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {
     expectRefused("tradeoff " + aScene());
     expectRefused("tradeoff " + aScene() + " --out /nonexistent/dir/t");
@@ -414,31 +391,6 @@ TEST_SUITE("cli") {
     // A file where a folder is asked for says so.
     expectRefused("render " + aScene() + " --dump /etc/passwd", "/etc/passwd is a file, not a folder");
     expectRefused("compare " + aScene() + " --out /etc/passwd", "/etc/passwd is a file, not a folder");
-  }
-
-  // A name in an existing --out folder that a folder or link took is found before the work
-  // (a race, a sweep), not after it with half the files written.
-  TEST_CASE("a file name taken in the --out folder is refused before the work, nothing written") {
-    TempFolder temp;
-    const fs::path cwd = temp.path / "cwd";
-    for (const char* taken : {"t/tradeoff.svg", "s/sweep.png", "d/hdr_depth.exr"}) fs::create_directories(cwd / taken);
-    fs::create_directory(cwd / "s2");
-    fs::create_directory_symlink("/tmp", cwd / "s2" / "sweep.md");
-    const auto expectRefused = [&](const std::string& args, const std::string& says) {
-      const RunResult result = runCli(cwd, args);
-      INFO("raster " << args << "\nstderr: " << result.err);
-      CHECK(result.status == 2);
-      CHECK(result.err.rfind("raster: " + says, 0) == 0);
-    };
-    expectRefused("tradeoff shadow --size 32x24 --out t", "--out: cannot write t/tradeoff.svg: it is a folder");
-    expectRefused("sweep shadow --param offset_scale=0:2:2 --size 32x24 --out s", "--out: cannot write s/sweep.png");
-    expectRefused("sweep shadow --param offset_scale=0:2:2 --size 32x24 --out s2", "--out: cannot write s2/sweep.md");
-    // A shard draws no chart: its sweep.png may stay a folder.
-    CHECK(runCli(cwd, "sweep shadow --param offset_scale=0:2:2 --size 32x24 --shard 1/2 --out s --check").status == 0);
-    // The dump's names are the scene's targets: checked once rendered, before --out's PNG.
-    expectRefused("render hdr --size 32x24 --dump d --out d/x.png --quiet", "--dump: cannot write d/hdr_depth.exr");
-    CHECK_FALSE(fs::exists(cwd / "d" / "x.png"));
-    CHECK_FALSE(fs::exists(cwd / "d" / "hdr_scene.png"));
   }
 
   TEST_CASE("render writes PNG only under a .png name") {

@@ -2,9 +2,8 @@
 //
 // Bad input must fail fast and cleanly: exit status 2, one "raster: ..." line on stderr, and
 // no file written. These run the built executable (RASTER_CLI_PATH) in an empty temporary
-// folder and look at what it leaves. The metric checks pin down the units the
-// comparison reports (8-bit steps, depth LSBs, half ULPs); tests/compare checks that dumps
-// load back exactly.
+// folder and look at what it leaves. The units the comparison reports (8-bit steps, depth
+// LSBs, half and float ULPs) are pinned by tests/compare/metrics_test.cpp.
 #include <doctest/doctest.h>
 
 #include <sys/wait.h>
@@ -30,43 +29,16 @@
 #include "raster/methods.h"
 #include "scenes/registry.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/compare/test_images.h"
 #include "tests/scene_test_helpers.h"
 
 namespace {
 
 using namespace cli_test;
 using scenes::ImageData;
-using scenes::TexelFormat;
+using test_images::rgba8Image;
 
 std::string aScene() { return scenes::sceneNames().front(); }
-
-ImageData rgba8Image(int width, int height, uint8_t value) {
-  ImageData image;
-  image.width = width;
-  image.height = height;
-  image.format = TexelFormat::RGBA8;
-  image.rgba8.assign(size_t(width) * height * 4, value);
-  return image;
-}
-
-ImageData depthImage(int width, int height, std::vector<uint32_t> codes) {
-  ImageData image;
-  image.width = width;
-  image.height = height;
-  image.channels = 1;
-  image.format = TexelFormat::Depth24;
-  image.depthBits = 24;
-  image.depth = std::move(codes);
-  return image;
-}
-
-// The value of a half bit pattern, decoded independently of compare::halfBits.
-float halfValue(uint16_t bits) {
-  const int exponent = (bits >> 10) & 0x1f, mantissa = bits & 0x3ff;
-  const float magnitude = exponent == 0 ? std::ldexp(float(mantissa), -24)
-                                        : std::ldexp(float(mantissa | 0x400), exponent - 25);
-  return (bits & 0x8000) ? -magnitude : magnitude;
-}
 
 }  // namespace
 
@@ -400,79 +372,6 @@ TEST_SUITE("cli") {
     TempFolder temp;
     REQUIRE(runCli(temp.path, "render " + aScene() + " --size 8x6 --quiet --out X.PNG").status == 0);
     CHECK(fs::file_size(temp.path / "X.PNG") > 0);
-  }
-
-  TEST_CASE("identical images: no difference, infinite PSNR") {
-    const compare::TargetStats s = compare::compareImages("t", rgba8Image(4, 4, 7), rgba8Image(4, 4, 7));
-    CHECK(s.kind == "rgba8");
-    CHECK(s.maxAbs == 0);
-    CHECK(s.rmse == 0);
-    CHECK(std::isinf(s.psnr));
-    CHECK(s.shareDiffering == 0);
-    CHECK(s.shareBitIdentical == 1);
-    CHECK(compare::formatStatsLine(s).find("inf") != std::string::npos);
-  }
-
-  TEST_CASE("one step in one pixel counts as one differing pixel, none over 1") {
-    const ImageData a = rgba8Image(4, 4, 100);
-    ImageData b = a;
-    b.rgba8[5 * 4 + 2] = 101;
-    const compare::TargetStats s = compare::compareImages("t", a, b);
-    CHECK(s.maxAbs == 1);
-    CHECK(s.shareDiffering == doctest::Approx(1.0 / 16));
-    CHECK(s.shareOver1 == 0);
-    CHECK(s.rmse == doctest::Approx(std::sqrt(1.0 / 64)));
-    CHECK(compare::pixelDifference(a, b, 5) == 1);
-  }
-
-  TEST_CASE("depth differences are counted in LSBs") {
-    const ImageData a = depthImage(2, 1, {1000, 2000});
-    const compare::TargetStats s = compare::compareImages("d", a, depthImage(2, 1, {1000, 2003}));
-    CHECK(s.kind == "depth");
-    CHECK(s.depthTexelsDiffering == 1);
-    CHECK(s.maxDepthLsb == 3);
-    CHECK(s.shareOver1 == doctest::Approx(0.5));
-    CHECK(s.shareOver4 == 0);
-  }
-
-  TEST_CASE("half ULPs: +0 and -0 are 0 apart, 1.0 and the next half 1") {
-    CHECK(compare::halfUlpDistance(compare::halfBits(0.0f), compare::halfBits(-0.0f)) == 0);
-    CHECK(compare::halfUlpDistance(0x0001, 0x8001) == 2);   // across zero
-    const float nextAfterOne = 1.0f + 1.0f / 1024;          // 0x3c01
-    CHECK(compare::halfBits(nextAfterOne) == 0x3c01);
-    const compare::TargetStats s = compare::compareImages(
-        "h", halfImage({0.0f, 1.0f, 0.5f, 1.0f}), halfImage({-0.0f, nextAfterOne, 0.5f, 1.0f}));
-    CHECK(s.kind == "half");
-    CHECK(s.maxUlps == 1);
-    CHECK(s.shareBitIdentical == 0);
-    CHECK(compare::compareImages("z", halfImage({0, 0, 0, 1}), halfImage({-0.0f, 0, 0, 1})).maxUlps == 0);
-  }
-
-  // --float-final's targets: one float step must show, which half ULPs would round away.
-  TEST_CASE("float ULPs: RGBA32F targets are measured in float32 steps, not half") {
-    ImageData a = halfImage({0.0f, 1.0f, 0.5f, std::nanf("")}), b = halfImage({-0.0f, std::nextafter(1.0f, 2.0f), 0.5f, std::nanf("")});
-    a.format = b.format = TexelFormat::RGBA32F;
-    const compare::TargetStats s = compare::compareImages("f", a, b);
-    CHECK(s.kind == "float");
-    CHECK(s.maxUlps == 1);
-    CHECK(s.shareBitIdentical == 0);
-    CHECK(s.nonFinitePixels == 1);
-    CHECK(compare::floatUlpDistance(compare::floatBits(0.0f), compare::floatBits(-0.0f)) == 0);
-    CHECK(compare::floatBits(std::nanf("")) == compare::floatBits(std::nanf("1")));
-    CHECK(compare::formatStatsLine(s).find("float") != std::string::npos);
-    // The same pair as half targets: one float step is no half ULP.
-    a.format = b.format = TexelFormat::RGBA16F;
-    CHECK(compare::compareImages("h", a, b).maxUlps == 0);
-  }
-
-  TEST_CASE("halfBits rounds every half value back to its own bits") {
-    for (uint32_t bits = 0; bits <= 0xffff; ++bits) {
-      if ((bits & 0x7c00) == 0x7c00 && (bits & 0x3ff)) continue;   // NaNs have no single pattern
-      const uint16_t half = uint16_t(bits);
-      if (compare::halfBits(halfValue(half)) != half) FAIL("half 0x" << std::hex << bits);
-    }
-    CHECK(compare::halfBits(65519.0f) == 0x7bff);   // rounds down to the largest half
-    CHECK(compare::halfBits(65520.0f) == 0x7c00);   // rounds up to infinity
   }
 
   TEST_CASE("render --dump: a PNG per target, and OpenEXR files for depth and float ones that exrheader reads") {

@@ -27,16 +27,6 @@ struct TempFolder : testing_support::TempFolder {
   TempFolder() : testing_support::TempFolder("raster-cli-test") {}
 };
 
-// A one-row RGBA16F image of these values, four to a pixel (for the float comparisons).
-inline scenes::ImageData halfImage(std::vector<float> rgba) {
-  scenes::ImageData image;
-  image.width = int(rgba.size() / 4);
-  image.height = 1;
-  image.format = scenes::TexelFormat::RGBA16F;
-  image.floats = std::move(rgba);
-  return image;
-}
-
 struct RunResult {
   int status = -1;   // the exit status, or -1 when a signal ended it (then `signal` says which)
   int signal = 0;

@@ -10,10 +10,12 @@
 
 #include "compare/metrics.h"
 #include "tests/apps/cli_test_helpers.h"
+#include "tests/compare/test_images.h"
 
 namespace {
 
 using namespace cli_test;
+using test_images::halfImage;
 
 void expectBadInput(const std::string& script, const std::string& needle) {
   TempFolder temp;

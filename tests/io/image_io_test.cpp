@@ -27,6 +27,7 @@
 #include "io/image_io.h"
 #include "io/target_dump.h"
 #include "raster/texture/format.h"
+#include "tests/compare/test_images.h"
 #include "tests/scene_test_helpers.h"
 #include "tests/temp_folder.h"
 
@@ -36,6 +37,7 @@ namespace fs = std::filesystem;
 using scenes::ImageData;
 using scenes::Target;
 using scenes::TexelFormat;
+using test_images::depthImage;
 
 using testing_support::readBytes;
 using testing_support::writeBytes;
@@ -52,17 +54,6 @@ bool sameImage(const ImageData& a, const ImageData& b) {
   return a.width == b.width && a.height == b.height && a.channels == b.channels && a.format == b.format &&
          a.depthBits == b.depthBits && sameBytes(a.rgba8, b.rgba8) && sameBytes(a.floats, b.floats) &&
          sameBytes(a.depth, b.depth);
-}
-
-ImageData depthImage(int width, int height, int bits, std::vector<uint32_t> codes) {
-  ImageData image;
-  image.width = width;
-  image.height = height;
-  image.channels = 1;
-  image.format = bits == 16 ? TexelFormat::Depth16 : TexelFormat::Depth24;
-  image.depthBits = bits;
-  image.depth = std::move(codes);
-  return image;
 }
 
 ImageData floatImage(int width, int height, TexelFormat format, std::vector<float> values) {

@@ -3,7 +3,9 @@
 scene parameters that no test names, every target required bit for bit (`max 0`).
 
 Each frame draws a scene (every scene of `raster scenes` by default), a time in
-[0, --max-time] (three decimals), a size up to --max-size, a thread count from --threads,
+[0, --max-time] (three decimals; with --time-spread log, its magnitude log-uniform from 1e-3
+to --max-time, six significant digits, so that --max-time 1e30 reaches every decade of
+`raster`'s range and not only its last), a size up to --max-size, a thread count from --threads,
 --float-final with probability --float-final, --scalar (this pipeline's plain lanes: the
 readable instantiation of every port, the SIMD paths off) with probability --scalar, and
 with probability --params one of the scene's own parameters (`raster params SCENE`; with
@@ -31,7 +33,7 @@ below), failed or ran past --timeout, 2 for bad arguments.
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]
-                              [--min-size 1x1] [--float-final 0.5] [--params 0.5]
+                              [--time-spread uniform|log] [--min-size 1x1] [--float-final 0.5] [--params 0.5]
                               [--max-params 1] [--scalar 0] [--preset gl --min-psnr DB]
                               [--timeout 600]
                               [--raster build/raster] [--json FILE] [--quiet]
@@ -73,6 +75,8 @@ def parse_args(argv):
     parser.add_argument("--max-size", default="720x480", help="largest WxH drawn (default 720x480)")
     parser.add_argument("--min-size", default="1x1", help="smallest WxH drawn (default 1x1)")
     parser.add_argument("--max-time", type=float, default=30.0, help="latest time drawn, seconds (default 30)")
+    parser.add_argument("--time-spread", choices=("uniform", "log"), default="uniform",
+                        help="how times are drawn: uniform in [0, --max-time], or log-uniform in magnitude (default uniform)")
     parser.add_argument("--float-final", type=float, default=0.5, help="share of frames with --float-final (default 0.5)")
     parser.add_argument("--params", type=float, default=0.5, help="share of frames that set a scene parameter (default 0.5)")
     parser.add_argument("--scalar", type=float, default=0.0,
@@ -148,11 +152,21 @@ def parameter_value(rng, param):
     return round(value) if param.get("integer") else float(f"{value:.6g}")
 
 
+def draw_time(rng, args):
+    """A time in [0, --max-time]: uniform (three decimals), or with --time-spread log its
+    magnitude log-uniform from 1e-3 (or --max-time, if smaller) to --max-time."""
+    if args.time_spread == "uniform" or args.max_time <= 0:
+        return round(rng.uniform(0, args.max_time), 3)
+    bottom = min(1e-3, args.max_time)
+    value = math.exp(rng.uniform(math.log(bottom), math.log(args.max_time)))
+    return min(float(f"{value:.6g}"), args.max_time)
+
+
 def draw_frame(rng, args):
     """One frame's compare arguments, and what was drawn."""
     scene = rng.choice(sorted(args.rows))
     (width_min, height_min), (width_max, height_max) = args.size_bounds
-    frame = {"scene": scene, "time": round(rng.uniform(0, args.max_time), 3),
+    frame = {"scene": scene, "time": draw_time(rng, args),
              "size": f"{rng.randint(width_min, width_max)}x{rng.randint(height_min, height_max)}",
              "threads": rng.choice(args.threads), "float_final": rng.random() < args.float_final, "set": {}}
     params = [p for p in args.rows[scene].get("params", []) if p["name"] not in ("time", "size")]
@@ -252,6 +266,7 @@ def main(argv):
     if args.json:
         summary = {"seed": args.seed, "raster": os.path.abspath(args.raster), "threads": args.threads,
                    "min_size": args.min_size, "max_size": args.max_size, "max_time": args.max_time,
+                   "time_spread": args.time_spread,
                    "preset": args.preset, "min_psnr_db": args.min_psnr, "counts": counts, "frames": frames}
         write_text_atomically(json.dumps(summary, indent=1) + "\n", args.json)
     return 1 if any(counts.get(status) for status in NOT_SAME) else 0

@@ -14,6 +14,7 @@ import contextlib
 import glob
 import io
 import json
+import math
 import os
 import re
 import shlex
@@ -420,6 +421,18 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     check(done.returncode == 0 and min(counts) >= 1 and max(counts) == 3 and 2 in counts,
           f"random_frames.py --max-params 3: exit {done.returncode}, parameters a frame {counts}")
     check(0 < sum(fr["scalar"] for fr in drawn) < 30, f"random_frames.py --scalar 0.5: {[fr.get('scalar') for fr in drawn]}")
+    # --time-spread log: times across the decades up to --max-time, where uniform draws put
+    # nearly all of them in its last two.
+    decades = {}
+    for spread in ("uniform", "log"):
+        done = run("random_frames.py", "--raster", fake, "--frames", "40", "--scenes", "shadow", "--max-time", "1e30",
+                   "--time-spread", spread, "--json", frames_json, "--quiet")
+        with open(frames_json) as f:
+            times = [fr["time"] for fr in json.load(f)["frames"]]
+        check(done.returncode == 0 and all(0 <= t <= 1e30 for t in times), f"random_frames.py --time-spread {spread}: {times}")
+        decades[spread] = {math.floor(math.log10(t)) for t in times if t > 0}
+    check(len(decades["uniform"]) <= 4 and len(decades["log"]) >= 15 and min(decades["log"]) < 0,
+          f"random_frames.py --time-spread: decades drawn {decades}")
     with open(fake, "w") as f:   # a difference: its reproducing line carries --scalar
         f.write(f'#!/bin/sh\nif [ "$1" = compare ]; then {numbers}; exit 0; fi\nexec {shlex.quote(raster)} "$@"\n')
     done = run("random_frames.py", "--raster", fake, "--frames", "1", "--scalar", "1", "--quiet")

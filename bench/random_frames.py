@@ -5,16 +5,16 @@ scene parameters that no test names, every target required bit for bit (`max 0`)
 Each frame draws a scene (every scene of `raster scenes` by default), a time in
 [0, --max-time] (three decimals; with --time-spread log, its magnitude log-uniform from 1e-3
 to --max-time, six significant digits, so that --max-time 1e30 reaches every decade of
-`raster`'s range and not only its last), a size up to --max-size, a thread count from --threads,
---float-final with probability --float-final, --scalar (this pipeline's plain lanes: the
-readable instantiation of every port, the SIMD paths off) with probability --scalar, and
-with probability --params one of the scene's own parameters (`raster params SCENE`; with
---max-params K, 1 to K distinct ones, so that parameters meet: a near plane of 1e-7 far from
-the origin) at a random value of its range: uniform where the range spans at most three
-decades, else its magnitude log-uniform up to the range's end (so 1e-3 to 1e20 for a world
-offset, either sign). A frame raster refuses (exit 2: a value another parameter rules out,
-such as a cascade split past the next) is counted as refused.
-A frame that differs prints the `raster compare` line that shows it again.
+`raster`'s range and not only its last two), a size up to --max-size, a thread count from
+--threads, --float-final with probability --float-final, --scalar (this pipeline's plain
+lanes: the readable instantiation of every port, the SIMD paths off) with probability
+--scalar, and with probability --params one of the scene's own parameters (`raster params
+SCENE`; with --max-params K, 1 to K distinct ones, so that parameters meet: a near plane of
+1e-7 far from the origin) at a random value of its range: uniform where the range spans at
+most three decades, else its magnitude log-uniform up to the range's end (so 1e-3 to 1e20
+for a world offset, either sign). A frame raster refuses (exit 2: a value another parameter
+rules out, such as a cascade split past the next) is counted as refused. A frame that
+differs prints the `raster compare` line that shows it again.
 
 Presets: with --preset P (`raster methods` lists them and what each promises) the frames are
 drawn with that method set, and --min-psnr X states what each must hold instead of the bytes:
@@ -33,9 +33,9 @@ below), failed or ran past --timeout, 2 for bad arguments.
 
 Usage: bench/random_frames.py [--frames N | --minutes 10] [--seed 1] [--scenes NAME,...]
                               [--threads 1,2] [--max-size 720x480] [--max-time 30]
-                              [--time-spread uniform|log] [--min-size 1x1] [--float-final 0.5] [--params 0.5]
-                              [--max-params 1] [--scalar 0] [--preset gl --min-psnr DB]
-                              [--timeout 600]
+                              [--time-spread uniform|log] [--min-size 1x1]
+                              [--float-final 0.5] [--params 0.5] [--max-params 1]
+                              [--scalar 0] [--preset gl --min-psnr DB] [--timeout 600]
                               [--raster build/raster] [--json FILE] [--quiet]
 (Found, on 2026-12-06: deferred's denormals and pbr's smoothstep order, both fixed;
 docs/notes/2026-12-06-random-frames-denormals-and-smoothstep.md.)

@@ -288,6 +288,31 @@ TEST_SUITE("cli") {
     CHECK(same.out.find("differs most") == std::string::npos);
   }
 
+  // The program as built, every target of every scene against llvmpipe. The pipeline's own
+  // suites (scene_*, determinism) check the same bytes inside raster_tests, whose sources
+  // compile at -O1 in an optimized build (CMakeLists.txt): a header's inline function that a
+  // test source instantiates too may be linked from that copy there. This case runs the
+  // `raster` of the build, every function at the build's level, as ./demo.sh does.
+  // 97x61: odd sizes, partial tiles at the right and bottom; two threads.
+  TEST_CASE("compare --exact: the built program renders every target of every scene as llvmpipe does") {
+    TempFolder temp;
+    const fs::path cwd = temp.path / "cwd";
+    fs::create_directory(cwd);
+    for (const std::string& scene : scenes::sceneNames()) {
+      CAPTURE(scene);
+      const RunResult run = runCli(cwd, "compare " + scene + " --size 97x61 --threads 2 --exact --quiet --out " + scene);
+      CHECK(run.status == 0);
+      const nlohmann::json json = nlohmann::json::parse(readText(cwd / scene / "compare.json"));
+      CHECK(json.at("failures").empty());
+      CHECK(json.at("targets").size() >= 2);
+      for (const nlohmann::json& target : json.at("targets")) {
+        CAPTURE(target.at("name"));
+        CHECK(target.at("max_in_unit") == 0);
+        CHECK(target.at("share_differing") == 0.0);
+      }
+    }
+  }
+
   TEST_CASE("tradeoff: refused before rendering without --out or with an unwritable one; else every file, complete") {
     expectRefused("tradeoff " + aScene());
     expectRefused("tradeoff " + aScene() + " --out /nonexistent/dir/t");

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets everything up (./setup.sh), then runs the whole test suite through ctest, then each
 # extra configuration CI checks (tests/configs/*.sh: each builds its own folder and runs
-# its part of the suite there). Each step's minutes are printed as it ends, and all of them
-# at the end (CONTRIBUTING.md quotes them).
+# its part of the suite there). Each step's minutes are printed as it ends, and all of them,
+# with the run's total, at the end (CONTRIBUTING.md quotes them).
 set -euo pipefail
 cd "$(dirname "$0")"
 timings=()
@@ -23,3 +23,4 @@ for config in tests/configs/*.sh; do
 done
 echo "== minutes per step:"
 printf '   %s\n' "${timings[@]}"
+echo "   total $(( SECONDS / 60 )) min $(( SECONDS % 60 )) s"

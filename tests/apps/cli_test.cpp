@@ -296,13 +296,11 @@ TEST_SUITE("cli") {
   // 97x61: odd sizes, partial tiles at the right and bottom; two threads.
   TEST_CASE("compare --exact: the built program renders every target of every scene as llvmpipe does") {
     TempFolder temp;
-    const fs::path cwd = temp.path / "cwd";
-    fs::create_directory(cwd);
     for (const std::string& scene : scenes::sceneNames()) {
       CAPTURE(scene);
-      const RunResult run = runCli(cwd, "compare " + scene + " --size 97x61 --threads 2 --exact --quiet --out " + scene);
+      const RunResult run = runCli(temp.path, "compare " + scene + " --size 97x61 --threads 2 --exact --quiet --out " + scene);
       CHECK(run.status == 0);
-      const nlohmann::json json = nlohmann::json::parse(readText(cwd / scene / "compare.json"));
+      const nlohmann::json json = nlohmann::json::parse(readText(temp.path / scene / "compare.json"));
       CHECK(json.at("failures").empty());
       CHECK(json.at("targets").size() >= 2);
       for (const nlohmann::json& target : json.at("targets")) {

@@ -202,6 +202,8 @@ struct TileJob {
   // 1x1 is GL's one shader invocation per pixel, anything larger is walked by
   // tile/coarse_tile.h. Each side divides a 16-row band and a tile.
   int coarseWidth = 1, coarseHeight = 1;
+  // Bit k: the framebuffer's colour attachment k is RGBA8 (FragmentOutput::unorm8Outputs).
+  unsigned unorm8Outputs = 0;
 };
 
 // A tile's pixel rectangle, inclusive, clipped to the framebuffer.
@@ -226,6 +228,13 @@ struct FragmentInput {
 template <class F>
 struct FragmentOutput {
   glsl::vec4<F> color[limits::kMaxColorOutputs];
+  // Bit k: colour output k goes to an RGBA8 target, which keeps only each channel's unorm8
+  // byte (merge/color_write.h, blended or not), so a port may hand it any value that
+  // provably converts to the same byte (merge/unorm8_within.h; docs/porting.md, section 5).
+  // 0 where the floats themselves are kept or recorded: float targets, pixel history's traced
+  // fragments.
+  unsigned unorm8Outputs = 0;
+  bool keepsUnorm8Only(int k) const { return (unorm8Outputs >> k & 1u) != 0; }
 };
 
 // A lane group that passed its depth test: everything its shader call and its output merge

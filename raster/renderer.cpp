@@ -334,6 +334,8 @@ void Renderer::flush() {
     job.timeStages = timeStages_;
     job.visibilityFirst = visibilityFirst();
     std::tie(job.coarseWidth, job.coarseHeight) = passShadingRate(draws_, framebuffer_);
+    for (size_t k = 0; k < framebuffer_.colors.size(); ++k)
+      if (framebuffer_.colors[k]->format == TexelFormat::RGBA8) job.unorm8Outputs |= 1u << k;
     const bool coarse = job.coarseWidth > 1 || job.coarseHeight > 1;
     // Streaming stores skip the read for ownership but leave nothing in cache, and wait to
     // reach memory: targets that fit the threads' caches stay there until the next frame's

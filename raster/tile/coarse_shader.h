@@ -79,6 +79,7 @@ void shadeCoarseGroup(const TileJob& job, const CoarseLayout<F>& coarse, CoarseG
   interpolateGroup(job, g.group);   // counted as rasterization, as in the 1x1 walk
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<F> out;
+  out.unorm8Outputs = job.unorm8Outputs;
   g.group.draw->shader->shadeFragments(g.group.in, g.group.varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;

@@ -21,6 +21,7 @@ namespace raster {
   interpolatePair(job, a.group, b.group, in, varyings);   // counted as rasterization
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<Float8x2> out;
+  out.unorm8Outputs = job.unorm8Outputs;
   a.group.draw->shader->shadeFragments(in, varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;

@@ -31,6 +31,7 @@ template <int kVaryingFloats, class Shade>
                                                         FragmentOutput<simd::Float8x2>& out) {
   using simd::Float8;
   using simd::Float8x2;
+  out.unorm8Outputs = job.unorm8Outputs;
   // Lane offsets of the pair: the block's upper group (rows 0-1), then its lower (rows 2-3).
   const Float8x2 dx(layout.dxLanes, layout.dxLanes), dy(layout.dyLanes, layout.dyLanes + Float8(2.0f));
   FragmentInput<Float8x2> in;

@@ -23,6 +23,7 @@ void shadeGroup(const TileJob& job, FragmentGroup<F>& group, PipelineCounters& c
   interpolateGroup(job, group);
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<F> out;
+  out.unorm8Outputs = job.unorm8Outputs;
   group.draw->shader->shadeFragments(group.in, group.varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;

@@ -58,6 +58,7 @@ inline void interpolatePair(const TileJob& job, FragmentGroup<simd::Float8>& a, 
   interpolatePair(job, a, b, in, varyings);   // counted as rasterization, as in the walk
   const uint64_t shadeStart = job.timeStages ? cycleCount() : 0;
   FragmentOutput<Float8x2> out;
+  out.unorm8Outputs = job.unorm8Outputs;
   a.draw->shader->shadeFragments(in, varyings, out);
   const uint64_t mergeStart = job.timeStages ? cycleCount() : 0;
   counters.shadeCycles += mergeStart - shadeStart;

@@ -7,9 +7,12 @@
 //     that (mat-mat-vec);
 //   - each PCF tap's uv + off is (0.5 + off) + ndc.xy * 0.5 (const-add-chain, pcf_shadow);
 //   - albedo * diffuse is (albedo * sun) * (ndotl * lit) (graft + rebalance, fragment());
-//   - pow(x, 48.0) has a literal exponent: pow<48.0f> (pow-literal).
+//   - pow(x, 48.0) has a literal exponent: pow<48.0f> (pow-literal); where the target is
+//     RGBA8, powWithin<48.0f> (x^32 * x^16) serves the groups whose bytes its bound cannot
+//     move (docs/porting.md, section 5, "Bytes, not floats").
 #pragma once
 
+#include "raster/merge/unorm8_within.h"
 #include "raster/shader/program.h"
 #include "scenes/program_entry.h"
 
@@ -122,13 +125,33 @@ struct MainPass {
     }
     // Blinn-Phong specular, killed in shadow along with the diffuse.
     const vec3<F> hvec = normalize(l + v);
-    const F spec = pow<48.0f>(max(dot(n, hvec), F(0.0f))) * lit * spec_strength;
+    const F n_dot_h = max(dot(n, hvec), F(0.0f));
     // diffuse = sun * ndotl * lit is used once, so GLSL IR grafts it into albedo * diffuse:
     // albedo * ((sun * ndotl) * lit), a tree of products alone, which Mesa's
     // do_rebalance_tree (opt_rebalance_tree.cpp) balances as (albedo * sun) * (ndotl * lit).
     const vec3<F> albedo_diffuse = (albedo * sun) * (ndotl * lit);
-    const vec3<F> col = ambient * albedo + albedo_diffuse + vec3<F>(spec, spec, spec);
-    out.color[0] = vec4<F>(col, F(1.0f));
+    // col = ambient * albedo + albedo_diffuse + vec3(spec), with spec = pow(n_dot_h, 48.0) *
+    // lit * spec_strength, for the pow given.
+    const auto colorWith = [&](F pow48) {
+      const F spec = pow48 * lit * spec_strength;
+      return ambient * albedo + albedo_diffuse + vec3<F>(spec, spec, spec);
+    };
+    // An RGBA8 target keeps only col's bytes. There pow(x, 48.0) by products, within a
+    // measured bound of llvmpipe's pow, serves every group whose bytes that bound cannot move
+    // (docs/porting.md, section 5); other groups take llvmpipe's pow.
+    if (out.keepsUnorm8Only(0)) {
+      const auto pow48 = powWithin<48.0f>(n_dot_h);
+      const vec3<F> col = colorWith(pow48.value);
+      // The bound carried through spec's two products and col's last sum (their roundings:
+      // under 2^-20 for col below 8; above that the byte is 255 either way).
+      const F error = pow48.error * lit * spec_strength * F(1.0f + 0x1p-20f) + F(0x1p-20f);
+      if (all(raster::merge::unorm8Within(col.x, error) & raster::merge::unorm8Within(col.y, error) &
+              raster::merge::unorm8Within(col.z, error))) {
+        out.color[0] = vec4<F>(col, F(1.0f));
+        return;
+      }
+    }
+    out.color[0] = vec4<F>(colorWith(pow<48.0f>(n_dot_h)), F(1.0f));
   }
 };
 

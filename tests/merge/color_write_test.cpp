@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "raster/merge/color_write.h"
+#include "raster/merge/unorm8_within.h"
 
 namespace {
 
@@ -34,6 +35,50 @@ std::vector<float> interestingValues() {
 }  // namespace
 
 TEST_SUITE("format") {
+  // merge/unorm8_within.h: a lane it passes must give its byte for every value within the
+  // error; the values sit on, beside and between the RGBA8 write's rounding boundaries.
+  TEST_CASE("unorm8Within: every value within the error of a lane it passes converts to that lane's byte") {
+    std::vector<float> values = interestingValues();
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(-0.01f, 1.01f);
+    for (int i = 0; i < 20000; ++i) values.push_back(unit(rng));
+    for (const float v : {3.9f, 7.9f, 8.0f, 100.0f, -3.0f, -100.0f}) values.push_back(v);
+    while (values.size() % 8) values.push_back(0.5f);
+    const auto byteOf = [](float x) { return raster::format::unorm8FromFloat(x); };
+    size_t passed = 0, refused = 0, wrong = 0;
+    for (const float error : {0.0f, 1e-7f, 1e-6f, 1e-5f, 1e-4f, 1e-3f}) {
+      for (size_t i = 0; i < values.size(); i += 8) {
+        const unsigned lanes = raster::merge::unorm8Within(Plain::load(&values[i]), Plain(error)).bits();
+        CHECK(raster::merge::unorm8Within(FastLanes::load(&values[i]), FastLanes(error)).bits() == lanes);
+        for (int l = 0; l < 8; ++l) {
+          const float v = values[i + l];
+          if (!(lanes >> l & 1u)) {
+            ++refused;
+            continue;
+          }
+          ++passed;
+          // The farthest values within the error either way, and some between.
+          const double reach = double(error);
+          for (const double t : {-1.0, -0.5, -0.01, 0.01, 0.5, 1.0}) {
+            float y = float(double(v) + t * reach);
+            while (std::fabs(double(y) - double(v)) > reach) y = std::nextafter(y, v);
+            if (byteOf(y) != byteOf(v) && wrong++ == 0) MESSAGE("v = " << v << ", error " << error << ", y = " << y);
+          }
+        }
+      }
+    }
+    CHECK(wrong == 0);
+    CHECK(passed > 100000);   // it passes what it should, and refuses what it must:
+    CHECK(refused > 1000);
+    for (int k = 0; k < 255; ++k) {   // a value whose product is a tie is refused, even at no error
+      const float tie = (float(k) + 0.5f) / 255.0f;
+      if (float(tie * 255.0f) == float(k) + 0.5f) CHECK(!raster::merge::unorm8Within(Plain(tie), Plain(0.0f)).bits());
+    }
+    CHECK(!raster::merge::unorm8Within(Plain(std::numeric_limits<float>::quiet_NaN()), Plain(0.0f)).bits());
+    CHECK(!raster::merge::unorm8Within(Plain(0.5f), Plain(std::numeric_limits<float>::infinity())).bits());
+    CHECK(!raster::merge::unorm8Within(Plain(0.5f), Plain(std::numeric_limits<float>::quiet_NaN())).bits());
+  }
+
   TEST_CASE("RGBA8 packing: SIMD lanes equal the scalar conversion") {
     const std::vector<float> values = interestingValues();
     for (size_t i = 0; i + 8 <= values.size(); i += 8) {

@@ -423,7 +423,8 @@ TEST_SUITE("math_methods") {
     auto check = [&](float x, float value, float error) {
       const float exact = raster::glsl::pow<48.0f>(x);
       const double gap = std::fabs(double(value) - double(exact));
-      if (!(gap <= double(error)) && outside++ == 0) MESSAGE("x = " << x << ": " << value << " vs " << exact << ", error " << error);
+      if (!(gap <= double(error)) && outside++ == 0)
+        MESSAGE("x = " << x << ": " << value << " vs " << exact << ", error " << error);
       if (value > 1e-30f) largest = std::max(largest, gap / double(value));
     };
     for (size_t i = 0; i < xs.size(); i += 16) {
@@ -446,7 +447,8 @@ TEST_SUITE("math_methods") {
     for (const float x : {1.0000001f, 2.0f, kInf, kNaN, -0.5f, -kInf})
       CHECK(raster::glsl::powWithin<48.0f>(x).error == kInf);
     // Under any other math method the method's own pow, with no error.
-    for (const raster::MathMethod method : {raster::MathMethod::Fast, raster::MathMethod::FastFragment, raster::MathMethod::Libm}) {
+    using raster::MathMethod;
+    for (const MathMethod method : {MathMethod::Fast, MathMethod::FastFragment, MathMethod::Libm}) {
       raster::MethodSet set;
       set.math = method;
       const raster::ScopedMethods scoped(set);

@@ -6,13 +6,13 @@
 // error, and take the exact one where some lane is not within (docs/porting.md, section 5,
 // "Bytes, not floats").
 //
-// Why it holds (for an error below 1): take the exact y and the lane's v, |y - v| <= error.
-// The write's byte is a monotonic function of round(fl(y * 255)) (the clamp to 1 and the
-// saturation only merge bytes), so y and v give one byte where fl(y * 255) and fl(v * 255)
-// round to one integer: where fl(v * 255) lies farther from every k + 0.5 than 255 * error
-// plus both products' roundings. Below 8 (products below 2040) each rounding is at most
-// 2^-14; at 8 and above, and at -8 and below, y and v both give 255, or both 0, whatever the
-// test says. A tie is never within, nor is NaN (its comparison is false).
+// Why it holds: take the exact y and the lane's v, |y - v| <= error. The write's byte is
+// the saturated round(fl(x * 255)) (the clamp to 1 first changes no byte), which moves only
+// where the product, monotonic in x, crosses some k + 0.5 with k from 0 to 254. Near those
+// the products lie below 256, so fl(y * 255) and fl(v * 255) differ by at most 255 * error
+// plus a rounding of each, 2^-17 at most; where fl(v * 255) lies farther than that from every
+// k + 0.5, y and v give one byte. The test below asks it of every half-integer, with room to
+// spare (2^-12). A tie is never within, nor is NaN (its comparison is false).
 #pragma once
 
 #include "raster/simd/glsl.h"

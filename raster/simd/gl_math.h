@@ -152,7 +152,7 @@ struct Within {
 // x^16 by repeated squaring, six products where pow<48.0f> takes a log2 and an exp2. On every
 // float x in [0, 1] that lies within kPow48ByProductsRelError * v + 2^-120 of llvmpipe's
 // (measured on all 1,065,353,217 of them, denormals flushed or kept: the most was 1.2983e-5 *
-// v, and 2^-126 at the denormal end; tests/simd/math_methods_test.cpp samples them again); x
+// v, and 2^-126 at the denormal end; tests/simd/pow_within_test.cpp samples them again); x
 // above 1 or NaN gets an infinite error. Any other exponent or method: pow<Y>(x), error 0.
 inline constexpr float kPow48ByProductsRelError = 1.31e-5f;
 template <float Y, class F> requires detail::LaneType<F>

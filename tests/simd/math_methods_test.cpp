@@ -407,59 +407,6 @@ TEST_SUITE("math_methods") {
     CHECK(powConstMismatches<2.5f>() == 0);
   }
 
-  // powWithin<48> (gl_math.h) stands in for pow<48> where only the colour's bytes are kept
-  // (shaders_cpp/shadow/main.h). Its bound was measured on every float of [0, 1]; this
-  // checks it again on a sample (every 4099th float, the 2^14 floats below 1, and around the
-  // places where the difference was largest), in every lane type, and its edges.
-  TEST_CASE("powWithin<48>: within its stated error of pow<48> on [0, 1], an infinite error elsewhere") {
-    std::vector<float> xs;
-    for (uint32_t bits = 0; bits <= bitsOf(1.0f); bits += 4099) xs.push_back(floatOf(bits));
-    for (uint32_t bits = bitsOf(1.0f) - (1u << 14); bits <= bitsOf(1.0f); ++bits) xs.push_back(floatOf(bits));
-    for (const float worst : {0.24191992f, 0.999282062f, 0.162104934f})
-      for (int d = -64; d <= 64; ++d) xs.push_back(floatOf(bitsOf(worst) + uint32_t(d)));
-    while (xs.size() % 16) xs.push_back(0.5f);
-    size_t outside = 0;
-    double largest = 0.0;   // the largest |value - pow<48>| / value seen
-    auto check = [&](float x, float value, float error) {
-      const float exact = raster::glsl::pow<48.0f>(x);
-      const double gap = std::fabs(double(value) - double(exact));
-      if (!(gap <= double(error)) && outside++ == 0)
-        MESSAGE("x = " << x << ": " << value << " vs " << exact << ", error " << error);
-      if (value > 1e-30f) largest = std::max(largest, gap / double(value));
-    };
-    for (size_t i = 0; i < xs.size(); i += 16) {
-      for (int l = 0; l < 16; ++l) {
-        const auto scalar = raster::glsl::powWithin<48.0f>(xs[i + l]);
-        check(xs[i + l], scalar.value, scalar.error);
-      }
-#if RASTER_AVX2
-      using raster::simd::Float8x2;
-      const auto paired = raster::glsl::powWithin<48.0f>(Float8x2::load(&xs[i]));
-      alignas(64) float value[16], error[16];
-      paired.value.store(value);
-      paired.error.store(error);
-      for (int l = 0; l < 16; ++l) check(xs[i + l], value[l], error[l]);
-#endif
-    }
-    CHECK(outside == 0);
-    // The bound is the measured one, not a loose one: the sample comes within 2% of it.
-    CHECK(largest >= 0.98 * double(raster::glsl::kPow48ByProductsRelError));
-    for (const float x : {1.0000001f, 2.0f, kInf, kNaN, -0.5f, -kInf})
-      CHECK(raster::glsl::powWithin<48.0f>(x).error == kInf);
-    // Under any other math method the method's own pow, with no error.
-    using raster::MathMethod;
-    for (const MathMethod method : {MathMethod::Fast, MathMethod::FastFragment, MathMethod::Libm}) {
-      raster::MethodSet set;
-      set.math = method;
-      const raster::ScopedMethods scoped(set);
-      for (const float x : {0.0f, 0.3f, 0.97f, 1.0f}) {
-        const auto within = raster::glsl::powWithin<48.0f>(x);
-        CHECK(sameBits(within.value, raster::glsl::pow<48.0f>(x)));
-        CHECK(within.error == 0.0f);
-      }
-    }
-  }
-
   TEST_CASE("fast and libm: float, Lanes<8>, Float8 and Float8x2 give the same bits") {
     using raster::simd::Lanes;
     using L8 = Lanes<8>;

@@ -16,7 +16,6 @@
 
 #include "raster/simd/isa.h"
 #if RASTER_ZMM_PAIRS
-#include <algorithm>
 #include <cmath>
 
 #include "raster/simd/intrinsics.h"
@@ -94,22 +93,19 @@ inline bool isNearest32(const Texture& t) {
   return t.isDepth() ? t.depth.data() : reinterpret_cast<const uint32_t*>(t.rgba8.data());
 }
 
-// Starts loading the lines kPrefetchTexelsAhead texels to the right of texel rows
-// fromRow..toRow of the 4x4 block whose first texel is `first` (in column x0), where the
-// tile stage's blocks will read them shortly (simd/prefetch.h): a fullscreen pass reads its
-// rows a block at a time, 16 bytes of each, short runs a target row apart that the hardware
-// prefetchers do not run ahead of. Once every 16 texels along a row, which is once per 64-byte
-// line whatever the row's alignment; the other blocks would prefetch lines already on their
-// way. Without it pbr's blur along x at 1920x1080 waited on its texels for half its time
-// (4.1-4.6 -> 2.3-2.4 ms, 2 threads); at 640x480, whose targets stay in the caches, it
-// costs nothing measurable.
-[[gnu::always_inline]] inline void prefetchBlockRowsAhead(const Texture& t, int first, int x0, int fromRow, int toRow) {
+// Starts loading the lines kPrefetchTexelsAhead texels to the right of `rows` texel rows from
+// texel `first` (column x0) on, where the tile stage's next blocks will read them
+// (simd::prefetchRowsAhead: a fullscreen pass reads 16 bytes of each row a block at a time,
+// short runs a target row apart that the hardware prefetchers do not run ahead of). Only from
+// blocks whose column is a multiple of 16: once a 64-byte line along a row, whatever the row's
+// alignment; the blocks between would prefetch lines already on their way. Without it pbr's
+// blur along x at 1920x1080 waited on its texels for half its time (4.1-4.6 -> 2.3-2.4 ms, 2
+// threads); prefetching from every block cost its blur along y at 640x480 about 7%.
+[[gnu::always_inline]] inline void prefetchBlockRowsAhead(const Texture& t, size_t first, int x0, int rows) {
   if (x0 % 16 != 0) return;
-  const ptrdiff_t last = ptrdiff_t(t.width) * t.height - 1;
-  for (int r = fromRow; r <= toRow; ++r) {
-    const ptrdiff_t texel = first + ptrdiff_t(r) * t.width + ptrdiff_t(simd::kPrefetchTexelsAhead);
-    simd::prefetchLine(texels32(t) + std::clamp<ptrdiff_t>(texel, 0, last));
-  }
+  // A 32-bit texel is four one-byte channels to prefetchRowsAhead.
+  simd::prefetchRowsAhead(reinterpret_cast<const uint8_t*>(texels32(t)), size_t(t.width) * size_t(t.height) - 1, first,
+                          size_t(t.width), rows);
 }
 
 // How isNearest32 texture t's 32-bit texels become channels: a depth code times its scale,
@@ -255,7 +251,9 @@ template <int N>
   // From here every texel read is some tap's: the block's 4x4 texels moved by -R..R.
   const uint32_t* centre = texels32(t) + first;
   const Texel32Format format = texel32Format(t);
-  prefetchBlockRowsAhead(t, first, _mm_cvtsi128_si32(_mm512_castsi512_si128(x)), alongX ? 0 : -R, alongX ? 3 : 3 + R);
+  // The rows the line reads: the block's 4, and along y R more above and below.
+  prefetchBlockRowsAhead(t, size_t(first - (alongX ? 0 : R * t.width)), _mm_cvtsi128_si32(_mm512_castsi512_si128(x)),
+                         alongX ? 4 : 4 + 2 * R);
   if (alongX) {
     // rows[r]: texels -R .. 3 + R of the block's row r (a masked load reads no further).
     constexpr __mmask16 kWindow = __mmask16((1u << (4 + 2 * R)) - 1);

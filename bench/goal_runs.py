@@ -12,7 +12,9 @@ finished before the next, and the table lists the passes whose median ratio is b
 --pass-goal (2.5).
 
 Writes OUT/goals.json (every run, with the host's CPU model: ratios differ between the
-hosts these machines draw, AMD and Intel alike), OUT/goals.md (the table) and OUT/goals.png
+hosts these machines draw, AMD and Intel alike; and the latency of a dependent FMA before and
+after the runs, from build/raster_micro where it is built: the same host runs at different
+clocks from hour to hour, 1.09 and 0.94 ns on one day), OUT/goals.md (the table) and OUT/goals.png
 (a panel per size: each configuration's median as a bar, its runs as dots, the goal and the
 floor as lines), and prints the table. --replot rewrites the table and the chart from an
 existing goals.json without running anything. Exit status: 0 when every configuration meets
@@ -52,6 +54,23 @@ def cpu_model():
     except OSError:
         pass
     return "unknown"
+
+
+def fma_latency_ns(args):
+    """The core's clock as the latency of a dependent FMA, ns (`raster_micro`'s peak/fma/chains:1
+    on one core, about a second), or None where raster_micro is not built beside --raster or
+    does not run that benchmark (a build without AVX2)."""
+    micro = os.path.join(os.path.dirname(os.path.abspath(args.raster)), "raster_micro")
+    if not os.access(micro, os.X_OK):
+        return None
+    core = min(os.sched_getaffinity(0))
+    done = subprocess.run([micro, "--benchmark_filter=peak/fma/chains:1$", "--benchmark_format=json"],
+                          capture_output=True, text=True, preexec_fn=lambda: os.sched_setaffinity(0, {core}))
+    try:
+        value = json.loads(done.stdout)["benchmarks"][0]["ns_per_fma"]
+    except (ValueError, KeyError, IndexError, TypeError):
+        return None
+    return value if done.returncode == 0 and is_number(value) and value > 0 else None
 
 
 def parse_args(argv):
@@ -161,8 +180,15 @@ def ratio_text(value, line):
     return text if (float(text) >= line) == (value >= line) else f"{value:.3f}"
 
 
-def table(args, rows, host):
-    lines = [f"Host: {host}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
+def clock_text(fma):
+    """The clock line of the table: the dependent FMA's latency before and after the runs."""
+    if fma is None:
+        return ""
+    return f"; a dependent FMA {fma['before']:.3f} ns before the runs, {fma['after']:.3f} after (the clock)"
+
+
+def table(args, rows, host, fma):
+    lines = [f"Host: {host}{clock_text(fma)}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
              f"(`bench/goal_runs.py`). Goal: median >= {args.goal}, no run below {args.floor}.", "",
              "| size | preset | scene | runs (llvmpipe / raster) | median | lowest | goal met |"
              + (f" passes below {args.pass_goal}x |" if args.passes else ""),
@@ -230,6 +256,9 @@ def replot(args):
                 check_record(row, {"passes": list}, where)
                 for k, p in enumerate(row["passes"]):
                     check_record(p, {"pass": int, "program": str, "median_ratio": NUMBER}, f"{where} pass {k}")
+        fma = result.get("fma_ns")   # absent from the runs before it was recorded (history/*.json)
+        if fma is not None:
+            check_record(fma, {"before": NUMBER, "after": NUMBER}, "fma_ns")
         ordered = lambda key: list(dict.fromkeys(row[key] for row in rows))
         args.sizes, args.presets, args.scenes = ordered("size"), ordered("preset"), ordered("scene")
         present = {(row["size"], row["preset"], row["scene"]) for row in rows}
@@ -241,14 +270,14 @@ def replot(args):
     args.runs = len(rows[0]["ratios"])
     args.threads, args.frames, args.goal, args.floor = result["threads"], result["frames"], result["goal"], result["floor"]
     args.passes, args.pass_goal = result["pass_goal"] is not None, result["pass_goal"]
-    write_outputs(args, rows, result["host"], json.dumps(result, indent=1) + "\n")
+    write_outputs(args, rows, result["host"], fma, json.dumps(result, indent=1) + "\n")
     return 0
 
 
-def write_outputs(args, rows, host, json_text):
+def write_outputs(args, rows, host, fma, json_text):
     """goals.json, goals.md and goals.png, each written whole under a temporary name and renamed:
     never a half-written file. Returns the table."""
-    text = table(args, rows, host)
+    text = table(args, rows, host, fma)
     chart(args, rows, host, os.path.join(args.out, "goals.png"))
     write_text_atomically(json_text, os.path.join(args.out, "goals.json"))
     write_text_atomically(text, os.path.join(args.out, "goals.md"))
@@ -266,6 +295,7 @@ def main(argv):
                 print(" ".join(bench_command(args, scene, size, preset, "RUN.json")))
         return 0
     runs, started, total = [], time.time(), args.runs * len(configs)
+    before = fma_latency_ns(args)
     for run in range(args.runs):
         for size, preset, scene in configs:
             print(f"[{len(runs) + 1}/{total}] run {run + 1}: {scene} {size} {preset} "
@@ -274,11 +304,14 @@ def main(argv):
             runs.append({"run": run + 1, "size": size, "preset": preset, "scene": scene, "ratio": record["ratio"],
                          "median_ms": {b["name"]: b["median_ms"] for b in record["backends"]},
                          "passes": record.get("passes", [])})
+    after = fma_latency_ns(args)
+    fma = {"before": before, "after": after} if before is not None and after is not None else None
     host = cpu_model()
     rows = summarize(args, runs)
-    result = {"host": host, "threads": args.threads, "frames": args.frames, "goal": args.goal, "floor": args.floor,
-              "pass_goal": args.pass_goal if args.passes else None, "configurations": rows, "runs": runs}
-    sys.stdout.write(write_outputs(args, rows, host, json.dumps(result, indent=1) + "\n"))
+    result = {"host": host, "fma_ns": fma, "threads": args.threads, "frames": args.frames, "goal": args.goal,
+              "floor": args.floor, "pass_goal": args.pass_goal if args.passes else None, "configurations": rows,
+              "runs": runs}
+    sys.stdout.write(write_outputs(args, rows, host, fma, json.dumps(result, indent=1) + "\n"))
     return 0 if all(row["met"] for row in rows) else 1
 
 

@@ -322,6 +322,18 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
         with open(os.path.join(replot, "goals.json"), "w") as f:
             json.dump(broken, f)
         expect_refused("goal_runs.py", ["--replot", "--out", replot], naming)
+    # A goal run states the clock it ran at (a dependent FMA's latency before and after its
+    # runs; the host's hours differ by it) on its table's first line, and refuses a clock that
+    # is not two numbers.
+    with open(os.path.join(replot, "goals.json"), "w") as f:
+        json.dump(dict(goals, fma_ns={"before": 0.938, "after": 1.093}), f)
+    done = run("goal_runs.py", "--replot", "--out", replot)
+    with open(os.path.join(replot, "goals.md")) as f:
+        check(done.returncode == 0 and "; a dependent FMA 0.938 ns before the runs, 1.093 after (the clock);" in f.readline(),
+              "goal_runs.py --replot does not state the goal run's clock")
+    with open(os.path.join(replot, "goals.json"), "w") as f:
+        json.dump(dict(goals, fma_ns={"before": 0.938}), f)
+    expect_refused("goal_runs.py", ["--replot", "--out", replot], "fma_ns: no 'after'")
 
     expect_refused("run_benchmarks.py", ["--frames", "0", "--dry-run"], "--frames 0: at least 1", usage=True)
     # raster bench takes at most 10000 frames: --quick's half of 10^8 was printed as a command.

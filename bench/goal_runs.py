@@ -168,7 +168,8 @@ def summarize(args, runs):
                     count = len(mine[0]["passes"])
                     row["passes"] = [{"pass": i + 1, "program": mine[0]["passes"][i]["program"],
                                       "median_ratio": statistics.median(
-                                          r["passes"][i]["llvmpipe_ms"] / r["passes"][i]["raster_ms"] for r in mine)}
+                                          r["passes"][i]["llvmpipe_ms"] / r["passes"][i]["raster_ms"] for r in mine),
+                                      "median_raster_ms": statistics.median(r["passes"][i]["raster_ms"] for r in mine)}
                                      for i in range(count)]
                 rows.append(row)
     return rows
@@ -203,7 +204,33 @@ def table(args, rows, host, fma):
                     if p["median_ratio"] < args.pass_goal]
             line += f" {'; '.join(weak) if weak else 'none'} |"
         lines.append(line)
+    if args.passes:
+        lines += ["", *pass_table(args, rows)]
     return "\n".join(lines) + "\n"
+
+
+def pass_table(args, rows):
+    """Pass by pass: each pass's median ratio in every size and preset, then this pipeline's
+    median ms for it in the first preset at every size (where the runs recorded them)."""
+    by_config = {(row["size"], row["preset"], row["scene"]): row for row in rows}
+    first = args.presets[0]
+    ms_sizes = [size for size in args.sizes
+                if all("median_raster_ms" in p for s in args.scenes for p in by_config[(size, first, s)]["passes"])]
+    lines = ["Pass by pass: each pass's median ratio (llvmpipe / raster), then ours in ms (median of the runs).", "",
+             "| scene | pass | program | " + " | ".join(f"{z} `{p}`" for z in args.sizes for p in args.presets)
+             + "".join(f" | ours, {z} `{first}`, ms" for z in ms_sizes) + " |",
+             "| --- | ---: | --- |" + " ---: |" * (len(args.sizes) * len(args.presets) + len(ms_sizes))]
+    for scene in args.scenes:
+        reference = by_config[(args.sizes[0], first, scene)]["passes"]
+        for i, p in enumerate(reference):
+            def cell(size, preset, key, text):
+                passes = by_config[(size, preset, scene)]["passes"]
+                return text(passes[i][key]) if i < len(passes) else "-"
+            ratios = [cell(z, q, "median_ratio", lambda v: ratio_text(v, args.pass_goal)) for z in args.sizes
+                      for q in args.presets]
+            times = [cell(z, first, "median_raster_ms", lambda v: f"{v:.3f}") for z in ms_sizes]
+            lines.append(f"| {scene} | {p['pass']} | `{p['program']}` | " + " | ".join(ratios + times) + " |")
+    return lines
 
 
 def chart(args, rows, host, path):
@@ -257,6 +284,8 @@ def replot(args):
                 check_record(row, {"passes": list}, where)
                 for k, p in enumerate(row["passes"]):
                     check_record(p, {"pass": int, "program": str, "median_ratio": NUMBER}, f"{where} pass {k}")
+                    if "median_raster_ms" in p:   # absent from the runs before it was recorded
+                        check_record(p, {"median_raster_ms": NUMBER}, f"{where} pass {k}")
         fma = result.get("fma_ns")   # absent from the runs before it was recorded (history/*.json)
         if fma is not None:
             check_record(fma, {"before": NUMBER, "after": NUMBER}, "fma_ns")

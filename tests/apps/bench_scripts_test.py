@@ -314,11 +314,18 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     done = run("goal_runs.py", "--replot", "--out", replot)
     check(done.returncode == 0, f"goal_runs.py --replot exited {done.returncode}: {done.stderr[-1500:]}")
     with open(os.path.join(replot, "goals.md")) as mine, open(os.path.join(committed_goals, "goals.md")) as theirs:
-        check(mine.read() == theirs.read(), "goal_runs.py --replot no longer writes bench/results/issue69/goals.md")
+        written = mine.read()
+        check(written == theirs.read(), "goal_runs.py --replot no longer writes bench/results/issue69/goals.md")
+    # A run with --passes also tabulates every pass: its ratios and our ms (BENCHMARKS' pass by pass).
+    check("| hdr | 11 | `hdr/post+composite` | " in written and "ours, 640x480 `gl`, ms |" in written,
+          "goal_runs.py --replot does not tabulate each pass's ratios and times")
     with open(os.path.join(committed_goals, "goals.json")) as f:
         goals = json.load(f)
     for broken, naming in ((dict(goals, configurations=[1]), "configuration 0: an object was expected"),
-                           (dict(goals, configurations=goals["configurations"][1:]), "no configuration for size")):
+                           (dict(goals, configurations=goals["configurations"][1:]), "no configuration for size"),
+                           (dict(goals, configurations=[dict(goals["configurations"][0], passes=[
+                               dict(goals["configurations"][0]["passes"][0], median_raster_ms="fast")])]
+                                 + goals["configurations"][1:]), "configuration 0 pass 0: 'median_raster_ms'")):
         with open(os.path.join(replot, "goals.json"), "w") as f:
             json.dump(broken, f)
         expect_refused("goal_runs.py", ["--replot", "--out", replot], naming)

@@ -119,6 +119,13 @@ add_test(NAME bench_scripts COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/app
          $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
 set_tests_properties(bench_scripts PROPERTIES TIMEOUT 180 LABELS harness COST 45)
 
+# bench/paper_bounds.py: a real run's frame beside its bounds at a given clock, the committed
+# table (BENCHMARKS.md's) redrawn from its runs, and a bounds file that no longer matches its
+# scene's passes refused with exit 2.
+add_test(NAME paper_bounds COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/paper_bounds_test.py
+         $<TARGET_FILE:raster_cli> ${CMAKE_SOURCE_DIR})
+set_tests_properties(paper_bounds PROPERTIES TIMEOUT 180 LABELS harness COST 10)
+
 # `raster report` opened in headless Chromium (chromium, chromium-driver, python3-selenium):
 # every image loads at its file's size, no console error, table values equal their JSON.
 add_test(NAME report_chromium COMMAND ${TEST_PYTHON} ${CMAKE_SOURCE_DIR}/tests/apps/report_chromium_test.py

@@ -92,15 +92,17 @@ def read_bounds(path):
 
 
 def check_bounds(doc):
-    """Raises BadInput unless every scene's passes each have a program, a bound in ms above 0
-    and what binds it (one of the file's `binds`)."""
+    """Raises BadInput unless every scene's passes each have a name, a target (its label in
+    bench/tile_costs output), a program, a bound in ms above 0, what binds it (one of the
+    file's `binds`) and the work counted."""
     check_record(doc, {"size": str, "cores": int, "fma_ns": NUMBER, "binds": dict, "scenes": dict}, "")
     if doc["cores"] < 1 or doc["fma_ns"] <= 0:
         raise BadInput("'cores' and 'fma_ns' must be above 0")
     for scene, passes in doc["scenes"].items():
         if not isinstance(passes, list):
             raise BadInput(f"scene {scene}: a list of passes was expected")
-        check_each(passes, {"program": str, "ms": NUMBER, "binds": str}, f"{scene} pass")
+        check_each(passes, {"name": str, "target": str, "program": str, "ms": NUMBER, "binds": str, "work": str},
+                   f"{scene} pass")
         for i, p in enumerate(passes):
             if p["ms"] <= 0 or p["binds"] not in doc["binds"]:
                 raise BadInput(f"{scene} pass {i}: 'ms' must be above 0 and 'binds' one of {', '.join(doc['binds'])}")

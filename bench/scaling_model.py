@@ -4,9 +4,9 @@
 Reads `raster bench SCENE --passes --json` runs (and `bench/tile_costs` per-tile costs) that
 a shell loop wrote into folders, and prints two Markdown tables per scene:
 
-  1. pass by pass, the paper bound (the counts below; docs/notes/
-     2026-12-02-paper-bounds-and-scaling.md derives each) beside the measured pass at 1 and
-     2 threads, and their ratio;
+  1. pass by pass, the paper bound (bench/paper_bounds.json; docs/notes/
+     2026-12-07-paper-bounds-recounted.md derives each) beside the measured pass at 1 and
+     2 threads, and their ratio (bench/paper_bounds.py does the same at the hour's clock);
   2. the scaling model at 1, 2, 4, 8, 16 and 32 threads: ours and llvmpipe's.
 
 The model, from medians of the runs:
@@ -57,53 +57,28 @@ import sys
 from chart_files import write_text_atomically
 from input_checks import (NUMBER, RASTER_MAX_SIDE, RASTER_MAX_THREADS, BadInput, check_each, check_output_path,
                           check_range, check_record, fail, is_number, parse_counts, read_json, split_list)
+from paper_bounds import check_bounds
 
 PROG = "scaling_model.py"
 
-SCENES = ["shadow", "deferred", "hdr", "pbr"]
+# The paper bound of each pass at 640x480 on 2 cores (its arithmetic at the cores' peak, its
+# divisions at the divider's rate, or its texel fetches at the gather rate of their working
+# set, the largest; on 1 core each bound doubles), from the one file that holds them, as
+# counted at its clock (a dependent FMA of its fma_ns): the runs should be of a host at about
+# that clock. Per scene, per pass: (label: the pass's target as bench/tile_costs names it,
+# kind, bound_ms, what binds it).
+BOUNDS_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paper_bounds.json")
 
-# The paper bound of each pass at 640x480 on 2 cores, ms: its arithmetic at the cores' peak
-# (4 eight-lane operations a cycle, 3.66 GHz, 2 cores: 29.3 G/s), its divisions at the
-# divider's rate (one 8-lane division per 3.5 cycles a core: 2.1 G/s on 2 cores), or its
-# texel fetches at the measured gather rate of their working set, the largest. Counts per
-# pass: lane groups of 8 from `raster render SCENE --view tile-cost` (its JSON), operations
-# per group from the ports (the note gives each line). On 1 core each bound doubles.
-# (label, kind, bound_ms, what binds it)
-BOUNDS = {
-    "shadow": [
-        ("shadow_map", "shadow map", 0.03, "store: 1024x1024 Z24 cleared and written (4 MiB); 20 triangles"),
-        ("final", "main", 0.39, "arithmetic: 26,119 groups x ~440 (3x3 PCF ~170, pow 100)"),
-    ],
-    "deferred": [
-        ("shadow_map", "shadow map", 0.1, "setup: 11,955 triangles x ~100, 1 M texels x 3/8"),
-        ("gbuffer", "G-buffer", 1.5, "fetch: minified 1K-2K JPEG maps, floor 8 / cat 6 elements a lane"),
-        ("ssao", "SSAO", 4.5, "arithmetic: 38,720 groups x ~3,380 (16 samples)"),
-        ("final", "lighting", 3.1, "arithmetic: 38,720 groups x ~2,350 (5x5 PCF ~450, 7 pow)"),
-    ],
-    "hdr": [
-        ("hdr_scene", "scene (visibility)", 0.17, "arithmetic: 24k vertices x ~36, 12,000 triangles x ~100, 9,201 bin entries x ~50, 11,571 groups x ~205"),
-        ("bloom_down_0", "bright", 0.030, "arithmetic: 9,760 groups x ~90"),
-        ("bloom_down_1", "down 1", 0.023, "arithmetic: 2,480 groups x ~270 (5 bilinear taps)"),
-        ("bloom_down_2", "down 2", 0.006, "arithmetic: 640 groups x ~270"),
-        ("bloom_down_3", "down 3", 0.002, "arithmetic: 170 groups x ~270"),
-        ("bloom_down_4", "down 4", 0.001, "arithmetic: 50 groups x ~270"),
-        ("bloom_up_3", "up 3", 0.003, "arithmetic: 170 groups x ~490 (9 taps, additive blend)"),
-        ("bloom_up_2", "up 2", 0.011, "arithmetic: 640 groups x ~490"),
-        ("bloom_up_1", "up 1", 0.041, "arithmetic: 2,480 groups x ~490"),
-        ("bloom_up_0", "up 0", 0.163, "arithmetic: 9,760 groups x ~490"),
-        ("final", "composite", 0.57, "arithmetic: 38,720 groups x ~435 (3 pow 300, 2 lookups 90)"),
-    ],
-    "pbr": [
-        ("shadow_cascade0", "cascade 0", 0.1, "setup: 11,954 triangles x ~100, texels x 3/8"),
-        ("shadow_cascade1", "cascade 1", 0.1, "as cascade 0"),
-        ("shadow_cascade2", "cascade 2", 0.1, "as cascade 0"),
-        ("gbuffer", "G-buffer", 1.5, "fetch: floor 8 / cat 6 elements a lane (10 / 36 MiB of maps)"),
-        ("ssao", "SSAO", 5.7, "arithmetic: 38,720 groups x ~4,350 (64 samples; divisions 4.8 ms, fetch 4.3 ms)"),
-        ("ssao_blur_h", "blur x", 0.20, "arithmetic: 38,720 groups x ~155 (9 NEAREST taps)"),
-        ("ssao_blur", "blur y", 0.20, "arithmetic: as blur x"),
-        ("final", "lighting", 2.04, "arithmetic: 25,550 groups x ~2,150 (5x5 PCF ~450, 19 pow) + 13,170 sky groups x ~364"),
-    ],
-}
+
+def load_bounds(path):
+    doc = read_json(PROG, path, "a paper bounds file")
+    try:
+        check_bounds(doc)
+    except BadInput as e:
+        fail(PROG, f"{path}: not a paper bounds file ({e})")
+    return {scene: [(p["target"], p["name"], p["ms"], f"{p['binds']}: {p['work']}") for p in passes]
+            for scene, passes in doc["scenes"].items()}
+
 
 # Passes whose tiles the renderer may cut into 16-row bands (a tile of at most 16
 # triangles, raster/renderer.cpp): the fullscreen passes, and the shadow scene's (28
@@ -273,7 +248,7 @@ def karp_flatt(t1, t2):
     return min(max(2.0 * t2 / t1 - 1.0, 0.0), 1.0)
 
 
-def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
+def model_scene(bounds, scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
     r1, r2 = load_runs(full, scene, 1), load_runs(full, scene, 2)
     t1, t2 = median_passes(r1, "raster"), median_passes(r2, "raster")
     l1, l2 = median_passes(r1, "llvmpipe"), median_passes(r2, "llvmpipe")
@@ -283,7 +258,7 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
         T1, T2, LT1, LT2 = frames
     passes_note = " (the runs' passes, not the hour of --frames)" if frames else ""
     tile_passes = load_tiles(tiles, scene)
-    labels = [label for label, _, _, _ in BOUNDS[scene]]
+    labels = [label for label, _, _, _ in bounds[scene]]
     missing = [label for label in labels if label not in tile_passes]
     if missing:
         fail(PROG, f"--tiles {tiles}: {scene}'s tile costs have no pass {', '.join(missing)} (passes: "
@@ -292,7 +267,7 @@ def model_scene(scene, full, tiny, tiles, tiles_tiny, thread_list, frames=None):
         if len(got) != len(labels):
             fail(PROG, f"{name}: {scene}'s runs time {len(got)} passes, its bound has {len(labels)}")
     passes = []
-    for i, (label, kind, bound, why) in enumerate(BOUNDS[scene]):
+    for i, (label, kind, bound, why) in enumerate(bounds[scene]):
         tp = tile_passes[label]
         costs = tile_ms(tp)
         bandable = label in BANDABLE.get(scene, set())
@@ -377,7 +352,8 @@ def main():
     parser.add_argument("--tiny", help="folder of --size 16x16 runs, the same names (optional: serial work alone)")
     parser.add_argument("--tiles", required=True, help="folder of bench/tile_costs output at the full size: SCENE_rR.json")
     parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
-    parser.add_argument("--scenes", default=",".join(SCENES))
+    parser.add_argument("--scenes", help="comma-separated scenes (default: every scene of --bounds)")
+    parser.add_argument("--bounds", default=BOUNDS_FILE, help="the paper bounds file (default bench/paper_bounds.json)")
     parser.add_argument("--threads", default="1,2,4,8,16,32",
                         help=f"thread counts to model (must hold 1 and 2; at most {RASTER_MAX_THREADS}, as raster)")
     parser.add_argument("--frames", action="append", default=[], metavar="SCENE=T1,T2,LT1,LT2",
@@ -393,10 +369,11 @@ def main():
     # read as neither, silently).
     if (args.tiny is None) != (args.tiles_tiny is None):
         fail(PROG, "--tiny and --tiles-tiny go together (the 16x16 runs and their tile costs)")
-    scenes = split_list(PROG, "--scenes", args.scenes)
+    bounds = load_bounds(args.bounds)
+    scenes = list(bounds) if args.scenes is None else split_list(PROG, "--scenes", args.scenes)
     for scene in scenes:
-        if scene not in BOUNDS:
-            fail(PROG, f"--scenes: {scene!r} has no paper bound here (scenes: {', '.join(BOUNDS)})")
+        if scene not in bounds:
+            fail(PROG, f"--scenes: {scene!r} has no paper bound in {args.bounds} (scenes: {', '.join(bounds)})")
     # The model is measured at 1 and 2 threads (--help: the list must hold them). A count past
     # raster's limit is no machine it runs on, and each takes the makespan of a list that long:
     # 100000000 ran for ever.
@@ -410,12 +387,12 @@ def main():
             frames[name] = [float(v) for v in values.split(",")]
         except ValueError:
             frames[name] = []
-        if name not in BOUNDS or len(frames[name]) != 4 or not all(0 < v <= MAX_MS for v in frames[name]):
+        if name not in bounds or len(frames[name]) != 4 or not all(0 < v <= MAX_MS for v in frames[name]):
             fail(PROG, f"--frames {item}: not SCENE=T1,T2,LT1,LT2 (a scene and four times in ms, above 0 and at "
                        f"most {MAX_MS:g})")
     if args.json is not None:   # "" too: refused by check_output_path, not skipped
         check_output_path(PROG, "--json", args.json)
-    models = [model_scene(s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
+    models = [model_scene(bounds, s, args.runs, args.tiny, args.tiles, args.tiles_tiny, thread_list, frames.get(s))
               for s in scenes]
     for m in models:
         print_scene(m, thread_list)

@@ -17,8 +17,10 @@ bound), or given with --fma-ns; rows bound by fetches or stores from level 3 and
 On fewer cores than counted a bound grows in proportion (on one core it doubles); on more it
 shrinks so, which assumes every peak grows with the cores.
 
-Writes OUT/bounds.json (every run, the host, the clock) and OUT/bounds.md (a table of frames,
-then each pass), and prints the table. --replot rewrites bounds.md from bounds.json. Exit status:
+Writes OUT/bounds.json (every run, the host, the clock), OUT/bounds.md (a table of frames, then
+each pass) and OUT/bounds.png (per scene, the bound's passes and ours as stacked bars in
+multiples of the bound), and prints the table. --replot rewrites bounds.md and bounds.png from
+bounds.json. Exit status:
 0 when every scene is within --factor of its bound at every thread count, 1 when one is not or
 has no bound in the file, 2 for bad arguments, a failed run, or a file that does not match the
 scene (its passes counted differently from those `raster bench` runs).
@@ -36,7 +38,7 @@ import sys
 import time
 
 from goal_runs import bench_command, cpu_model, fma_latency_ns, run_once
-from chart_files import write_text_atomically
+from chart_files import write_atomically, write_text_atomically
 from input_checks import (NUMBER, OPTIONAL, RASTER_MAX_FRAMES, RASTER_MAX_THREADS, BadInput, check_each,
                           check_output_folder, check_raster, check_record, fail, is_number, parse_counts, read_json,
                           split_list)
@@ -58,11 +60,11 @@ def parse_args(argv):
     parser.add_argument("--bounds", default=os.path.join(ROOT, "bench", "paper_bounds.json"), help="the bounds file")
     parser.add_argument("--raster", default=os.path.join(ROOT, "build", "raster"), help="the raster binary")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "bounds"),
-                        help="folder for bounds.json and bounds.md")
-    parser.add_argument("--replot", action="store_true", help="no runs: rewrite bounds.md from OUT/bounds.json")
+                        help="folder for bounds.json, .md and .png")
+    parser.add_argument("--replot", action="store_true", help="no runs: rewrite bounds.md and .png from OUT/bounds.json")
     parser.add_argument("--dry-run", action="store_true", help="print the `raster bench` command lines, run none")
     args = parser.parse_args(argv)
-    args.out = check_output_folder(PROG, "--out", args.out, files=("bounds.json", "bounds.md"))
+    args.out = check_output_folder(PROG, "--out", args.out, files=("bounds.json", "bounds.md", "bounds.png"))
     if args.replot:
         return args
     if not (1 <= args.runs and 1 <= args.frames <= RASTER_MAX_FRAMES):
@@ -200,6 +202,51 @@ def table(result, rows):
     return "\n".join(lines) + "\n"
 
 
+def chart(result, rows, path):
+    """A panel per thread count; per scene two stacked bars in units of the scene's bound: the
+    bound's passes (1 in all) and ours (the passes' medians), each pass one colour in both, a
+    pass wider than a quarter named; the criterion's line at --factor, the frame's median a tick."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    doc, factor = result["bounds"], result["factor"]
+    counts = list(dict.fromkeys(row["threads"] for row in rows))
+    bounded = [row for row in rows if "bound_ms" in row]
+    scenes = list(dict.fromkeys(row["scene"] for row in bounded))
+    fig, axes = plt.subplots(1, len(counts), figsize=(6.5 * len(counts), 0.9 + 0.9 * len(scenes)), squeeze=False,
+                             sharey=True)
+    colours = plt.get_cmap("tab20").colors
+    for ax, threads in zip(axes[0], counts):
+        for k, scene in enumerate(scenes):
+            row = next((r for r in bounded if (r["scene"], r["threads"]) == (scene, threads)), None)
+            if row is None:
+                continue
+            for bar, (widths, y) in enumerate(((row["bounds_ms"], k - 0.2), (row["passes_ms"], k + 0.2))):
+                left = 0.0
+                for i, (p, ms) in enumerate(zip(doc["scenes"][scene], widths)):
+                    width = ms / row["bound_ms"]
+                    ax.barh(y, width, 0.36, left=left, color=colours[i % len(colours)], edgecolor="white", linewidth=0.5)
+                    if width > 0.25:
+                        ax.text(left + width / 2, y, p["name"], ha="center", va="center", fontsize=6)
+                    left += width
+                if bar == 1:
+                    ax.text(max(left, row["over"]), y, f" {row['over']:.2f}x", va="center", fontsize=7)
+            ax.plot([row["over"]] * 2, [k, k + 0.4], color="black", linewidth=1.5)
+        ax.axvline(factor, color="#d62728", linestyle="--", linewidth=1, label=f"{factor:g}x its bound")
+        ax.axvline(1.0, color="#2ca02c", linestyle=":", linewidth=1, label="the bound")
+        ax.set_yticks([y for k in range(len(scenes)) for y in (k - 0.2, k + 0.2)],
+                      [label for scene in scenes for label in (f"{scene}: bound", f"{scene}: ours")], fontsize=7)
+        ax.set_xlabel("multiples of the scene's bound (each pass a colour; the frame's median a tick)", fontsize=7)
+        ax.set_title(f"{result['size']}, {threads} thread{'s' if threads > 1 else ''}", fontsize=9)
+        ax.grid(True, axis="x", alpha=0.3)
+    axes[0][0].invert_yaxis()   # the first scene on top (the axes share it: once)
+    axes[0][-1].legend(fontsize=7, loc="lower right")
+    fig.suptitle(f"Each frame against its paper bound ({result['host']})", fontsize=9)
+    fig.tight_layout()
+    write_atomically(fig, path)
+    plt.close(fig)
+
+
 def replot(args):
     """The runs of OUT/bounds.json, checked."""
     path = os.path.join(args.out, "bounds.json")
@@ -236,6 +283,7 @@ def main(argv):
     if not args.replot:
         write_text_atomically(json.dumps(result, indent=1) + "\n", os.path.join(args.out, "bounds.json"))
     write_text_atomically(text, os.path.join(args.out, "bounds.md"))
+    chart(result, rows, os.path.join(args.out, "bounds.png"))
     sys.stdout.write(text)
     return 0 if all(row.get("met", False) for row in rows) else 1
 

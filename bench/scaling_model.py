@@ -5,8 +5,8 @@ Reads `raster bench SCENE --passes --json` runs (and `bench/tile_costs` per-tile
 a shell loop wrote into folders, and prints two Markdown tables per scene:
 
   1. pass by pass, the paper bound (bench/paper_bounds.json; docs/notes/
-     2026-12-07-paper-bounds-recounted.md derives each) beside the measured pass at 1 and
-     2 threads, and their ratio (bench/paper_bounds.py does the same at the hour's clock);
+     2026-12-07-paper-bounds-recounted.md derives each), scaled to the runs' clock (--fma-ns),
+     beside the measured pass at 1 and 2 threads, and their ratio;
   2. the scaling model at 1, 2, 4, 8, 16 and 32 threads: ours and llvmpipe's.
 
 The model, from medians of the runs:
@@ -57,26 +57,28 @@ import sys
 from chart_files import write_text_atomically
 from input_checks import (NUMBER, RASTER_MAX_SIDE, RASTER_MAX_THREADS, BadInput, check_each, check_output_path,
                           check_range, check_record, fail, is_number, parse_counts, read_json, split_list)
-from paper_bounds import check_bounds
+from paper_bounds import bound_ms, check_bounds
 
 PROG = "scaling_model.py"
 
 # The paper bound of each pass at 640x480 on 2 cores (its arithmetic at the cores' peak, its
 # divisions at the divider's rate, or its texel fetches at the gather rate of their working
-# set, the largest; on 1 core each bound doubles), from the one file that holds them, as
-# counted at its clock (a dependent FMA of its fma_ns): the runs should be of a host at about
-# that clock. Per scene, per pass: (label: the pass's target as bench/tile_costs names it,
-# kind, bound_ms, what binds it).
+# set, the largest; on 1 core each bound doubles), from the one file that holds them, scaled
+# to the runs' clock (--fma-ns) as bench/paper_bounds.py scales them. Per scene, per pass:
+# (label: the pass's target as bench/tile_costs names it, kind, bound_ms, what binds it).
 BOUNDS_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paper_bounds.json")
 
 
-def load_bounds(path):
+def load_bounds(path, fma_ns):
+    """Per scene: (label, kind, bound_ms on 2 cores at the clock `fma_ns`, what binds it) a pass;
+    None: at the clock the file was counted at (paper_bounds.bound_ms scales its rows)."""
     doc = read_json(PROG, path, "a paper bounds file")
     try:
         check_bounds(doc)
     except BadInput as e:
         fail(PROG, f"{path}: not a paper bounds file ({e})")
-    return {scene: [(p["target"], p["name"], p["ms"], f"{p['binds']}: {p['work']}") for p in passes]
+    return {scene: [(p["target"], p["name"], ms, f"{p['binds']}: {p['work']}")
+                    for p, ms in zip(passes, bound_ms(doc, passes, doc["cores"], fma_ns, doc["cores"]))]
             for scene, passes in doc["scenes"].items()}
 
 
@@ -354,6 +356,9 @@ def main():
     parser.add_argument("--tiles-tiny", help="the same at the tiny size (16x16), with --tiny")
     parser.add_argument("--scenes", help="comma-separated scenes (default: every scene of --bounds)")
     parser.add_argument("--bounds", default=BOUNDS_FILE, help="the paper bounds file (default bench/paper_bounds.json)")
+    parser.add_argument("--fma-ns", type=float,
+                        help="the runs' clock as a dependent FMA's latency, ns (raster_micro's peak/fma/chains:1), to "
+                             "scale the bounds to (default: the bounds file's own clock)")
     parser.add_argument("--threads", default="1,2,4,8,16,32",
                         help=f"thread counts to model (must hold 1 and 2; at most {RASTER_MAX_THREADS}, as raster)")
     parser.add_argument("--frames", action="append", default=[], metavar="SCENE=T1,T2,LT1,LT2",
@@ -369,7 +374,9 @@ def main():
     # read as neither, silently).
     if (args.tiny is None) != (args.tiles_tiny is None):
         fail(PROG, "--tiny and --tiles-tiny go together (the 16x16 runs and their tile costs)")
-    bounds = load_bounds(args.bounds)
+    if args.fma_ns is not None and not (math.isfinite(args.fma_ns) and args.fma_ns > 0):
+        fail(PROG, f"--fma-ns {args.fma_ns}: not a latency (a number above 0)")
+    bounds = load_bounds(args.bounds, args.fma_ns)
     scenes = list(bounds) if args.scenes is None else split_list(PROG, "--scenes", args.scenes)
     for scene in scenes:
         if scene not in bounds:

@@ -14,7 +14,8 @@ finished before the next, and the table lists the passes whose median ratio is b
 Writes OUT/goals.json (every run, with the host's CPU model: ratios differ between the
 hosts these machines draw, AMD and Intel alike; and the latency of a dependent FMA before and
 after the runs, from build/raster_micro where it is built: the same host runs at different
-clocks, 1.09-1.10 ns on 2026-12-05 and 0.94 on 12-07's evening), OUT/goals.md (the table) and OUT/goals.png
+clocks, 1.09-1.10 ns on 2026-12-05 and 0.94 on 12-07's evening; and the UTC times the runs
+began and ended, the host's hour), OUT/goals.md (the table) and OUT/goals.png
 (a panel per size: each configuration's median as a bar, its runs as dots, the goal and the
 floor as lines), and prints the table. --replot rewrites the table and the chart from an
 existing goals.json without running anything. Exit status: 0 when every configuration meets
@@ -189,8 +190,32 @@ def clock_text(fma):
     return f"; a dependent FMA {fma['before']:.3f} ns before the runs, {fma['after']:.3f} after (the clock)"
 
 
-def table(args, rows, host, fma):
-    lines = [f"Host: {host}{clock_text(fma)}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
+def utc_now():
+    return time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+
+
+def when_text(utc):
+    """The runs' hour on the table's first line ("; 2026-12-07 21:41-21:45 UTC"): the host's
+    speed changes with it. Nothing for a record made before it was kept."""
+    if utc is None:
+        return ""
+    start, end = (time.strptime(utc[k], "%Y-%m-%dT%H:%M:%SZ") for k in ("start", "end"))
+    last = time.strftime("%H:%M" if start[:3] == end[:3] else "%Y-%m-%d %H:%M", end)
+    return f"; {time.strftime('%Y-%m-%d %H:%M', start)}-{last} UTC"
+
+
+def check_utc(utc):
+    """Raises BadInput unless utc is {"start": T, "end": T}, T as utc_now() writes it."""
+    check_record(utc, {"start": str, "end": str}, "utc")
+    for key in ("start", "end"):
+        try:
+            time.strptime(utc[key], "%Y-%m-%dT%H:%M:%SZ")
+        except ValueError:
+            raise BadInput(f"utc: '{key}' is not a time such as 2026-12-07T21:41:00Z") from None
+
+
+def table(args, rows, host, fma, utc=None):
+    lines = [f"Host: {host}{when_text(utc)}{clock_text(fma)}; {args.threads} threads, {args.runs} runs of {args.frames} frames per row "
              f"(`bench/goal_runs.py`). Goal: median >= {args.goal}, no run below {args.floor}.", "",
              "| size | preset | scene | runs (llvmpipe / raster) | median | lowest | goal met |"
              + (f" passes below {args.pass_goal}x |" if args.passes else ""),
@@ -289,6 +314,9 @@ def replot(args):
         fma = result.get("fma_ns")   # absent from the runs before it was recorded (history/*.json)
         if fma is not None:
             check_record(fma, {"before": NUMBER, "after": NUMBER}, "fma_ns")
+        utc = result.get("utc")   # the same
+        if utc is not None:
+            check_utc(utc)
         ordered = lambda key: list(dict.fromkeys(row[key] for row in rows))
         args.sizes, args.presets, args.scenes = ordered("size"), ordered("preset"), ordered("scene")
         present = {(row["size"], row["preset"], row["scene"]) for row in rows}
@@ -300,14 +328,14 @@ def replot(args):
     args.runs = len(rows[0]["ratios"])
     args.threads, args.frames, args.goal, args.floor = result["threads"], result["frames"], result["goal"], result["floor"]
     args.passes, args.pass_goal = result["pass_goal"] is not None, result["pass_goal"]
-    write_outputs(args, rows, result["host"], fma, json.dumps(result, indent=1) + "\n")
+    write_outputs(args, rows, result["host"], fma, json.dumps(result, indent=1) + "\n", utc)
     return 0
 
 
-def write_outputs(args, rows, host, fma, json_text):
+def write_outputs(args, rows, host, fma, json_text, utc=None):
     """goals.json, goals.md and goals.png, each written whole under a temporary name and renamed:
     never a half-written file. Returns the table."""
-    text = table(args, rows, host, fma)
+    text = table(args, rows, host, fma, utc)
     chart(args, rows, host, os.path.join(args.out, "goals.png"))
     write_text_atomically(json_text, os.path.join(args.out, "goals.json"))
     write_text_atomically(text, os.path.join(args.out, "goals.md"))
@@ -325,7 +353,7 @@ def main(argv):
                 print(" ".join(bench_command(args, scene, size, preset, "RUN.json")))
         return 0
     runs, started, total = [], time.time(), args.runs * len(configs)
-    before = fma_latency_ns(args)
+    before, start = fma_latency_ns(args), utc_now()
     for run in range(args.runs):
         for size, preset, scene in configs:
             print(f"[{len(runs) + 1}/{total}] run {run + 1}: {scene} {size} {preset} "
@@ -338,10 +366,11 @@ def main(argv):
     fma = {"before": before, "after": after} if before is not None and after is not None else None
     host = cpu_model()
     rows = summarize(args, runs)
-    result = {"host": host, "fma_ns": fma, "threads": args.threads, "frames": args.frames, "goal": args.goal,
+    utc = {"start": start, "end": utc_now()}
+    result = {"host": host, "utc": utc, "fma_ns": fma, "threads": args.threads, "frames": args.frames, "goal": args.goal,
               "floor": args.floor, "pass_goal": args.pass_goal if args.passes else None, "configurations": rows,
               "runs": runs}
-    sys.stdout.write(write_outputs(args, rows, host, fma, json.dumps(result, indent=1) + "\n"))
+    sys.stdout.write(write_outputs(args, rows, host, fma, json.dumps(result, indent=1) + "\n", utc))
     return 0 if all(row["met"] for row in rows) else 1
 
 

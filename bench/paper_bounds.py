@@ -17,7 +17,7 @@ bound), or given with --fma-ns; rows bound by fetches or stores from level 3 and
 On fewer cores than counted a bound grows in proportion (on one core it doubles); on more it
 shrinks so, which assumes every peak grows with the cores.
 
-Writes OUT/bounds.json (every run, the host, the clock), OUT/bounds.md (a table of frames, then
+Writes OUT/bounds.json (every run, the host, its UTC hour, the clock), OUT/bounds.md (a table of frames, then
 each pass) and OUT/bounds.png (per scene, the bound's passes and ours as stacked bars in
 multiples of the bound), and prints the table. --replot rewrites bounds.md and bounds.png from
 bounds.json. Exit status:
@@ -37,7 +37,7 @@ import statistics
 import sys
 import time
 
-from goal_runs import bench_command, cpu_model, fma_latency_ns, run_once
+from goal_runs import bench_command, check_utc, cpu_model, fma_latency_ns, run_once, utc_now, when_text
 from chart_files import write_atomically, write_text_atomically
 from input_checks import (NUMBER, OPTIONAL, RASTER_MAX_FRAMES, RASTER_MAX_THREADS, BadInput, check_each,
                           check_output_folder, check_raster, check_record, fail, is_number, parse_counts, read_json,
@@ -134,7 +134,7 @@ def measure(args):
                 print(" ".join(bench_command(BenchArgs(args, threads), scene, args.bounds_doc["size"], "gl", "RUN.json")))
         return None
     before = args.fma_ns if args.fma_ns is not None else fma_latency_ns(args)
-    runs, started = [], time.time()
+    runs, started, start = [], time.time(), utc_now()
     for run in range(args.runs):
         for scene, threads in configs:
             print(f"[{len(runs) + 1}/{args.runs * len(configs)}] run {run + 1}: {scene}, {threads} threads "
@@ -147,7 +147,7 @@ def measure(args):
                          "llvmpipe_ms": ms["llvmpipe"], "passes_ms": [p["raster_ms"] for p in record["passes"]]})
     after = args.fma_ns if args.fma_ns is not None else fma_latency_ns(args)
     clock = None if before is None or after is None else min(before, after)
-    return {"host": cpu_model(), "host_cores": len(os.sched_getaffinity(0)), "fma_ns": clock, "frames": args.frames,
+    return {"host": cpu_model(), "utc": {"start": start, "end": utc_now()}, "host_cores": len(os.sched_getaffinity(0)), "fma_ns": clock, "frames": args.frames,
             "factor": args.factor, "size": args.bounds_doc["size"], "bounds": args.bounds_doc, "runs": runs}
 
 
@@ -180,7 +180,7 @@ def table(result, rows):
     clock = (f"a dependent FMA {result['fma_ns']:.3f} ns (the bounds were counted at {doc['fma_ns']:.3f}: rows bound by "
              f"arithmetic or setup scaled by {result['fma_ns'] / doc['fma_ns']:.3f})" if result["fma_ns"] is not None
              else "clock not measured (raster_micro not built): the bounds as counted")
-    lines = [f"Host: {result['host']}, {result['host_cores']} cores; {clock}; {result['size']}, "
+    lines = [f"Host: {result['host']}, {result['host_cores']} cores{when_text(result.get('utc'))}; {clock}; {result['size']}, "
              f"{len(rows[0]['frames_ms'])} runs of {result['frames']} frames (`bench/paper_bounds.py`). "
              f"Criterion: a frame at most {factor:g}x its bound.", "",
              "| scene | threads | bound, ms | frame, ms (runs) | frame / bound | within |",
@@ -257,6 +257,8 @@ def replot(args):
         if result["host_cores"] < 1 or (result["fma_ns"] is not None and result["fma_ns"] <= 0):
             raise BadInput("'host_cores' and 'fma_ns' must be above 0")
         check_bounds(result["bounds"])
+        if result.get("utc") is not None:
+            check_utc(result["utc"])
         check_each(result["runs"], {"scene": str, "threads": int, "frame_ms": NUMBER, "passes_ms": list}, "run")
         for i, run in enumerate(result["runs"]):
             counted = result["bounds"]["scenes"].get(run["scene"])

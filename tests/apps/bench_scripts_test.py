@@ -336,11 +336,15 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     # runs; the host's hours differ by it) on its table's first line, and refuses a clock that
     # is not two numbers.
     with open(os.path.join(replot, "goals.json"), "w") as f:
-        json.dump(dict(goals, fma_ns={"before": 0.938, "after": 1.093}), f)
+        json.dump(dict(goals, fma_ns={"before": 0.938, "after": 1.093},
+                       utc={"start": "2026-12-07T21:41:07Z", "end": "2026-12-07T21:45:50Z"}), f)
     done = run("goal_runs.py", "--replot", "--out", replot)
     with open(os.path.join(replot, "goals.md")) as f:
-        check(done.returncode == 0 and "; a dependent FMA 0.938 ns before the runs, 1.093 after (the clock);" in f.readline(),
-              "goal_runs.py --replot does not state the goal run's clock")
+        check(done.returncode == 0 and "; 2026-12-07 21:41-21:45 UTC; a dependent FMA 0.938 ns before the runs, 1.093 after "
+              "(the clock);" in f.readline(), "goal_runs.py --replot does not state the goal run's hour and clock")
+    with open(os.path.join(replot, "goals.json"), "w") as f:
+        json.dump(dict(goals, utc={"start": "21:41", "end": "2026-12-07T21:45:50Z"}), f)
+    expect_refused("goal_runs.py", ["--replot", "--out", replot], "utc: 'start' is not a time")
     with open(os.path.join(replot, "goals.json"), "w") as f:
         json.dump(dict(goals, fma_ns={"before": 0.938}), f)
     expect_refused("goal_runs.py", ["--replot", "--out", replot], "fma_ns: no 'after'")

@@ -61,6 +61,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(len(result["runs"]) == 1 and len(result["runs"][0]["passes_ms"]) == len(shadow),
               "bounds.json does not hold the run and its passes")
         check(done.stdout == table, "the table printed is not bounds.md")
+        check(" UTC; a dependent FMA" in table.splitlines()[0], "bounds.md does not give the runs' hour")
         with open(os.path.join(out, "bounds.png"), "rb") as f:
             check(f.read(8) == b"\x89PNG\r\n\x1a\n", "bounds.png is not a PNG")
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """bench/paper_bounds.py, issue 69's frames against their paper bounds: a real run sets a
 scene's frame and passes beside its bounds (scaled to the clock it is given), --replot
-reproduces the committed bench/results/bounds/bounds.md that BENCHMARKS.md quotes, and a
-bounds file that no longer matches the scene's passes, or is not a bounds file, is refused
-with exit 2 and one line naming it, no traceback and nothing written.
+reproduces the committed bench/results/bounds/bounds.md that BENCHMARKS.md quotes, a scene
+with no bound is listed as such (exit 1), and a bounds file that no longer matches the
+scene's passes, or is not a bounds file, is refused with exit 2 and a line naming it, no
+traceback and nothing written.
 
 Usage: paper_bounds_test.py RASTER_BINARY SOURCE_DIR
 """
@@ -73,6 +74,18 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(os.path.join(replot, "bounds.md")) as mine, open(os.path.join(committed, "bounds.md")) as theirs:
         check(done.returncode in (0, 1) and mine.read() == theirs.read(),
               f"paper_bounds.py --replot no longer writes bench/results/bounds/bounds.md ({done.stderr[-800:]})")
+
+    # A scene with no bound in the file (one added since) is listed as such and fails the criterion.
+    with open(os.path.join(committed, "bounds.json")) as f:
+        doc = json.load(f)
+    for run_record in doc["runs"]:
+        if run_record["scene"] == "hdr":
+            run_record["scene"] = "forest"
+    with open(os.path.join(replot, "bounds.json"), "w") as f:
+        json.dump(doc, f)
+    done = run("--replot", "--out", replot)
+    check(done.returncode == 1 and "| forest | 2 | no bound counted |" in done.stdout,
+          f"a scene without a bound is not listed as such (exit {done.returncode}): {done.stdout[-800:]}{done.stderr[-800:]}")
 
     # A scene whose passes are not those counted (a pass added since), a bound that is not a
     # time, and a bounds.json whose run lost a pass: refused.

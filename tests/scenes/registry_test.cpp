@@ -149,6 +149,11 @@ TEST_SUITE("registry") {
     INFO(bench.out << bench.err);
     CHECK(bench.status == 0);
     CHECK(bench.out.find(std::string("bench ") + kExtra + " ") != std::string::npos);
+    // paper_bounds.py runs it too (and lists it as having no bound until its passes are counted).
+    const RunResult bounds = runWithExtraScene(temp.path, "/usr/bin/python3 $ROOT/bench/paper_bounds.py --raster $EXTRA --dry-run");
+    INFO(bounds.out << bounds.err);
+    CHECK(bounds.status == 0);
+    CHECK(bounds.out.find(std::string("bench ") + kExtra + " ") != std::string::npos);
     const RunResult sweeps = runWithExtraScene(temp.path, "bash $ROOT/bench/stability_sweeps.sh --dry-run $EXTRA");
     INFO(sweeps.out << sweeps.err);
     CHECK(sweeps.status == 0);

@@ -19,10 +19,10 @@ The model, from medians of the runs:
         least over several frames).
   L_p(N) the makespan of pass p's tiles on N workers, as a share of their sum: tiles cut
         into 16-row bands where the renderer cuts them (more than one thread, fewer tiles
-        than 8 x threads, a fullscreen pass), and a depth-only pass's heavy tile into
-        triangle ranges (DEPTH_ONLY below), handed in the renderer's order to whichever
-        worker is free first. A pass of few tiles, or one heavy tile of a pass that draws
-        colour, cannot use N.
+        than 8 x threads, a tile of at most 16 triangles), and a depth-only pass's heavy
+        tile into triangle ranges (depth_ranges.h), each from the tile costs' record of
+        the tiles' bins, handed in the renderer's order to whichever worker is free first.
+        A pass of few tiles, or one heavy tile of a pass that draws colour, cannot use N.
   T_N   T1 (e + (1 - e) sum_p f_p L_p(N) / sum_p f_p L_p(2) / 2): Amdahl with the
         measured e, the parallel part slowed by each pass's tile limit relative to 2
         threads (where e was measured; at N = 2 the model gives T2).
@@ -82,32 +82,21 @@ def load_bounds(path, fma_ns):
             for scene, passes in doc["scenes"].items()}
 
 
-# Passes whose tiles the renderer may cut into 16-row bands (a tile of at most 16
-# triangles, raster/renderer.cpp): the fullscreen passes, and the shadow scene's (28
-# triangles in all). Geometry passes of thousands of triangles keep whole tiles.
-BANDABLE = {
-    "shadow": {"shadow_map", "final"},
-    "deferred": {"ssao", "final"},
-    "hdr": {"bloom_down_0", "bloom_down_1", "bloom_down_2", "bloom_down_3", "bloom_down_4",
-            "bloom_up_3", "bloom_up_2", "bloom_up_1", "bloom_up_0", "final"},
-    "pbr": {"ssao", "ssao_blur_h", "ssao_blur", "final"},
-}
-# Depth-only passes, whose heavy tiles the renderer walks in triangle ranges on several
-# threads (raster/tile/depth_ranges.h): a tile holding more than 1 / (2 x threads) of the
-# pass is cut into min(threads, 4) ranges (the model takes a tile's cost for its share of
-# triangles, and its ranges as equal). The shadow scene's map is left out: its 28 triangles
-# never make a range (64 triangles at least).
-DEPTH_ONLY = {
-    "deferred": {"shadow_map"},
-    "pbr": {"shadow_cascade0", "shadow_cascade1", "shadow_cascade2"},
-}
-TILE, REGION, LP_MAX_THREADS, MAX_DEPTH_RANGES = 64, 16, 32, 4
+# How the renderer cuts a pass into work items, from what the tile costs record of it (each
+# tile's bin, whether its heavy tiles may be walked in ranges): raster/renderer.cpp cuts a
+# tile of at most BANDED_TILE_MAX_TRIANGLES triangles into 16-row bands where the pass has
+# fewer than 8 x threads tiles; raster/tile/depth_ranges.cpp (depthRangeCount) walks a
+# depth-only pass's tile holding more than 1 / (2 x threads) of its bin entries in as many
+# ranges as the threads, at most MAX_DEPTH_RANGES and one per MIN_DEPTH_RANGE_TRIANGLES.
+BANDED_TILE_MAX_TRIANGLES, MAX_DEPTH_RANGES, MIN_DEPTH_RANGE_TRIANGLES = 16, 4, 64
+TILE, REGION, LP_MAX_THREADS = 64, 16, 32
 
 
 RUN_FIELDS = {"passes": list, "backends": list}
 RUN_PASS_FIELDS = {"raster_ms": NUMBER, "llvmpipe_ms": NUMBER}
 TILES_FIELDS = {"passes": list, "tsc_ghz": NUMBER}
-TILES_PASS_FIELDS = {"label": str, "tile_cycles": list, "tiles_x": int, "tiles_y": int, "height": int}
+TILES_PASS_FIELDS = {"label": str, "tile_cycles": list, "tile_triangles": list, "depth_ranges": bool, "tiles_x": int,
+                     "tiles_y": int, "height": int}
 
 
 def read_checked(path, what, fields, pass_fields, check=None):
@@ -149,6 +138,9 @@ def check_tiles(tiles):
             check_range(p, field, 1, RASTER_MAX_SIDE, f"pass {i}")
         if not p["tile_cycles"] or not all(is_number(c) and c >= 0 for c in p["tile_cycles"]):
             raise BadInput(f"pass {i}: 'tile_cycles' is not a list of cycle counts (numbers, 0 or more)")
+        if len(p["tile_triangles"]) != len(p["tile_cycles"]) or not all(
+                isinstance(n, int) and not isinstance(n, bool) and n >= 0 for n in p["tile_triangles"]):
+            raise BadInput(f"pass {i}: 'tile_triangles' is not a count of triangles (a whole number, 0 or more) a tile")
 
 
 def load_runs(folder, scene, threads):
@@ -191,31 +183,36 @@ def load_tiles(folder, scene):
     passes = {}
     for i, p in enumerate(runs[0]["passes"]):
         costs = [statistics.median(r["passes"][i]["tile_cycles"][t] for r in runs) for t in range(len(p["tile_cycles"]))]
-        passes[p["label"]] = {"costs": costs, "tiles_x": p["tiles_x"], "tiles_y": p["tiles_y"], "height": p["height"],
-                              "index": i, "ghz": statistics.median(r["tsc_ghz"] for r in runs)}
+        passes[p["label"]] = {"costs": costs, "tile_triangles": p["tile_triangles"], "depth_ranges": p["depth_ranges"],
+                              "tiles_x": p["tiles_x"], "tiles_y": p["tiles_y"], "height": p["height"], "index": i,
+                              "ghz": statistics.median(r["tsc_ghz"] for r in runs)}
     return passes
 
 
-def work_items(tiles, bandable, threads, depth_only=False):
+def depth_range_count(bin_size, entries, threads):
+    """raster/tile/depth_ranges.cpp's depthRangeCount."""
+    if threads < 2 or bin_size * 2 * threads <= entries:
+        return 1
+    return min(threads, MAX_DEPTH_RANGES, max(bin_size // MIN_DEPTH_RANGE_TRIANGLES, 1))
+
+
+def work_items(tiles, threads):
     """The renderer's work items for `threads`: whole tiles, 16-row bands of equal cost, or a
     depth-only pass's heavy tile in equal triangle ranges (the first range where the tile was,
     the others k / ranges of the way down the list, as raster/tile/depth_ranges.cpp places them)."""
-    costs, tx, ty, height = tiles["costs"], tiles["tiles_x"], tiles["tiles_y"], tiles["height"]
-    if depth_only and threads > 1:
-        total = sum(costs) or 1.0
+    costs, triangles, tx, height = tiles["costs"], tiles["tile_triangles"], tiles["tiles_x"], tiles["height"]
+    if tiles["depth_ranges"] and threads > 1:
+        entries = sum(triangles)
         placed = []
         for i, c in enumerate(costs):
-            ranges = min(threads, MAX_DEPTH_RANGES) if c * 2 * threads > total else 1
+            ranges = depth_range_count(triangles[i], entries, threads)
             for k in range(ranges):
                 placed.append((2 * i if k == 0 else 2 * (len(costs) * k // ranges) + 1, c / ranges))
         return [c for _, c in sorted(placed, key=lambda item: item[0])]
-    banded = bandable and threads > 1 and len(costs) < 8 * threads
-    if not banded:
-        return list(costs)
+    few = threads > 1 and len(costs) < 8 * threads
     items = []
     for t, c in enumerate(costs):
-        rows = min(TILE, height - (t // tx) * TILE)
-        bands = math.ceil(rows / REGION)
+        bands = math.ceil(min(TILE, height - (t // tx) * TILE) / REGION) if few and triangles[t] <= BANDED_TILE_MAX_TRIANGLES else 1
         items.extend([c / bands] * bands)
     return items
 
@@ -272,9 +269,7 @@ def model_scene(bounds, scene, full, tiny, tiles, tiles_tiny, thread_list, frame
     for i, (label, kind, bound, why) in enumerate(bounds[scene]):
         tp = tile_passes[label]
         costs = tile_ms(tp)
-        bandable = label in BANDABLE.get(scene, set())
-        depth_only = label in DEPTH_ONLY.get(scene, set())
-        share = {n: makespan(work_items({**tp, "costs": costs}, bandable, n, depth_only), n) / (sum(costs) or 1.0)
+        share = {n: makespan(work_items({**tp, "costs": costs}, n), n) / (sum(costs) or 1.0)
                  for n in thread_list}
         lp_share = {n: makespan(costs, min(n, LP_MAX_THREADS)) / (sum(costs) or 1.0) for n in thread_list}
         passes.append({"label": label, "kind": kind, "bound_ms": bound, "binds": why, "t1_ms": t1[i], "t2_ms": t2[i],

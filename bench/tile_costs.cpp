@@ -7,7 +7,10 @@
 // shared caches still slow it, so read the tiles' shares, not their times). Prints one
 // JSON object:
 // {"scene", "size", "threads", "tsc_ghz", "passes": [{"label", "width", "height", "tiles_x",
-// "tiles_y", "triangles", "tile_cycles": [...]}]}. bench/scaling_model.py reads it (--tiles).
+// "tiles_y", "triangles", "tile_cycles": [...], "tile_triangles": [...], "depth_ranges"}]}:
+// each tile's cycles and its bin's triangles, and whether the pass's heavy tiles may be walked
+// in triangle ranges (what the renderer cuts its work items by, with no recorder: the tiles
+// here are timed whole). bench/scaling_model.py reads it (--tiles).
 //
 // Built with the rest (build/tile_costs).
 //   build/tile_costs pbr 640x480 1 3 5 > pbr_tiles.json   # scene, size, threads, warm frames, recorded frames
@@ -111,7 +114,9 @@ int run(int argc, char** argv) {
                 static_cast<unsigned long long>(p.triangles));
     for (size_t i = 0; i < p.tileCycles.size(); ++i)
       std::printf("%s%llu", i ? ", " : "", static_cast<unsigned long long>(p.tileCycles[i]));
-    std::printf("]}");
+    std::printf("], \"tile_triangles\": [");
+    for (size_t i = 0; i < p.tileTriangles.size(); ++i) std::printf("%s%u", i ? ", " : "", unsigned(p.tileTriangles[i]));
+    std::printf("], \"depth_ranges\": %s}", p.depthRanges ? "true" : "false");
     firstPass = false;
   }
   std::printf("\n]}\n");

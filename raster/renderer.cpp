@@ -376,6 +376,10 @@ void Renderer::flush() {
     std::vector<PipelineCounters> itemCounters(workItems_.size());
     // A stage view records the pass; its fragment counts take the instrumented walk.
     ViewPass* view = viewRecorder_ ? &viewRecorder_->beginPass(job, bins_.tilesX(), bins_.tilesY()) : nullptr;
+    if (view) {   // what decides the items without a recorder: bench/scaling_model.py models them from it
+      std::copy(binSizes_.begin(), binSizes_.end(), view->tileTriangles.begin());
+      view->depthRanges = !coarse && mayWalkDepthRanges(draws_, framebuffer_);
+    }
     const bool inspect = view && viewRecorder_->what() == ViewRecorder::Record::Fragments;
     // Pixel history: the tile holding the pass's probe pixel is walked by trace_tile.h.
     PassHistory* traced = history_ && !history_->passes.empty() && history_->passes.back().probed

@@ -33,7 +33,7 @@ ViewPass& ViewRecorder::beginPass(const TileJob& job, int tilesX, int tilesY) {
   const Framebuffer& fb = *job.framebuffer;
   if (reserve_) {
     const uint64_t pixels = uint64_t(fb.width) * uint64_t(fb.height);
-    const uint64_t bytes = uint64_t(tilesX) * uint64_t(tilesY) * sizeof(uint64_t) +
+    const uint64_t bytes = uint64_t(tilesX) * uint64_t(tilesY) * (sizeof(uint64_t) + sizeof(uint32_t)) +
                            (what_ == Record::Fragments ? pixels * FragmentCounts::kCountersPerPixel * sizeof(uint32_t) : 0) +
                            (what_ == Record::Triangles ? job.triangles.size() * sizeof(ViewTriangle) : 0);
     std::string what = "the view's record of pass ";
@@ -56,6 +56,7 @@ ViewPass& ViewRecorder::beginPass(const TileJob& job, int tilesX, int tilesY) {
   pass.tilesX = tilesX;
   pass.tilesY = tilesY;
   pass.tileCycles.assign(size_t(tilesX) * size_t(tilesY), 0);
+  pass.tileTriangles.assign(size_t(tilesX) * size_t(tilesY), 0);
   if (what_ == Record::Fragments) pass.counts.reset(fb.width, fb.height);
   if (what_ == Record::Triangles) {
     pass.triangleList.reserve(job.triangles.size());

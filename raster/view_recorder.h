@@ -42,6 +42,8 @@ struct ViewPass {
   uint64_t triangles = 0;                  // set up (after clipping and culling)
   int tilesX = 0, tilesY = 0;
   std::vector<uint64_t> tileCycles;        // per tile (tileY * tilesX + tileX): its clear and tile stage
+  std::vector<uint32_t> tileTriangles;     // per tile: the triangles in its bin
+  bool depthRanges = false;                // its heavy tiles may be walked in triangle ranges (depth_ranges.h)
   FragmentCounts counts;                   // Fragments only
   std::vector<ViewTriangle> triangleList;  // Triangles only
   PipelineCounters counters;               // the pass's tile stage (lane groups, lanes)

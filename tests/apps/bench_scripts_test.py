@@ -277,6 +277,14 @@ with tempfile.TemporaryDirectory(prefix="bench-scripts-test-") as tmp:
     committed = [line for line in body if line]
     check([line for line in done.stdout.splitlines() if line] == committed,
           "scaling_model.py on bench/results/scaling no longer prints model.md's tables")
+    # The model cuts a pass's items as the renderer does, from each tile's bin: a few-tile pass's
+    # tiles of at most 16 triangles into 16-row bands, a depth-only pass's heavy tile into ranges
+    # (its second range halfway down the list).
+    import scaling_model  # noqa: E402
+    few = {"costs": [4.0, 2.0], "tile_triangles": [1, 17], "depth_ranges": False, "tiles_x": 2, "height": 64}
+    check(scaling_model.work_items(few, 2) == [1.0] * 4 + [2.0], "the model's bands are not the renderer's")
+    heavy = {**few, "costs": [6.0, 2.0], "tile_triangles": [300, 100], "depth_ranges": True}
+    check(scaling_model.work_items(heavy, 2) == [3.0, 2.0, 3.0], "the model's depth ranges are not the renderer's")
     broken_runs = os.path.join(tmp, "runs")
     shutil.copytree(runs, broken_runs)
     with open(os.path.join(broken_runs, "hdr_t2_r2.json"), "w") as f:

@@ -83,13 +83,13 @@ def parse_args(argv):
     return args
 
 
-def read_bounds(path):
-    """The bounds file, checked (check_bounds)."""
-    doc = read_json(PROG, path, "a paper bounds file")
+def read_bounds(path, prog=PROG):
+    """The bounds file, checked (check_bounds); anything else exits 2, `prog` naming the script."""
+    doc = read_json(prog, path, "a paper bounds file")
     try:
         check_bounds(doc)
     except BadInput as error:
-        fail(PROG, f"{path}: not a paper bounds file ({error})")
+        fail(prog, f"{path}: not a paper bounds file ({error})")
     return doc
 
 

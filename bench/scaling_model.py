@@ -57,7 +57,7 @@ import sys
 from chart_files import write_text_atomically
 from input_checks import (NUMBER, RASTER_MAX_SIDE, RASTER_MAX_THREADS, BadInput, check_each, check_output_path,
                           check_range, check_record, fail, is_number, parse_counts, read_json, split_list)
-from paper_bounds import bound_ms, check_bounds
+from paper_bounds import bound_ms, read_bounds
 
 PROG = "scaling_model.py"
 
@@ -72,11 +72,7 @@ BOUNDS_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paper_bo
 def load_bounds(path, fma_ns):
     """Per scene: (label, kind, bound_ms on 2 cores at the clock `fma_ns`, what binds it) a pass;
     None: at the clock the file was counted at (paper_bounds.bound_ms scales its rows)."""
-    doc = read_json(PROG, path, "a paper bounds file")
-    try:
-        check_bounds(doc)
-    except BadInput as e:
-        fail(PROG, f"{path}: not a paper bounds file ({e})")
+    doc = read_bounds(path, PROG)
     return {scene: [(p["target"], p["name"], ms, f"{p['binds']}: {p['work']}")
                     for p, ms in zip(passes, bound_ms(doc, passes, doc["cores"], fma_ns, doc["cores"]))]
             for scene, passes in doc["scenes"].items()}

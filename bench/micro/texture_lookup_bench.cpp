@@ -1,7 +1,9 @@
 // 16-lane bilinear colour lookups, GLSL's texture(sampler2D, uv) as the shader ports call it
 // (raster/texture/sampler.h, with Float8x2 lanes as paired shading passes them):
 //   RGBA8 2048x2048, REPEAT     the deferred G-buffer's 2K JPEGs, minified about 2:1
-//   RGBA16F 1024x1024, CLAMP    an hdr colour target or bloom level, read 1:1
+//   RGBA16F 1024x1024, CLAMP    an hdr colour target or bloom level, read 1:1 (the composite's
+//                               scene lookup) or magnified 2:1 (its bloom lookup: a texture of
+//                               half the target's size)
 // each with coherent and scattered coordinates (micro_common.h). One item is one lane's
 // lookup; ns_per_lookup is per lane, so a 16-lane call costs 16 times that.
 #include <benchmark/benchmark.h>
@@ -39,6 +41,10 @@ void rgba16fCoherent(benchmark::State& state) {
   const raster::Texture& texture = micro::rgba16fTexture1024();
   lookups(state, texture, micro::CoherentWalk(texture.width, texture.height, 1.0f));
 }
+void rgba16fMagnified(benchmark::State& state) {
+  const raster::Texture& texture = micro::rgba16fTexture1024();
+  lookups(state, texture, micro::CoherentWalk(texture.width, texture.height, 0.5f));
+}
 void rgba16fScattered(benchmark::State& state) { lookups(state, micro::rgba16fTexture1024(), micro::ScatteredWalk()); }
 
 }  // namespace
@@ -46,4 +52,5 @@ void rgba16fScattered(benchmark::State& state) { lookups(state, micro::rgba16fTe
 BENCHMARK(rgba8Coherent)->Name("texture/rgba8_bilinear_x16/2048_min2_coherent");
 BENCHMARK(rgba8Scattered)->Name("texture/rgba8_bilinear_x16/2048_scattered");
 BENCHMARK(rgba16fCoherent)->Name("texture/rgba16f_bilinear_x16/1024_coherent");
+BENCHMARK(rgba16fMagnified)->Name("texture/rgba16f_bilinear_x16/1024_mag2_coherent");
 BENCHMARK(rgba16fScattered)->Name("texture/rgba16f_bilinear_x16/1024_scattered");

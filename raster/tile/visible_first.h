@@ -27,10 +27,12 @@
 
 namespace raster {
 
-// Per-pixel triangle indices of one tile, kept per lane group: a group's entries are valid
-// once it is marked (bit: group column, per pair of rows). Stored a 4x4 block at a time,
-// each block's 16 entries (row * 4 + col) in one 64-byte line: a block is marked, and read
-// whole, with one load and one store, and a group of two rows is half of one.
+// Per-pixel triangle indices of one tile (kNone: no triangle shows there). Stored a 4x4
+// block at a time, each block's 16 entries (row * 4 + col) in one 64-byte line: a block is
+// marked, and read whole, with one load and one store, and a group of two rows is half of
+// one. mark() also keeps which groups it marked (bit: group column, per pair of rows), for
+// forEachVisible(shade); markBlock() keeps no such bits, and forEachVisible(shade, whole)
+// finds the groups that show a triangle from the entries themselves.
 template <class F>
 class TileTriangles {
  public:
@@ -58,12 +60,13 @@ class TileTriangles {
 
   // Pixels `passed` (bit row * 4 + col) of the 4x4 block at tile offset (lx, ly) now show
   // triangle `index` (no bits: nothing changes), for lane types with kDepthTestsInBlocks
-  // (visible_first_avx2.h).
+  // (visible_first_avx2.h), whose forEachVisible(shade, whole) reads the entries back.
   void markBlock(int lx, int ly, uint32_t passed, uint32_t index);
 
-  // forEachVisible, a 4x4 block at a time (upper group, then lower), where a block whose
-  // 16 pixels all show one triangle goes to whole(lx, ly, index) first: when that returns
-  // false, its groups go to shade as usual. Float8 has it (visible_first_avx2.h).
+  // forEachVisible over what markBlock marked, a 4x4 block at a time (upper group, then
+  // lower), where a block whose 16 pixels all show one triangle goes to whole(lx, ly,
+  // index) first: when that returns false, its groups go to shade as usual. Float8 has it
+  // (visible_first_avx2.h).
   template <class Shade, class Whole>
   void forEachVisible(Shade&& shade, Whole&& whole) const;
 

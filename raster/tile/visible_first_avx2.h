@@ -11,9 +11,10 @@
 
 namespace raster {
 
-// The block's line is written without a branch: a block none of whose pixels passed writes
-// it back as it was (read, blended and written: masked stores are slow). No group bits are
-// kept (forEachVisible reads the entries themselves).
+// The block's line is written without a branch, as a blend of its old line (GCC makes it
+// one masked store with AVX-512; a branch on whether any pixel passed measured slower:
+// docs/notes/2026-12-08-scene-pass-by-part.md). No group bits are kept (forEachVisible reads
+// the entries themselves).
 #if RASTER_ZMM_PAIRS
 template <>
 inline void TileTriangles<simd::Float8>::markBlock(int lx, int ly, uint32_t passed, uint32_t index) {
@@ -89,9 +90,9 @@ namespace visible_first_detail {
 // The blocks in rows, left to right; a block's groups, upper then lower. Which show a
 // triangle is read from their entries (an entry other than kNone) rather than kept in
 // marked_ by markBlock: that took two read-modify-writes of the bit words a tested block,
-// and without them the hdr scene pass took 4.7% less time at 640x480 and 5.2% less at
-// 1920x1080, deferred's and pbr's G-buffer passes 1-3% less (2 threads, alternated rounds:
-// docs/notes/2026-12-08-scene-pass-by-part.md), for a compare a block when the tile is read.
+// and without them the hdr scene pass took 3% less time at 640x480 and 6% less at
+// 1920x1080 (2 threads, two builds alternated: docs/notes/2026-12-08-scene-pass-by-part.md),
+// for a compare a block when the tile is read.
 template <>
 template <class Shade, class Whole>
 void TileTriangles<simd::Float8>::forEachVisible(Shade&& shade, Whole&& whole) const {
